@@ -1,0 +1,33 @@
+#pragma once
+// Measurements of a world, computed on demand (never inside the step).
+#include <cstdint>
+
+#include "physics/params.h"
+#include "physics/world.h"
+
+namespace physics {
+
+struct Diagnostics {
+    double kinetic = 0.0;     // J, sum 1/2 m |v|^2
+    double potential = 0.0;   // J, -sum m g.p
+    double total = 0.0;       // J, kinetic + potential
+    double modified = 0.0;    // J, E~ = sum m (-g.p + 1/2 |v + (h/2) g|^2), exact for free flight
+    glm::dvec3 momentum{0.0}; // kg m/s
+    std::uint64_t sphereContacts = 0;  // overlapping pairs now
+    std::uint64_t wallContacts = 0;    // spheres touching or crossing a plane now
+    double maxPenetration = 0.0;       // deepest overlap divided by the smaller radius
+    std::uint64_t hash = 0;            // FNV-1a over positions and velocities
+};
+
+Diagnostics measure(const World& world, const Params& params);
+
+// The energy semi-implicit Euler conserves exactly in free flight (physics.md), J.
+double modifiedEnergy(const World& world, const Params& params);
+
+// FNV-1a 64 over the bytes of every position and velocity: equal states, equal hashes.
+std::uint64_t stateHash(const World& world);
+
+// Spheres whose centre lies on the wrong side of a box plane by more than `slack` (m).
+std::size_t spheresOutsideBox(const World& world, double slack);
+
+}  // namespace physics

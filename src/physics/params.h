@@ -1,0 +1,48 @@
+#pragma once
+// The lecture's parameters, in SI units. The table that gives each one its
+// label, range, tooltip and JSON / --set name lives in scenes/parameters.h.
+#include <glm/vec3.hpp>
+
+namespace physics {
+
+// Second deck, "Summary with multiple particles".
+enum class Method {
+    PositionBased,  // "position projection": velocity + position response, walls last
+    VelocityBased,  // "velocity correction": velocity response, cancel penetrating velocity
+};
+
+// How two spheres exchange velocity when they bounce.
+enum class ResponseModel {
+    LectureAttenuation,  // slide 12: v1 <- alpha v1par + beta (v1perp + j/m1 u)
+    MomentumConserving,  // equal and opposite impulses: (1 + beta) normal, alpha on tangential
+};
+
+// How the overlap d is split between the two spheres (slide 13: d/2 each).
+enum class PositionSplit { HalfHalf, MassWeighted };
+
+// The order in which sphere pairs are visited in each pass (slide 14: order matters).
+enum class PairOrder { Index, Reversed, Shuffled };
+
+// Where candidate pairs come from: a uniform grid, or the lecture's O(N^2) loop.
+enum class BroadPhase { Grid, AllPairs };
+
+struct Params {
+    double alpha = 1.0;     // tangential attenuation ("friction" in slide 4), in [0, 1]
+    double beta = 0.8;      // normal restitution ("impact" in slide 4), in [0, 1]
+    double epsilon = 0.1;   // m/s: relative normal speed at or below which a contact is static
+    double mu = 0.5;        // static-contact damping v <- mu v (slide 13), in [0, 1]
+    double timeStep = 1.0 / 60.0;  // s: h, one step of the fixed-step loop
+    int substeps = 4;       // solver steps per time step; each advances h / substeps
+    int passes = 4;         // K: collision passes per solver step (slide 14)
+    glm::dvec3 gravity{0.0, 0.0, -9.81};  // m/s^2, z is up
+    Method method = Method::PositionBased;
+    ResponseModel response = ResponseModel::LectureAttenuation;
+    PositionSplit split = PositionSplit::HalfHalf;
+    PairOrder order = PairOrder::Index;
+    BroadPhase broadPhase = BroadPhase::Grid;
+
+    // s: the step every formula of the lecture uses (its h).
+    double solverStep() const { return timeStep / substeps; }
+};
+
+}  // namespace physics

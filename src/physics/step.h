@@ -1,0 +1,28 @@
+#pragma once
+// The one verb of the solver: advance the world by one time step h.
+#include <cstdint>
+
+#include "physics/params.h"
+#include "physics/world.h"
+
+namespace physics {
+
+// What one step did, summed over its solver steps.
+struct StepStats {
+    std::uint64_t pairTests = 0;       // distance tests made by the broad phase
+    std::uint64_t candidatePairs = 0;  // pairs within reach, handed to the passes
+    std::uint64_t sphereContacts = 0;  // overlapping pairs found in the first pass
+    std::uint64_t wallContacts = 0;    // sphere-plane contacts found in the first pass
+    std::uint64_t collisions = 0;      // contacts that bounced (speed above epsilon), all passes
+    std::uint64_t staticContacts = 0;  // contacts handled as static (slide 13), all passes
+    StepStats& operator+=(const StepStats& o);
+};
+
+// Runs params.substeps solver steps of h / substeps with the chosen method.
+StepStats step(World& world, const Params& params);
+
+// One solver step of length h (s), as the second deck's summary writes it.
+StepStats stepPositionBased(World& world, const Params& params, double h);
+StepStats stepVelocityBased(World& world, const Params& params, double h);
+
+}  // namespace physics

@@ -1,0 +1,55 @@
+#pragma once
+// The state the solver advances: spheres stored as arrays (one entry per
+// sphere, index = id) and the planes that bound them.
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+namespace physics {
+
+// A plane is a point and a unit normal pointing into the free side (slide 3).
+struct Plane {
+    glm::dvec3 point{0.0};   // m
+    glm::dvec3 normal{0.0, 0.0, 1.0};  // unit
+};
+
+// What happened to a sphere in the last solver step, for colouring and teaching.
+enum class ContactState : std::uint8_t {
+    Free,       // touched nothing
+    Colliding,  // bounced: relative normal speed above epsilon
+    Static,     // static contact: relative normal speed at or below epsilon (slide 13)
+};
+
+struct SpherePair {
+    std::uint32_t i, j;  // i < j
+};
+
+// Scratch memory reused from step to step, so a step allocates nothing once warm.
+struct Workspace {
+    std::vector<SpherePair> pairs;          // candidate pairs of this solver step
+    std::vector<std::uint32_t> cellOfSphere;
+    std::vector<std::uint32_t> cellStart;   // counting-sort offsets, one per cell + 1
+    std::vector<std::uint32_t> sphereByCell;
+};
+
+struct World {
+    std::vector<glm::dvec3> position;  // m, sphere centres
+    std::vector<glm::dvec3> velocity;  // m/s
+    std::vector<double> radius;        // m, > 0
+    std::vector<double> mass;          // kg, > 0
+    std::vector<ContactState> contactState;
+    std::vector<Plane> planes;         // the box's walls first, then any extra planes
+    int boxPlaneCount = 0;             // how many of `planes` form the box
+    double time = 0.0;                 // s, simulated
+    std::uint64_t stepCount = 0;       // solver steps taken
+    std::uint64_t seed = 1;            // drives the shuffled pair order
+
+    Workspace workspace;
+
+    std::size_t size() const { return position.size(); }
+    void addSphere(const glm::dvec3& p, const glm::dvec3& v, double r, double m);
+    void removeSphere(std::size_t index);
+};
+
+}  // namespace physics
