@@ -9,6 +9,7 @@ namespace physics {
 enum class Method {
     PositionBased,  // "position projection": velocity + position response, walls last
     VelocityBased,  // "velocity correction": velocity response, cancel penetrating velocity
+    ResponseOnly,   // first deck, slides 5-6: move, then velocity response only, no correction
 };
 
 // How two spheres exchange velocity when they bounce.

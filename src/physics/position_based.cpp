@@ -1,1 +1,48 @@
-// being written
+// Position based ("position projection"), second deck, "Summary with multiple particles":
+//   A. update position and velocity from field forces;
+//   B. handle collisions between particles: velocity + position;
+//   C. handle collisions with the walls: velocity + position;
+//   B and C repeated for K passes.
+// (+) walls are never crossed, since they are handled last; (-) stacked spheres jitter.
+#include "physics/solver_stages.h"
+
+namespace physics {
+namespace {
+
+void particlesVelocityAndPosition(World& world, const Params& params, StepStats& stats,
+                                  bool firstPass) {
+    for (const SpherePair& pair : world.workspace.pairs) {
+        SphereContact contact;
+        if (!touching(world, pair, contact)) continue;
+        respondToContact(world, pair, contact, params, stats, firstPass);
+        separateSpheres(world.position[pair.i], world.position[pair.j], world.mass[pair.i],
+                        world.mass[pair.j], contact.u, contact.depth, params.split);
+    }
+}
+
+void wallsVelocityAndPosition(World& world, const Params& params, StepStats& stats,
+                              bool firstPass) {
+    for (std::uint32_t i = 0; i < world.size(); ++i) {
+        for (const Plane& plane : world.planes) {
+            if (!touching(world, i, plane)) continue;
+            respondToContact(world, i, plane, params, stats, firstPass);
+            projectOnPlane(world.position[i], world.radius[i], plane);
+        }
+    }
+}
+
+}  // namespace
+
+StepStats stepPositionBased(World& world, const Params& params, double h) {
+    StepStats stats;
+    integrateVelocity(world, params.gravity, h);  // A
+    integratePosition(world, h);
+    findOrderedPairs(world, params, stats);
+    for (int pass = 0; pass < params.passes; ++pass) {
+        particlesVelocityAndPosition(world, params, stats, pass == 0);  // B
+        wallsVelocityAndPosition(world, params, stats, pass == 0);      // C
+    }
+    return stats;
+}
+
+}  // namespace physics

@@ -1,1 +1,142 @@
-// being written
+#include "physics/step.h"
+
+#include <algorithm>
+#include <utility>
+
+#include <glm/geometric.hpp>
+
+#include "physics/broad_phase.h"
+#include "physics/random.h"
+#include "physics/solver_stages.h"
+
+namespace physics {
+namespace {
+
+// Candidate pairs reach this fraction of the largest radius beyond touching, so
+// that contacts created by the position corrections of a pass are seen by the next.
+constexpr double kMarginFraction = 0.1;
+
+void reorder(std::vector<SpherePair>& pairs, PairOrder order, std::uint64_t seed,
+             std::uint64_t stepCount) {
+    if (order == PairOrder::Reversed) std::reverse(pairs.begin(), pairs.end());
+    if (order != PairOrder::Shuffled) return;
+    Random random(seed ^ (stepCount * 0x9E3779B97F4A7C15ull));
+    for (std::size_t k = pairs.size(); k > 1; --k) std::swap(pairs[k - 1], pairs[random.below(k)]);
+}
+
+}  // namespace
+
+StepStats& StepStats::operator+=(const StepStats& o) {
+    pairTests += o.pairTests;
+    candidatePairs += o.candidatePairs;
+    sphereContacts += o.sphereContacts;
+    wallContacts += o.wallContacts;
+    collisions += o.collisions;
+    staticContacts += o.staticContacts;
+    return *this;
+}
+
+void integrateVelocity(World& world, const glm::dvec3& gravity, double h) {
+    for (glm::dvec3& v : world.velocity) v += h * gravity;
+}
+
+void integratePosition(World& world, double h) {
+    for (std::size_t i = 0; i < world.size(); ++i) world.position[i] += h * world.velocity[i];
+}
+
+void findOrderedPairs(World& world, const Params& params, StepStats& stats) {
+    const double margin = kMarginFraction * maxRadius(world);
+    stats.pairTests += findPairs(params.broadPhase, world, margin, world.workspace);
+    stats.candidatePairs += world.workspace.pairs.size();
+    reorder(world.workspace.pairs, params.order, world.seed, world.stepCount);
+}
+
+bool touching(const World& world, const SpherePair& pair, SphereContact& contact) {
+    const glm::dvec3 delta = world.position[pair.i] - world.position[pair.j];
+    const double reach = world.radius[pair.i] + world.radius[pair.j];
+    const double distanceSquared = glm::dot(delta, delta);
+    if (distanceSquared > reach * reach) return false;
+    const double distance = std::sqrt(distanceSquared);
+    // Coincident centres have no direction: push them apart along z.
+    contact.u = distance > 0.0 ? delta / distance : glm::dvec3(0.0, 0.0, 1.0);
+    contact.depth = reach - distance;
+    return true;
+}
+
+bool touching(const World& world, std::uint32_t i, const Plane& plane) {
+    return glm::dot(world.position[i] - plane.point, plane.normal) <= world.radius[i];
+}
+
+namespace {
+
+// Keeps the strongest thing that happened to a sphere this step.
+void record(World& world, std::uint32_t i, Response response) {
+    ContactState& state = world.contactState[i];
+    if (response == Response::Bounce) state = ContactState::Colliding;
+    if (response == Response::Static && state == ContactState::Free) state = ContactState::Static;
+}
+
+void count(StepStats& stats, Response response) {
+    if (response == Response::Bounce) ++stats.collisions;
+    if (response == Response::Static) ++stats.staticContacts;
+}
+
+}  // namespace
+
+void respondToContact(World& world, const SpherePair& pair, const SphereContact& contact,
+                      const Params& params, StepStats& stats, bool firstPass) {
+    const Response response = respondToSphere(world.velocity[pair.i], world.velocity[pair.j],
+                                              world.mass[pair.i], world.mass[pair.j], contact.u,
+                                              params);
+    record(world, pair.i, response);
+    record(world, pair.j, response);
+    count(stats, response);
+    stats.sphereContacts += firstPass;
+}
+
+void respondToContact(World& world, std::uint32_t i, const Plane& plane, const Params& params,
+                      StepStats& stats, bool firstPass) {
+    const Response response = respondToPlane(world.velocity[i], plane.normal, params);
+    record(world, i, response);
+    count(stats, response);
+    stats.wallContacts += firstPass;
+}
+
+void respondToAllContacts(World& world, const Params& params, StepStats& stats, bool firstPass) {
+    for (const SpherePair& pair : world.workspace.pairs) {
+        SphereContact contact;
+        if (touching(world, pair, contact)) respondToContact(world, pair, contact, params, stats, firstPass);
+    }
+    for (std::uint32_t i = 0; i < world.size(); ++i) {
+        for (const Plane& plane : world.planes) {
+            if (touching(world, i, plane)) respondToContact(world, i, plane, params, stats, firstPass);
+        }
+    }
+}
+
+namespace {
+
+StepStats solverStep(World& world, const Params& params, double h) {
+    switch (params.method) {
+        case Method::PositionBased: return stepPositionBased(world, params, h);
+        case Method::VelocityBased: return stepVelocityBased(world, params, h);
+        case Method::ResponseOnly: return stepResponseOnly(world, params, h);
+    }
+    return {};
+}
+
+}  // namespace
+
+StepStats step(World& world, const Params& params) {
+    StepStats stats;
+    const double h = params.solverStep();
+    for (int s = 0; s < params.substeps; ++s) {
+        std::fill(world.contactState.begin(), world.contactState.end(), ContactState::Free);
+        stats += solverStep(world, params, h);
+        world.time += h;
+        ++world.stepCount;
+    }
+    return stats;
+}
+
+}  // namespace physics

@@ -24,5 +24,6 @@ StepStats step(World& world, const Params& params);
 // One solver step of length h (s), as the second deck's summary writes it.
 StepStats stepPositionBased(World& world, const Params& params, double h);
 StepStats stepVelocityBased(World& world, const Params& params, double h);
+StepStats stepResponseOnly(World& world, const Params& params, double h);
 
 }  // namespace physics

@@ -1,1 +1,43 @@
-// being written
+// Velocity based ("velocity correction"), second deck, "Summary with multiple particles":
+//   A. update velocity from field forces;
+//   B. handle collisions (with velocity) between particles, and walls;
+//   C. cancel the velocity component contributing to penetration;
+//   D. update position from the current velocity.
+// B is repeated for K passes; C runs once after them, as the safety net for what
+// B left approaching. Inside every pass it would turn each multi-contact bounce
+// partly inelastic (an elastic gas lost 16 % of its kinetic energy in 10^4 steps).
+// (+) smooth and stable motion; (-) an existing overlap persists.
+#include "physics/solver_stages.h"
+
+namespace physics {
+namespace {
+
+void cancelPenetratingVelocity(World& world) {
+    for (const SpherePair& pair : world.workspace.pairs) {
+        SphereContact contact;
+        if (!touching(world, pair, contact)) continue;
+        cancelApproachBetween(world.velocity[pair.i], world.velocity[pair.j], world.mass[pair.i],
+                              world.mass[pair.j], contact.u);
+    }
+    for (std::uint32_t i = 0; i < world.size(); ++i) {
+        for (const Plane& plane : world.planes) {
+            if (touching(world, i, plane)) cancelApproachToPlane(world.velocity[i], plane.normal);
+        }
+    }
+}
+
+}  // namespace
+
+StepStats stepVelocityBased(World& world, const Params& params, double h) {
+    StepStats stats;
+    integrateVelocity(world, params.gravity, h);  // A
+    findOrderedPairs(world, params, stats);
+    for (int pass = 0; pass < params.passes; ++pass) {
+        respondToAllContacts(world, params, stats, pass == 0);  // B
+    }
+    cancelPenetratingVelocity(world);  // C
+    integratePosition(world, h);  // D
+    return stats;
+}
+
+}  // namespace physics

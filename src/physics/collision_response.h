@@ -1,0 +1,35 @@
+#pragma once
+// The lecture's collision responses, one function per slide. Velocities in m/s,
+// positions in m, masses in kg. Both methods (position_based.cpp,
+// velocity_based.cpp) call these; they differ only in when.
+#include <glm/vec3.hpp>
+
+#include "physics/params.h"
+#include "physics/world.h"
+
+namespace physics {
+
+enum class Response { None, Bounce, Static };
+
+// Slide 4 and slide 13 for a sphere touching a plane of unit normal n:
+// static contact when |v.n| <= epsilon, else v <- alpha v_par - beta v_perp while approaching.
+Response respondToPlane(glm::dvec3& v, const glm::dvec3& n, const Params& params);
+
+// Slide 8: p <- p + d n, d = r - (p - a).n (the distance of penetration).
+void projectOnPlane(glm::dvec3& p, double r, const Plane& plane);
+
+// Slides 11-13 for two touching spheres; u = (p1 - p2) / |p1 - p2| points from 2 to 1.
+Response respondToSphere(glm::dvec3& v1, glm::dvec3& v2, double m1, double m2,
+                         const glm::dvec3& u, const Params& params);
+
+// Slide 13, step 3: d = r1 + r2 - |p1 - p2|; p1 <- p1 + d/2 u, p2 <- p2 - d/2 u
+// (or split in inverse proportion to the masses).
+void separateSpheres(glm::dvec3& p1, glm::dvec3& p2, double m1, double m2, const glm::dvec3& u,
+                     double d, PositionSplit split);
+
+// Velocity-based method, step C: remove what still points into a penetration.
+void cancelApproachToPlane(glm::dvec3& v, const glm::dvec3& n);
+void cancelApproachBetween(glm::dvec3& v1, glm::dvec3& v2, double m1, double m2,
+                           const glm::dvec3& u);
+
+}  // namespace physics

@@ -1,0 +1,23 @@
+// Velocity response only, first deck, slides 5-6 ("applying collision response on
+// speed only"): the flow of the position-based method without its projection.
+//   A. update position and velocity from field forces;
+//   B. handle collisions with velocity only, K passes.
+// The lesson of slide 6: in discrete time the contact is detected once the sphere is
+// already inside the wall, and its weight still acts. It bounces back from below the
+// contact, so it "doesn't bounce high enough", and a resting sphere sinks step by step.
+#include "physics/solver_stages.h"
+
+namespace physics {
+
+StepStats stepResponseOnly(World& world, const Params& params, double h) {
+    StepStats stats;
+    integrateVelocity(world, params.gravity, h);  // A
+    integratePosition(world, h);
+    findOrderedPairs(world, params, stats);
+    for (int pass = 0; pass < params.passes; ++pass) {
+        respondToAllContacts(world, params, stats, pass == 0);  // B
+    }
+    return stats;
+}
+
+}  // namespace physics

@@ -1,0 +1,172 @@
+// The remaining rows of the canonical checks: resting contact (slide 13), Newton's
+// cradle and pair order (slide 14), shots at the walls, broad phase, determinism.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "physics/broad_phase.h"
+#include "physics/diagnostics.h"
+#include "physics/step.h"
+#include "physics_fixtures.h"
+
+using glm::dvec3;
+using physics::Method;
+
+namespace {
+
+const Method kAllMethods[] = {Method::PositionBased, Method::VelocityBased, Method::ResponseOnly};
+
+void run(physics::World& world, const physics::Params& params, int steps) {
+    for (int k = 0; k < steps; ++k) physics::step(world, params);
+}
+
+// Five touching spheres of radius 0.125 m on the x axis (exactly representable
+// centres, so they touch exactly); sphere 0 strikes at v0.
+physics::World cradle(double v0) {
+    physics::World world;
+    for (int k = 0; k < 5; ++k) world.addSphere({0.25 * k, 0, 0}, {k == 0 ? v0 : 0.0, 0, 0}, 0.125, 1.0);
+    return world;
+}
+
+// n spheres of radii in [0.01, 0.04] m placed anywhere in a cube, overlaps allowed.
+physics::World scattered(std::size_t n, double extent, std::uint64_t seed) {
+    physics::Random random(seed);
+    physics::World world;
+    for (std::size_t k = 0; k < n; ++k) {
+        const dvec3 p(random.uniform(), random.uniform(), random.uniform());
+        world.addSphere(extent * p, {0, 0, 0}, random.uniform(0.01, 0.04), 1.0);
+    }
+    world.addSphere({50, -30, 7}, {0, 0, 0}, 0.02, 1.0);  // one far away stretches the grid
+    return world;
+}
+
+}  // namespace
+
+TEST(ContactChecks, RestingSphereStopsWithoutSinking) {
+    for (Method method : {Method::PositionBased, Method::VelocityBased}) {
+        physics::Params params = fixtures::exactParams(1.0 / 60.0);
+        params.method = method;
+        params.epsilon = 2 * 9.81 * params.solverStep();
+        params.mu = 0.9;
+        physics::World world;
+        fixtures::addBox(world, {2, 2, 2});
+        world.addSphere({0, 0, 0.1}, {0.3, 0.2, 0}, 0.1, 1.0);  // sliding on the floor
+        run(world, params, 300);  // 5 s
+        const physics::Diagnostics d = physics::measure(world, params);
+        EXPECT_LE(glm::length(world.velocity[0]), 1e-3);
+        EXPECT_LE(d.maxPenetration, 0.01);
+        EXPECT_EQ(world.contactState[0], physics::ContactState::Static);
+    }
+}
+
+TEST(ContactChecks, EpsilonBelowOneGravityStepCannotCatchARestingSphere) {
+    // Resting on the floor, each step meets the floor at (1 - beta) g h + beta * (the
+    // last rebound): the rebound settles at beta g h / (1 + beta) and never drops below
+    // epsilon = g h / 2, so the sphere keeps bouncing in place: "a resting ball keeps shaking".
+    physics::Params params = fixtures::exactParams(1.0 / 60.0);
+    const double gh = 9.81 * params.solverStep();  // m/s
+    params.epsilon = 0.5 * gh;
+    params.beta = 0.2;
+    physics::World world;
+    fixtures::addBox(world, {2, 2, 2});
+    world.addSphere({0, 0, 0.1}, {0, 0, 0}, 0.1, 1.0);
+    run(world, params, 300);
+    EXPECT_EQ(world.contactState[0], physics::ContactState::Colliding);
+    EXPECT_NEAR(world.velocity[0].z, params.beta * gh / (1 + params.beta), 1e-9);
+}
+
+TEST(ContactChecks, NewtonsCradleInIndexOrderTakesOnePass) {
+    const double v0 = 2.0;
+    for (Method method : {Method::PositionBased, Method::VelocityBased}) {
+        physics::Params params = fixtures::exactParams(1.0 / 240.0, dvec3(0.0));
+        params.method = method;
+        params.passes = 1;
+        physics::World world = cradle(v0);
+        physics::step(world, params);
+        for (int k = 0; k < 4; ++k) EXPECT_NEAR(world.velocity[k].x, 0.0, 1e-6 * v0) << k;
+        EXPECT_NEAR(world.velocity[4].x, v0, 1e-6 * v0);
+        run(world, params, 100);  // and nothing else happens afterwards
+        EXPECT_NEAR(world.velocity[4].x, v0, 1e-6 * v0);
+        EXPECT_NEAR(world.velocity[0].x, 0.0, 1e-6 * v0);
+    }
+}
+
+// Reversed order meets the moving sphere's pair last: each pass carries the
+// velocity one sphere further, so four contacts need four passes in one step.
+TEST(ContactChecks, NewtonsCradleInReversedOrderNeedsOnePassPerContact) {
+    const double v0 = 2.0;
+    physics::Params params = fixtures::exactParams(1.0 / 240.0, dvec3(0.0));
+    params.order = physics::PairOrder::Reversed;
+    for (int passes = 1; passes <= 4; ++passes) {
+        params.passes = passes;
+        physics::World world = cradle(v0);
+        physics::step(world, params);
+        for (int k = 0; k < 5; ++k) {
+            EXPECT_NEAR(world.velocity[k].x, k == passes ? v0 : 0.0, 1e-6 * v0) << passes << " " << k;
+        }
+    }
+}
+
+TEST(ContactChecks, NoSphereLeavesTheBoxUnderTenThousandShots) {
+    physics::Random random(2024);
+    std::size_t worstOutside = 0;
+    for (int round = 0; round < 10; ++round) {
+        physics::Params params;
+        params.substeps = 1;
+        params.beta = random.uniform(0.2, 1.0);
+        params.alpha = random.uniform(0.2, 1.0);
+        physics::World world;
+        fixtures::addBox(world, {1, 1, 1});
+        fixtures::addRandomSpheres(world, 1000, 0.01, 0.03, 0.9, {0, 0, 0.5}, 0.0, 100 + round);
+        for (glm::dvec3& v : world.velocity) {  // up to 100 m/s in any direction
+            v = glm::dvec3(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1));
+            v *= random.uniform(0, 100) / std::max(glm::length(v), 1e-9);
+        }
+        for (int k = 0; k < 120; ++k) {
+            physics::step(world, params);
+            worstOutside = std::max(worstOutside, physics::spheresOutsideBox(world, 0.0));
+        }
+    }
+    EXPECT_EQ(worstOutside, 0u);
+}
+
+TEST(ContactChecks, GridFindsExactlyThePairsOfTheAllPairsLoop) {
+    for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+        const double extent = 0.5 * static_cast<double>(seed);  // from dense to sparse
+        const physics::World world = scattered(500 * seed, extent, seed);
+        for (double margin : {0.0, 0.004}) {
+            physics::Workspace grid;
+            std::vector<physics::SpherePair> reference;
+            physics::findPairsGrid(world, margin, grid);
+            physics::findPairsAllPairs(world, margin, reference);
+            ASSERT_EQ(grid.pairs.size(), reference.size()) << "seed " << seed;
+            EXPECT_GT(reference.size(), 0u);
+            for (std::size_t k = 0; k < reference.size(); ++k) {
+                ASSERT_EQ(grid.pairs[k].i, reference[k].i);
+                ASSERT_EQ(grid.pairs[k].j, reference[k].j);
+            }
+        }
+    }
+}
+
+TEST(ContactChecks, SameSceneAndSeedGiveTheSameStateHash) {
+    for (Method method : kAllMethods) {
+        physics::Params params;
+        params.method = method;
+        params.order = physics::PairOrder::Shuffled;
+        auto make = [](std::uint64_t seed) {
+            physics::World world;
+            fixtures::addBox(world, {1, 1, 1});
+            fixtures::addRandomSpheres(world, 300, 0.02, 0.05, 0.9, {0, 0, 0.5}, 1.0, 11);
+            world.seed = seed;
+            return world;
+        };
+        physics::World a = make(5), b = make(5), c = make(6);
+        run(a, params, 300);
+        run(b, params, 300);
+        run(c, params, 300);
+        EXPECT_EQ(physics::stateHash(a), physics::stateHash(b));
+        EXPECT_NE(physics::stateHash(a), physics::stateHash(c));  // the shuffle follows the seed
+    }
+}
