@@ -1,0 +1,304 @@
+#include "scenes/parameters.h"
+
+#include <charconv>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <type_traits>
+
+#include "scenes/suggest.h"
+
+namespace scenes {
+
+namespace {
+
+const physics::Params kDefaults;
+constexpr double kMaxSeed = 9007199254740992.0;  // 2^53: every seed up to it is exact in a double
+
+// A get/set pair over one field of the scene's physics::Params; choices arrive as their index.
+struct Access {
+    double (*get)(const Scene&);
+    std::string (*set)(Scene&, double);
+};
+
+template <auto Field>
+double getParam(const Scene& s) {
+    return static_cast<double>(s.params.*Field);
+}
+
+template <auto Field>
+std::string setParam(Scene& s, double v) {
+    using T = std::remove_reference_t<decltype(s.params.*Field)>;
+    if constexpr (std::is_floating_point_v<T>) {
+        s.params.*Field = v;
+    } else {
+        s.params.*Field = static_cast<T>(static_cast<int>(v));
+    }
+    return {};
+}
+
+template <auto Field>
+constexpr Access param() {
+    return {getParam<Field>, setParam<Field>};
+}
+
+// --- the entries, grouped by kind so that each reads as one line of the table ---
+
+Parameter real(std::string_view name, std::string_view label, std::string_view unit, double min,
+               double max, double defaultValue, std::string_view tooltip, Access access) {
+    return {name,    label,         unit,
+            min,     max,           defaultValue,
+            tooltip, Applies::Live, ParameterKind::Real,
+            {},      access.get,    access.set};
+}
+
+Parameter integer(std::string_view name, std::string_view label, double min, double max,
+                  double defaultValue, std::string_view tooltip, Access access) {
+    return {name,    label,         "",
+            min,     max,           defaultValue,
+            tooltip, Applies::Live, ParameterKind::Integer,
+            {},      access.get,    access.set};
+}
+
+Parameter choice(std::string_view name, std::string_view label,
+                 std::vector<std::string_view> choices, double defaultValue,
+                 std::string_view tooltip, Access access) {
+    const double last = static_cast<double>(choices.size()) - 1.0;
+    return {name,
+            label,
+            "",
+            0.0,
+            last,
+            defaultValue,
+            tooltip,
+            Applies::Live,
+            ParameterKind::Choice,
+            std::move(choices),
+            access.get,
+            access.set};
+}
+
+Parameter restart(Parameter p) {
+    p.applies = Applies::Restart;
+    return p;
+}
+
+double gravityOf(const Scene& s) { return glm::length(s.params.gravity); }
+std::string setGravity(Scene& s, double g) {
+    s.params.gravity = {0.0, 0.0, -g};  // m/s^2, pointing along -z
+    return {};
+}
+
+const char* const kNoGenerators = "scene has no generated spheres";
+
+double countOf(const Scene& s) { return s.generators.empty() ? 0.0 : s.generators[0].count; }
+std::string setCount(Scene& s, double n) {
+    if (s.generators.empty()) return kNoGenerators;
+    s.generators[0].count = static_cast<int>(n);
+    return {};
+}
+
+double radiusOf(const Scene& s) {
+    return s.generators.empty() ? Generator{}.radiusMax : s.generators[0].radiusMax;
+}
+std::string setRadius(Scene& s, double r) {
+    if (s.generators.empty()) return kNoGenerators;
+    for (Generator& g : s.generators) g.radiusMin = g.radiusMax = r;  // m
+    return {};
+}
+
+double seedOf(const Scene& s) { return static_cast<double>(s.seed); }
+std::string setSeed(Scene& s, double seed) {
+    s.seed = static_cast<std::uint64_t>(seed);
+    return {};
+}
+
+std::vector<Parameter> makeTable() {
+    using physics::Params;
+    return {
+        real("alpha", "\u03b1  tangential attenuation", "", 0.0, 1.0, kDefaults.alpha,
+             "Slide 4: restitution coefficient in the // direction (friction). A bounce keeps "
+             "\u03b1 v//: 1 keeps the sliding speed, 0 stops it.",
+             param<&Params::alpha>()),
+        real("beta", "\u03b2  normal restitution", "", 0.0, 1.0, kDefaults.beta,
+             "Slide 4: restitution coefficient in the \u22a5 direction (impact). A bounce sends "
+             "back \u03b2 v\u22a5: 1 is elastic, 0 does not bounce; the apex height scales by "
+             "\u03b2\u00b2.",
+             param<&Params::beta>()),
+        real("epsilon", "\u03b5  static-contact speed", "m/s", 0.0, 10.0, kDefaults.epsilon,
+             "Slide 13: a contact whose relative speed is at or below \u03b5 is static: no "
+             "bounce, friction v \u2190 \u03bc v instead, which avoids jittering. An \u03b5 below "
+             "the speed gravity adds in one solver step, |g| h / substeps, cannot catch a "
+             "resting contact.",
+             param<&Params::epsilon>()),
+        real("mu", "\u03bc  static-contact friction", "", 0.0, 1.0, kDefaults.mu,
+             "Slide 13: friction v \u2190 \u03bc v on both spheres of a static contact. A damping "
+             "factor applied every solver step, not Coulomb's friction coefficient: 1 keeps the "
+             "velocity, 0 stops it.",
+             param<&Params::mu>()),
+        real("h", "h  time step", "s", 1e-4, 0.1, kDefaults.timeStep,
+             "Slide 2: v \u2190 v + h g, p \u2190 p + h v. One step of the fixed-step loop, run as "
+             "`substeps` solver steps of h / substeps. A smaller step penetrates less.",
+             param<&Params::timeStep>()),
+        integer("substeps", "substeps per step", 1, 64, kDefaults.substeps,
+                "Solver steps per time step h, each of h / substeps: reducing the time step "
+                "helps (slide 14), at the cost of more work per frame.",
+                param<&Params::substeps>()),
+        integer("passes", "K  collision passes", 1, 100, kDefaults.passes,
+                "Slide 14: correcting one collision may induce new collisions; iterating over "
+                "multiple passes helps. K passes over the contacts in every solver step.",
+                param<&Params::passes>()),
+        real("gravity", "|g|  gravity", "m/s^2", 0.0, 50.0, glm::length(kDefaults.gravity),
+             "Slide 2: the single field force F = m g, pointing along -z. 9.81 on Earth; 0 "
+             "for a gas or a billiard table seen from above.",
+             {gravityOf, setGravity}),
+        choice("method", "method", {"position", "velocity", "response-only"},
+               static_cast<double>(kDefaults.method),
+               "Summary with multiple particles. position: velocity + position response, "
+               "walls last (walls never crossed; stacked spheres jitter). velocity: velocity "
+               "response, cancel the velocity into a penetration, then move (smooth and "
+               "stable; an existing collision persists). response-only: slides 5-6, collision "
+               "response on speed only, no position correction.",
+               param<&Params::method>()),
+        choice("response", "sphere-sphere response", {"lecture", "momentum"},
+               static_cast<double>(kDefaults.response),
+               "lecture: slide 12, v1 \u2190 \u03b1 v1// + \u03b2 (v1\u22a5 + j/m1 u); with "
+               "\u03b2 < 1 it does not conserve momentum. momentum: equal and opposite impulses, "
+               "(1 + \u03b2) on the normal and \u03b1 on the tangential speed: momentum is exact.",
+               param<&Params::response>()),
+        choice("split", "position correction split", {"half", "mass"},
+               static_cast<double>(kDefaults.split),
+               "Slide 13: correct position p = p \u00b1 d/2 u, half of the collision depth d "
+               "each. mass: the lighter sphere moves more (by d m2/(m1 + m2) and d m1/(m1 + m2)).",
+               param<&Params::split>()),
+        choice("order", "pair order", {"index", "reversed", "shuffled"},
+               static_cast<double>(kDefaults.order),
+               "Slide 14: the order of correction does matter. Sphere pairs are visited in "
+               "index order, reversed, or shuffled with the scene's seed.",
+               param<&Params::order>()),
+        choice("broadphase", "broad phase", {"grid", "allpairs"},
+               static_cast<double>(kDefaults.broadPhase),
+               "Where candidate pairs come from: a uniform grid (fast) or the lecture's loop "
+               "over all N\u00b2 pairs (slow). Both find the same contacts.",
+               param<&Params::broadPhase>()),
+        restart(integer("count", "N  spheres", 0, kMaxGeneratedCount, 100,
+                        "Number of spheres the scene's first generator places. Applies on "
+                        "restart.",
+                        {countOf, setCount})),
+        restart(real("radius", "r  sphere radius", "m", 0.005, 0.5, Generator{}.radiusMax,
+                     "Radius of every generated sphere (all generators). Applies on restart.",
+                     {radiusOf, setRadius})),
+        restart(integer("seed", "seed", 0, kMaxSeed, 1,
+                        "Seed of our own random generator: generated positions and "
+                        "velocities, and the shuffled pair order. Same seed, same run. "
+                        "Applies on restart.",
+                        {seedOf, setSeed})),
+    };
+}
+
+std::vector<std::string_view> names() {
+    std::vector<std::string_view> out;
+    for (const Parameter& p : parameterTable()) out.push_back(p.name);
+    return out;
+}
+
+std::string_view trim(std::string_view s) {
+    const auto first = s.find_first_not_of(" \t");
+    if (first == std::string_view::npos) return {};
+    return s.substr(first, s.find_last_not_of(" \t") - first + 1);
+}
+
+// A whole decimal number (optionally with a leading '+'), or nothing.
+bool parseNumber(std::string_view text, double& value) {
+    if (!text.empty() && text.front() == '+') text.remove_prefix(1);
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    return error == std::errc() && end == text.data() + text.size() && !text.empty();
+}
+
+// The number a "--set" text stands for: a choice's index or a decimal.
+std::string parseValue(const Parameter& p, std::string_view text, double& value) {
+    if (p.kind == ParameterKind::Choice) {
+        value = choiceIndex(p, text);
+        if (value >= 0) return {};
+        return std::string(p.name) + " = '" + std::string(text) +
+               "' is not a choice; choices: " + detail::joinNames(p.choices);
+    }
+    if (!parseNumber(text, value) || !std::isfinite(value)) {
+        return "value '" + std::string(text) + "' for " + std::string(p.name) + " is not a number";
+    }
+    return {};
+}
+
+}  // namespace
+
+const std::vector<Parameter>& parameterTable() {
+    static const std::vector<Parameter> table = makeTable();
+    return table;
+}
+
+const Parameter* findParameter(std::string_view name) {
+    for (const Parameter& p : parameterTable()) {
+        if (p.name == name) return &p;
+    }
+    return nullptr;
+}
+
+std::string formatNumber(double value) {
+    // Plain decimals for the sizes people type (1000000, 0.0001), exponents beyond.
+    const double size = std::abs(value);
+    const bool plain = size == 0.0 || (size >= 1e-6 && size < 1e16);
+    char buffer[400];
+    const auto result =
+        plain ? std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::fixed)
+              : std::to_chars(buffer, buffer + sizeof buffer, value);
+    return std::string(buffer, result.ptr);
+}
+
+std::string checkValue(const Parameter& p, double value) {
+    const std::string unit = p.unit.empty() ? "" : " " + std::string(p.unit);
+    if (!std::isfinite(value)) return std::string(p.name) + " must be a finite number";
+    if (value < p.min || value > p.max) {
+        return std::string(p.name) + " = " + formatNumber(value) + " is out of range [" +
+               formatNumber(p.min) + ", " + formatNumber(p.max) + "]" + unit;
+    }
+    if (p.kind != ParameterKind::Real && value != std::floor(value)) {
+        return std::string(p.name) + " = " + formatNumber(value) + " must be a whole number";
+    }
+    return {};
+}
+
+int choiceIndex(const Parameter& p, std::string_view name) {
+    for (std::size_t i = 0; i < p.choices.size(); ++i) {
+        if (p.choices[i] == name) return static_cast<int>(i);
+    }
+    return -1;
+}
+
+std::string setValue(const Parameter& p, Scene& scene, double value) {
+    std::string error = checkValue(p, value);
+    return error.empty() ? p.set(scene, value) : error;
+}
+
+std::string applySetting(Scene& scene, std::string_view assignment) {
+    const auto equals = assignment.find('=');
+    if (equals == std::string_view::npos) {
+        return "expected name=value, got '" + std::string(assignment) + "'";
+    }
+    const std::string_view name = trim(assignment.substr(0, equals));
+    const Parameter* p = findParameter(name);
+    if (!p) return detail::unknownName("parameter", name, names());
+    double value = 0.0;
+    std::string error = parseValue(*p, trim(assignment.substr(equals + 1)), value);
+    return error.empty() ? setValue(*p, scene, value) : error;
+}
+
+std::string formatValue(const Parameter& p, const Scene& scene) {
+    const double value = p.get(scene);
+    if (p.kind == ParameterKind::Choice) {
+        const auto i = static_cast<std::size_t>(value);
+        return i < p.choices.size() ? std::string(p.choices[i]) : formatNumber(value);
+    }
+    if (p.kind == ParameterKind::Integer) return formatNumber(std::round(value));
+    return formatNumber(value);
+}
+
+}  // namespace scenes

@@ -1,0 +1,70 @@
+#pragma once
+// The one table of the lecture's parameters. The UI draws its sliders from it,
+// the command line's --set name=value and the JSON loader's "parameters" read
+// it, so every parameter has one name, one range and one explanation.
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "scenes/scene.h"
+
+namespace scenes {
+
+// When a change takes effect.
+enum class Applies {
+    Live,     // at the next step
+    Restart,  // when the world is rebuilt from the scene (R)
+};
+
+enum class ParameterKind {
+    Real,     // any number in [min, max]
+    Integer,  // a whole number in [min, max]
+    Choice,   // one of `choices`; the value is its index
+};
+
+struct Parameter {
+    std::string_view name;   // JSON key and --set name
+    std::string_view label;  // for the UI, with the lecture's symbol
+    std::string_view unit;   // "m/s", "s", "" ...
+    double min = 0.0;        // inclusive, in `unit`
+    double max = 1.0;        // inclusive, in `unit`
+    double defaultValue =
+        0.0;                   // in `unit`: a default Scene's value (Live); a typical one (Restart)
+    std::string_view tooltip;  // in the lecture's words
+    Applies applies = Applies::Live;
+    ParameterKind kind = ParameterKind::Real;
+    std::vector<std::string_view> choices;  // Choice: the names, value = index
+    double (*get)(const Scene&) = nullptr;
+    // Stores a value already checked by checkValue; returns "" or why it cannot.
+    std::string (*set)(Scene&, double) = nullptr;
+};
+
+// Every parameter, in the order the UI shows them: the Live ones, then the Restart ones.
+const std::vector<Parameter>& parameterTable();
+
+// The entry called `name`, or nullptr.
+const Parameter* findParameter(std::string_view name);
+
+// "name=value": checks the value against the table and stores it in the scene.
+// Returns "" on success, else one line naming the problem (unknown name with
+// close and valid names, a value that is not a number, out of range with the
+// range, an unknown choice with the choices). The scene is unchanged on error.
+std::string applySetting(Scene& scene, std::string_view assignment);
+
+// Checks a number (a Choice's index) and stores it: "" or one line saying why not.
+std::string setValue(const Parameter& parameter, Scene& scene, double value);
+
+// "" when the value is in range (and whole for Integer), else one line saying why not.
+std::string checkValue(const Parameter& parameter, double value);
+
+// The index of a Choice parameter's `name`, or -1.
+int choiceIndex(const Parameter& parameter, std::string_view name);
+
+// The current value as applySetting reads it back: a choice name, a whole
+// number, or the shortest decimal that round-trips the double. No unit.
+std::string formatValue(const Parameter& parameter, const Scene& scene);
+
+// The shortest decimal text that reads back as the same double.
+std::string formatNumber(double value);
+
+}  // namespace scenes

@@ -1,0 +1,49 @@
+#include "scenes/presets.h"
+
+#include <algorithm>
+#include <filesystem>
+
+#include "scenes/scene.h"
+
+namespace scenes {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr std::string_view kExtension = ".json";
+
+fs::path presetDirectory() { return fs::path(assetDirectory()) / "scenes"; }
+
+}  // namespace
+
+std::string assetDirectory() { return SPHERES_ASSET_DIR; }
+
+std::vector<std::string> listPresets() {
+    std::vector<std::string> names;
+    std::error_code error;
+    for (const auto& entry : fs::directory_iterator(presetDirectory(), error)) {
+        if (entry.is_regular_file(error) && entry.path().extension() == kExtension) {
+            names.push_back(entry.path().stem().string());
+        }
+    }
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+std::string presetPath(std::string_view name) {
+    std::string stem(name);
+    if (stem.size() > kExtension.size() &&
+        stem.compare(stem.size() - kExtension.size(), kExtension.size(), kExtension) == 0) {
+        stem.resize(stem.size() - kExtension.size());
+    }
+    const std::vector<std::string> presets = listPresets();
+    if (std::find(presets.begin(), presets.end(), stem) == presets.end()) {
+        std::string known;
+        for (const std::string& p : presets) known += (known.empty() ? "" : ", ") + p;
+        throw SceneError("unknown preset '" + std::string(name) + "'; presets: " + known);
+    }
+    return (presetDirectory() / (stem + std::string(kExtension))).string();
+}
+
+}  // namespace scenes

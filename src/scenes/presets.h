@@ -1,0 +1,22 @@
+#pragma once
+// The scenes shipped in assets/scenes/, one per lecture slide that needs one.
+// The folder is found through SPHERES_ASSET_DIR, set at build time to the
+// source tree's assets/, so the program runs from any directory.
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace scenes {
+
+// The assets folder (SPHERES_ASSET_DIR).
+std::string assetDirectory();
+
+// The shipped presets, by name (file name without ".json"), sorted by file name:
+// "01_single_bounce", "02_head_on", ...
+std::vector<std::string> listPresets();
+
+// The file of a preset, from its name (with or without ".json"). Throws
+// SceneError naming the presets when there is none of that name.
+std::string presetPath(std::string_view name);
+
+}  // namespace scenes

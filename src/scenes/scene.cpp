@@ -1,0 +1,218 @@
+#include "scenes/scene.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <sstream>
+
+#include "physics/random.h"
+#include "scenes/generate.h"
+
+namespace scenes {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+// An authored scene's spheres may touch (up to rounding), never overlap.
+constexpr double kTouching = 1e-9;
+// A saved state's contacts overlap a little; refuse only a centre past a wall
+// or an overlap deeper than the smaller radius.
+constexpr double kSnapshotSlack = 1.0;
+
+[[noreturn]] void fail(const std::string& what, const std::string& path) {
+    throw SceneError(what, path);
+}
+
+std::string text(const glm::dvec3& v) {
+    std::ostringstream out;
+    out << "(" << v.x << ", " << v.y << ", " << v.z << ")";
+    return out.str();
+}
+
+std::string number(double x) {
+    std::ostringstream out;
+    out << x;
+    return out.str();
+}
+
+std::string sphereName(std::size_t i) { return "spheres[" + std::to_string(i) + "]"; }
+std::string spherePath(std::size_t i, const char* key) {
+    return "/spheres/" + std::to_string(i) + "/" + key;
+}
+std::string generatorName(std::size_t i) { return "generate[" + std::to_string(i) + "]"; }
+std::string generatorPath(std::size_t i, const char* key) {
+    return "/generate/" + std::to_string(i) + "/" + key;
+}
+
+bool isFinite(const glm::dvec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+// Right-handed rotation of v by `degrees` about the +y axis.
+glm::dvec3 tiltAboutY(const glm::dvec3& v, double degrees) {
+    const double a = degrees * kPi / 180.0;
+    return {std::cos(a) * v.x + std::sin(a) * v.z, v.y, -std::sin(a) * v.x + std::cos(a) * v.z};
+}
+
+void addBox(const Scene& scene, physics::World& world) {
+    if (!scene.box) return;
+    const Box& box = *scene.box;
+    if (!isFinite(box.size) || box.size.x <= 0 || box.size.y <= 0 || box.size.z <= 0) {
+        fail("box size " + text(box.size) + " must be positive in every direction", "/box/size");
+    }
+    if (!std::isfinite(box.tilt)) fail("box tilt must be a finite angle", "/box/tilt");
+    world.planes = boxPlanes(box);
+    world.boxPlaneCount = static_cast<int>(world.planes.size());
+}
+
+void addExtraPlanes(const Scene& scene, physics::World& world) {
+    for (std::size_t k = 0; k < scene.planes.size(); ++k) {
+        const physics::Plane& plane = scene.planes[k];
+        const std::string at = "/planes/" + std::to_string(k);
+        if (!isFinite(plane.point)) {
+            fail("planes[" + std::to_string(k) + "] point must be finite", at + "/point");
+        }
+        const auto normal = detail::unitNormal(plane.normal);
+        if (!normal) fail("planes[" + std::to_string(k) + "] has a zero normal", at + "/normal");
+        world.planes.push_back({plane.point, *normal});
+    }
+}
+
+void checkSphere(const Sphere& s, std::size_t i) {
+    if (!isFinite(s.p)) fail(sphereName(i) + " position must be finite", spherePath(i, "p"));
+    if (!isFinite(s.v)) fail(sphereName(i) + " velocity must be finite", spherePath(i, "v"));
+    if (!(s.r > 0) || !std::isfinite(s.r)) {
+        fail(sphereName(i) + " radius must be positive (m), got " + number(s.r),
+             spherePath(i, "r"));
+    }
+    if (!(s.m > 0) || !std::isfinite(s.m)) {
+        fail(sphereName(i) + " mass must be positive (kg), got " + number(s.m), spherePath(i, "m"));
+    }
+}
+
+void addExplicitSpheres(const Scene& scene, detail::OccupancyGrid& grid, physics::World& world) {
+    const double slack = scene.snapshot ? kSnapshotSlack : kTouching;
+    for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
+        const Sphere& s = scene.spheres[i];
+        checkSphere(s, i);
+        if (const auto k = detail::crossedPlane(world.planes, s.p, s.r, slack)) {
+            const bool wall = *k < static_cast<std::size_t>(world.boxPlaneCount);
+            fail(sphereName(i) + " at " + text(s.p) + " with radius " + number(s.r) + " m " +
+                     (wall ? "is outside the box: it crosses " : "crosses ") +
+                     detail::planeName(*k, world.boxPlaneCount),
+                 spherePath(i, "p"));
+        }
+        if (const auto j = grid.overlapping(s.p, s.r, slack)) {
+            fail(sphereName(i) + " at " + text(s.p) + " overlaps " + sphereName(*j) + " at " +
+                     text(scene.spheres[*j].p),
+                 spherePath(i, "p"));
+        }
+        grid.add(s.p, s.r);
+        world.addSphere(s.p, s.v, s.r, s.m);
+    }
+}
+
+void checkGeneratorValues(const Generator& g, std::size_t i) {
+    const std::string name = generatorName(i);
+    if (g.count < 0 || g.count > kMaxGeneratedCount) {
+        fail(name + " count " + std::to_string(g.count) + " is out of range [0, " +
+                 std::to_string(kMaxGeneratedCount) + "]",
+             generatorPath(i, "count"));
+    }
+    if (!(g.radiusMin > 0) || !(g.radiusMin <= g.radiusMax) || !std::isfinite(g.radiusMax)) {
+        fail(name + " radius must be positive with min <= max (m)", generatorPath(i, "radius"));
+    }
+    if (g.massRule == MassRule::Density && (!(g.density > 0) || !std::isfinite(g.density))) {
+        fail(name + " density must be positive (kg/m^3)", generatorPath(i, "density"));
+    }
+    if (g.massRule == MassRule::Fixed && (!(g.mass > 0) || !std::isfinite(g.mass))) {
+        fail(name + " mass must be positive (kg)", generatorPath(i, "mass"));
+    }
+    if (!isFinite(g.velocity)) {
+        fail(name + " velocity must be finite", generatorPath(i, "velocity"));
+    }
+    if (!(g.velocitySpread >= 0) || !std::isfinite(g.velocitySpread)) {
+        fail(name + " velocitySpread must be >= 0 (m/s)", generatorPath(i, "velocitySpread"));
+    }
+}
+
+void checkRegion(const Generator& g, std::size_t i, const physics::World& world) {
+    const std::string name = generatorName(i);
+    const glm::dvec3 extent = g.regionMax - g.regionMin;
+    if (!isFinite(g.regionMin) || !isFinite(g.regionMax)) {
+        fail(name + " region must be finite", generatorPath(i, "region"));
+    }
+    if (std::min({extent.x, extent.y, extent.z}) < 2.0 * g.radiusMax) {
+        fail(name + " region " + text(g.regionMin) + " - " + text(g.regionMax) +
+                 " is narrower than one sphere of radius " + number(g.radiusMax) + " m",
+             generatorPath(i, "region"));
+    }
+    // The box is convex: the region is inside when its eight corners are (1e-9 m rounding).
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::dvec3 c{corner & 1 ? g.regionMax.x : g.regionMin.x,
+                           corner & 2 ? g.regionMax.y : g.regionMin.y,
+                           corner & 4 ? g.regionMax.z : g.regionMin.z};
+        for (int k = 0; k < world.boxPlaneCount; ++k) {
+            const physics::Plane& wall = world.planes[static_cast<std::size_t>(k)];
+            if (glm::dot(c - wall.point, wall.normal) >= -1e-9) continue;
+            fail(name + " region corner " + text(c) + " is outside the box (beyond " +
+                     detail::planeName(static_cast<std::size_t>(k), world.boxPlaneCount) + ")",
+                 generatorPath(i, "region"));
+        }
+    }
+}
+
+// m: no two spheres of the scene overlap unless their centres are this close.
+double largestDiameter(const Scene& scene) {
+    double r = 0.0;
+    for (const Sphere& s : scene.spheres) r = std::max(r, s.r);
+    for (const Generator& g : scene.generators) r = std::max(r, g.radiusMax);
+    return std::max(2.0 * r, 1e-6);
+}
+
+}  // namespace
+
+std::vector<physics::Plane> boxPlanes(const Box& box) {
+    const glm::dvec3 half = 0.5 * box.size;  // m
+    const glm::dvec3 centre{0.0, 0.0, half.z};
+    const std::array<physics::Plane, 6> upright = {{
+        {{0.0, 0.0, 0.0}, {0.0, 0.0, 1.0}},          // floor
+        {{0.0, 0.0, box.size.z}, {0.0, 0.0, -1.0}},  // ceiling
+        {{-half.x, 0.0, half.z}, {1.0, 0.0, 0.0}},   // -x wall
+        {{half.x, 0.0, half.z}, {-1.0, 0.0, 0.0}},   // +x wall
+        {{0.0, -half.y, half.z}, {0.0, 1.0, 0.0}},   // -y wall
+        {{0.0, half.y, half.z}, {0.0, -1.0, 0.0}},   // +y wall
+    }};
+    std::vector<physics::Plane> planes;
+    for (const physics::Plane& plane : upright) {
+        planes.push_back({centre + tiltAboutY(plane.point - centre, box.tilt),
+                          tiltAboutY(plane.normal, box.tilt)});
+    }
+    return planes;
+}
+
+std::uint64_t generatorSeed(std::uint64_t sceneSeed, std::size_t index) {
+    physics::Random mix(sceneSeed ^ (0xD1B54A32D192ED03ull * (index + 1)));
+    return mix.next();
+}
+
+physics::World buildWorld(const Scene& scene) {
+    physics::World world;
+    addBox(scene, world);
+    addExtraPlanes(scene, world);
+    detail::OccupancyGrid grid(largestDiameter(scene));
+    addExplicitSpheres(scene, grid, world);
+    for (std::size_t i = 0; i < scene.generators.size(); ++i) {
+        const Generator& g = scene.generators[i];
+        checkGeneratorValues(g, i);
+        checkRegion(g, i, world);
+        detail::generate(g, i, g.seed ? *g.seed : generatorSeed(scene.seed, i), grid, world);
+    }
+    world.seed = scene.seed;
+    world.time = scene.time;
+    world.stepCount = scene.stepCount;
+    return world;
+}
+
+}  // namespace scenes

@@ -1,0 +1,522 @@
+#include "scenes/scene_json.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "scenes/generate.h"
+#include "scenes/json_locate.h"
+#include "scenes/parameters.h"
+#include "scenes/suggest.h"
+
+namespace scenes {
+
+namespace {
+
+using Json = nlohmann::json;
+using Keys = std::vector<std::string_view>;
+
+const Keys kSceneKeys = {"title", "slide",   "description", "box",  "planes", "parameters",
+                         "seed",  "spheres", "generate",    "time", "steps"};
+const Keys kBoxKeys = {"size", "tilt"};
+const Keys kPlaneKeys = {"point", "normal"};
+const Keys kSphereKeys = {"p", "v", "r", "m"};
+const Keys kGeneratorKeys = {"kind", "count",    "region",         "radius", "density",
+                             "mass", "velocity", "velocitySpread", "seed"};
+const Keys kRegionKeys = {"min", "max"};
+const Keys kKinds = {"lattice", "random"};
+constexpr double kMaxTilt = 90.0;                   // degrees
+constexpr double kMaxInteger = 9007199254740992.0;  // whole numbers beyond 2^53 are not exact
+
+// Control characters (a newline in a key) would break the one-line message.
+std::string oneLine(std::string text) {
+    for (char& c : text) {
+        if (static_cast<unsigned char>(c) < 0x20) c = ' ';
+    }
+    return text;
+}
+
+std::string typeName(const Json& v) {
+    switch (v.type()) {
+        case Json::value_t::object:
+            return "an object";
+        case Json::value_t::array:
+            return "an array";
+        case Json::value_t::string:
+            return "a string";
+        case Json::value_t::boolean:
+            return "a boolean";
+        case Json::value_t::null:
+            return "null";
+        default:
+            return "a number";
+    }
+}
+
+Keys parameterNames() {
+    Keys names;
+    for (const Parameter& p : parameterTable()) names.push_back(p.name);
+    return names;
+}
+
+// Reads a parsed scene, checking every value, and reports each error at the
+// line of the offending key or value.
+class SceneReader {
+  public:
+    SceneReader(std::string_view text, const std::string& file) : text_(text), file_(file) {}
+
+    [[noreturn]] void failAt(std::size_t offset, const std::string& what) const {
+        const detail::TextPosition at = detail::positionOf(text_, offset);
+        throw SceneError(file_ + ":" + std::to_string(at.line) + ":" + std::to_string(at.column) +
+                         ": " + oneLine(what));
+    }
+    [[noreturn]] void fail(const std::string& pointer, const std::string& what,
+                           bool atKey = false) const {
+        failAt(detail::offsetOf(text_, pointer, atKey), what);
+    }
+
+    Scene read(const Json& root) {
+        Scene scene;
+        checkKeys(root, "", kSceneKeys);
+        scene.title = string(root, "", "title");
+        scene.slide = string(root, "", "slide");
+        scene.description = string(root, "", "description");
+        if (const Json* box = find(root, "box")) scene.box = readBox(*box, "/box");
+        scene.planes = readList(root, "planes", &SceneReader::readPlane);
+        if (const Json* seed = find(root, "seed")) scene.seed = readSeed(*seed, "/seed");
+        scene.spheres = readList(root, "spheres", &SceneReader::readSphere);
+        scene.generators = readList(root, "generate", &SceneReader::readGenerator);
+        readSavedState(root, scene);
+        readParameters(root, scene);
+        return scene;
+    }
+
+  private:
+    static const Json* find(const Json& object, const char* key) {
+        const auto it = object.find(key);
+        return it == object.end() ? nullptr : &*it;
+    }
+
+    const Json& required(const Json& object, const std::string& pointer, const char* key) const {
+        const Json* value = find(object, key);
+        if (!value) fail(pointer, where(pointer) + " needs \"" + key + "\"");
+        return *value;
+    }
+
+    static std::string where(const std::string& pointer) {
+        return pointer.empty() ? "the scene" : detail::readablePath(pointer);
+    }
+
+    void checkKeys(const Json& v, const std::string& pointer, const Keys& allowed) const {
+        if (!v.is_object()) {
+            fail(pointer, where(pointer) + " must be an object {...}, got " + typeName(v));
+        }
+        for (const auto& item : v.items()) {
+            const std::string& key = item.key();
+            if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
+            fail(detail::childPointer(pointer, key),
+                 detail::unknownName("key", key, allowed) + " (in " + where(pointer) + ")", true);
+        }
+    }
+
+    // --- leaves: every number is finite (1e999 is refused by the parser) ---
+
+    double number(const Json& v, const std::string& pointer) const {
+        if (!v.is_number()) fail(pointer, where(pointer) + " must be a number, got " + typeName(v));
+        return v.get<double>();
+    }
+
+    double positive(const Json& v, const std::string& pointer, const char* unit) const {
+        const double x = number(v, pointer);
+        if (!(x > 0)) {
+            fail(pointer,
+                 where(pointer) + " = " + formatNumber(x) + " must be positive (" + unit + ")");
+        }
+        return x;
+    }
+
+    double inRange(const Json& v, const std::string& pointer, double min, double max) const {
+        const double x = integerOrNumber(v, pointer, false);
+        if (x < min || x > max) {
+            fail(pointer, where(pointer) + " = " + formatNumber(x) + " is out of range [" +
+                              formatNumber(min) + ", " + formatNumber(max) + "]");
+        }
+        return x;
+    }
+
+    // A number; with `whole`, one without a fractional part.
+    double integerOrNumber(const Json& v, const std::string& pointer, bool whole) const {
+        if (whole && v.is_number_unsigned() && v.get<std::uint64_t>() > kMaxInteger) {
+            fail(pointer,
+                 where(pointer) + " is out of range [0, " + formatNumber(kMaxInteger) + "]");
+        }
+        const double x = number(v, pointer);
+        if (whole && x != std::floor(x)) {
+            fail(pointer, where(pointer) + " = " + formatNumber(x) + " must be a whole number");
+        }
+        return x;
+    }
+
+    glm::dvec3 vector3(const Json& v, const std::string& pointer) const {
+        if (!v.is_array() || v.size() != 3) {
+            fail(pointer, where(pointer) + " must be an array of 3 numbers [x, y, z], got " +
+                              typeName(v) +
+                              (v.is_array() ? " of " + std::to_string(v.size()) : ""));
+        }
+        return {number(v[0], pointer + "/0"), number(v[1], pointer + "/1"),
+                number(v[2], pointer + "/2")};
+    }
+
+    std::string string(const Json& object, const std::string& pointer, const char* key) const {
+        const Json* v = find(object, key);
+        if (!v) return {};
+        const std::string at = detail::childPointer(pointer, key);
+        if (!v->is_string()) fail(at, where(at) + " must be a string, got " + typeName(*v));
+        return v->get<std::string>();
+    }
+
+    double nonNegative(const Json& v, const std::string& pointer, const char* unit) const {
+        const double x = number(v, pointer);
+        if (!(x >= 0)) {
+            fail(pointer,
+                 where(pointer) + " = " + formatNumber(x) + " must be >= 0 (" + unit + ")");
+        }
+        return x;
+    }
+
+    // The range of the table's "seed" parameter.
+    std::uint64_t readSeed(const Json& v, const std::string& pointer) const {
+        const Parameter& seed = *findParameter("seed");
+        integerOrNumber(v, pointer, true);
+        return static_cast<std::uint64_t>(inRange(v, pointer, seed.min, seed.max));
+    }
+
+    // --- the parts of a scene ---
+
+    template <typename T>
+    std::vector<T> readList(const Json& root, const char* key,
+                            T (SceneReader::*readOne)(const Json&, const std::string&)
+                                const) const {
+        std::vector<T> out;
+        const Json* list = find(root, key);
+        if (!list) return out;
+        const std::string pointer = detail::childPointer("", key);
+        if (!list->is_array()) {
+            fail(pointer, std::string(key) + " must be an array [...], got " + typeName(*list));
+        }
+        for (std::size_t i = 0; i < list->size(); ++i) {
+            out.push_back((this->*readOne)((*list)[i], detail::childPointer(pointer, i)));
+        }
+        return out;
+    }
+
+    std::optional<Box> readBox(const Json& v, const std::string& pointer) const {
+        if (v.is_null()) return std::nullopt;
+        checkKeys(v, pointer, kBoxKeys);
+        Box box;
+        if (const Json* size = find(v, "size")) {
+            box.size = vector3(*size, pointer + "/size");
+            for (int i = 0; i < 3; ++i) {
+                positive((*size)[i], pointer + "/size/" + std::to_string(i), "m");
+            }
+        }
+        if (const Json* tilt = find(v, "tilt")) {
+            box.tilt = inRange(*tilt, pointer + "/tilt", -kMaxTilt, kMaxTilt);
+        }
+        return box;
+    }
+
+    physics::Plane readPlane(const Json& v, const std::string& pointer) const {
+        checkKeys(v, pointer, kPlaneKeys);
+        physics::Plane plane;
+        plane.point = vector3(required(v, pointer, "point"), pointer + "/point");
+        const glm::dvec3 normal = vector3(required(v, pointer, "normal"), pointer + "/normal");
+        const auto unit = detail::unitNormal(normal);
+        if (!unit) {
+            fail(pointer + "/normal",
+                 where(pointer + "/normal") + " is zero: a plane needs a direction");
+        }
+        plane.normal = *unit;
+        return plane;
+    }
+
+    Sphere readSphere(const Json& v, const std::string& pointer) const {
+        checkKeys(v, pointer, kSphereKeys);
+        Sphere s;
+        s.p = vector3(required(v, pointer, "p"), pointer + "/p");
+        if (const Json* vel = find(v, "v")) s.v = vector3(*vel, pointer + "/v");
+        if (const Json* r = find(v, "r")) s.r = positive(*r, pointer + "/r", "m");
+        if (const Json* m = find(v, "m")) s.m = positive(*m, pointer + "/m", "kg");
+        return s;
+    }
+
+    Generator readGenerator(const Json& v, const std::string& pointer) const {
+        checkKeys(v, pointer, kGeneratorKeys);
+        Generator g;
+        if (find(v, "kind")) g.kind = readKind(v, pointer);
+        const std::string countAt = pointer + "/count";
+        integerOrNumber(required(v, pointer, "count"), countAt, true);
+        g.count = static_cast<int>(inRange(v["count"], countAt, 0, kMaxGeneratedCount));
+        if (const Json* region = find(v, "region")) readRegion(*region, pointer + "/region", g);
+        if (const Json* radius = find(v, "radius")) readRadius(*radius, pointer + "/radius", g);
+        readMass(v, pointer, g);
+        if (const Json* vel = find(v, "velocity")) {
+            g.velocity = vector3(*vel, pointer + "/velocity");
+        }
+        if (const Json* spread = find(v, "velocitySpread")) {
+            g.velocitySpread = nonNegative(*spread, pointer + "/velocitySpread", "m/s");
+        }
+        if (const Json* seed = find(v, "seed")) g.seed = readSeed(*seed, pointer + "/seed");
+        return g;
+    }
+
+    GeneratorKind readKind(const Json& v, const std::string& pointer) const {
+        const std::string kind = string(v, pointer, "kind");
+        if (kind == "lattice") return GeneratorKind::Lattice;
+        if (kind == "random") return GeneratorKind::Random;
+        fail(pointer + "/kind", detail::unknownName("kind", kind, kKinds));
+    }
+
+    void readRegion(const Json& v, const std::string& pointer, Generator& g) const {
+        checkKeys(v, pointer, kRegionKeys);
+        g.regionMin = vector3(required(v, pointer, "min"), pointer + "/min");
+        g.regionMax = vector3(required(v, pointer, "max"), pointer + "/max");
+        for (int i = 0; i < 3; ++i) {
+            if (g.regionMin[i] >= g.regionMax[i]) {
+                fail(pointer + "/max", where(pointer) + " max must exceed min in x, y and z");
+            }
+        }
+    }
+
+    // A fixed radius, or [min, max] drawn uniformly, in m.
+    void readRadius(const Json& v, const std::string& pointer, Generator& g) const {
+        if (v.is_number()) {
+            g.radiusMin = g.radiusMax = positive(v, pointer, "m");
+            return;
+        }
+        if (!v.is_array() || v.size() != 2) {
+            fail(pointer, where(pointer) + " must be a number or [min, max], got " + typeName(v));
+        }
+        g.radiusMin = positive(v[0], pointer + "/0", "m");
+        g.radiusMax = positive(v[1], pointer + "/1", "m");
+        if (g.radiusMin > g.radiusMax) {
+            fail(pointer, where(pointer) + " must be [min, max] with min <= max");
+        }
+    }
+
+    void readMass(const Json& v, const std::string& pointer, Generator& g) const {
+        const Json* density = find(v, "density");
+        const Json* mass = find(v, "mass");
+        if (density && mass) {
+            fail(pointer + "/mass", where(pointer) + " gives both density and mass: give one",
+                 true);
+        }
+        if (density) g.density = positive(*density, pointer + "/density", "kg/m^3");
+        if (mass) {
+            g.massRule = MassRule::Fixed;
+            g.mass = positive(*mass, pointer + "/mass", "kg");
+        }
+    }
+
+    void readSavedState(const Json& root, Scene& scene) const {
+        if (const Json* time = find(root, "time")) {
+            scene.snapshot = true;
+            scene.time = nonNegative(*time, "/time", "s");
+        }
+        if (const Json* steps = find(root, "steps")) {
+            integerOrNumber(*steps, "/steps", true);
+            scene.stepCount =
+                static_cast<std::uint64_t>(inRange(*steps, "/steps", 0.0, kMaxInteger));
+        }
+    }
+
+    // Live parameters first; count, radius and seed after, as they act on the
+    // generators and the seed read above.
+    void readParameters(const Json& root, Scene& scene) const {
+        const Json* parameters = find(root, "parameters");
+        if (!parameters) return;
+        checkKeys(*parameters, "/parameters", parameterNames());
+        for (Applies pass : {Applies::Live, Applies::Restart}) {
+            for (const auto& item : parameters->items()) {
+                const Parameter& p = *findParameter(item.key());
+                if (p.applies == pass) readParameter(p, item.value(), root, scene);
+            }
+        }
+    }
+
+    void readParameter(const Parameter& p, const Json& v, const Json& root, Scene& scene) const {
+        const std::string pointer = detail::childPointer("/parameters", p.name);
+        if (p.name == "seed" && find(root, "seed")) {
+            fail(pointer, "seed is given twice: at the top level and in parameters", true);
+        }
+        double value = 0.0;
+        if (p.kind == ParameterKind::Choice) {
+            if (!v.is_string()) {
+                fail(pointer, where(pointer) + " must be one of " + detail::joinNames(p.choices) +
+                                  ", got " + typeName(v));
+            }
+            const std::string name = v.get<std::string>();
+            value = choiceIndex(p, name);
+            if (value < 0) {
+                fail(pointer,
+                     detail::unknownName(std::string(p.name) + " choice", name, p.choices));
+            }
+        } else {
+            value = integerOrNumber(v, pointer, false);
+        }
+        const std::string error = setValue(p, scene, value);
+        if (!error.empty()) fail(pointer, error);
+    }
+
+    std::string_view text_;
+    std::string file_;
+};
+
+// nlohmann's message without its "[json.exception...] parse error at line 3, column 6: ".
+std::string syntaxMessage(const Json::parse_error& e) {
+    const std::string what = e.what();
+    const auto start = what.find(": ", what.find("parse error"));
+    return "invalid JSON: " + (start == std::string::npos ? what : what.substr(start + 2));
+}
+
+Json parseJson(std::string_view text, const SceneReader& reader) {
+    try {
+        return Json::parse(text.begin(), text.end());
+    } catch (const Json::parse_error& e) {
+        reader.failAt(e.byte > 0 ? e.byte - 1 : 0, syntaxMessage(e));
+    } catch (const Json::out_of_range&) {
+        reader.failAt(detail::nonFiniteNumber(text).value_or(0),
+                      "number out of the range of a double (it would be infinite)");
+    }
+}
+
+// --- writing ---
+
+std::string dump(const Json& v) { return v.dump(-1, ' ', false, Json::error_handler_t::replace); }
+
+std::string vectorText(const glm::dvec3& v) { return dump(Json::array({v.x, v.y, v.z})); }
+
+std::string boxText(const std::optional<Box>& box) {
+    if (!box) return "null";
+    return "{\"size\": " + vectorText(box->size) + ", \"tilt\": " + dump(box->tilt) + "}";
+}
+
+std::string planesText(const physics::World& world) {
+    std::string out;
+    for (std::size_t k = static_cast<std::size_t>(world.boxPlaneCount); k < world.planes.size();
+         ++k) {
+        out += out.empty() ? "\n    " : ",\n    ";
+        out += "{\"point\": " + vectorText(world.planes[k].point) +
+               ", \"normal\": " + vectorText(world.planes[k].normal) + "}";
+    }
+    return "[" + out + (out.empty() ? "]" : "\n  ]");
+}
+
+// The Live parameters; count, radius and seed belong to generators and the top level.
+std::string parametersText(const Scene& scene) {
+    std::string out;
+    for (const Parameter& p : parameterTable()) {
+        if (p.applies != Applies::Live) continue;
+        const std::string value = formatValue(p, scene);
+        out += out.empty() ? "\n    " : ",\n    ";
+        out += dump(std::string(p.name)) + ": ";
+        if (p.kind == ParameterKind::Choice) {
+            out += dump(value);
+        } else if (p.kind == ParameterKind::Integer) {
+            out += value;
+        } else {
+            out += dump(p.get(scene));  // the shortest decimal that reads back the same
+        }
+    }
+    return "{" + out + "\n  }";
+}
+
+std::string spheresText(const physics::World& world) {
+    std::string out;
+    for (std::size_t i = 0; i < world.size(); ++i) {
+        out += out.empty() ? "\n    " : ",\n    ";
+        out += "{\"p\": " + vectorText(world.position[i]) +
+               ", \"v\": " + vectorText(world.velocity[i]) + ", \"r\": " + dump(world.radius[i]) +
+               ", \"m\": " + dump(world.mass[i]) + "}";
+    }
+    return "[" + out + (out.empty() ? "]" : "\n  ]");
+}
+
+void checkFinite(const physics::World& world) {
+    auto finite = [](const glm::dvec3& v) {
+        return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+    };
+    for (std::size_t i = 0; i < world.size(); ++i) {
+        if (!finite(world.position[i]) || !finite(world.velocity[i]) ||
+            !std::isfinite(world.radius[i]) || !std::isfinite(world.mass[i])) {
+            throw SceneError("cannot save: sphere " + std::to_string(i) +
+                             " has a non-finite position, velocity, radius or mass");
+        }
+    }
+    if (!std::isfinite(world.time)) throw SceneError("cannot save: the time is not finite");
+}
+
+}  // namespace
+
+Scene parseScene(std::string_view text, const std::string& filename) {
+    SceneReader reader(text, filename);
+    const Json root = parseJson(text, reader);
+    if (const auto duplicate = detail::duplicateKey(text)) {
+        reader.failAt(duplicate->offset,
+                      "key '" + detail::readablePath(duplicate->pointer) + "' appears twice");
+    }
+    if (!root.is_object()) {
+        reader.fail("", "a scene must be a JSON object {...}, got " + typeName(root));
+    }
+    Scene scene;
+    try {
+        scene = reader.read(root);
+        buildWorld(scene);  // overlaps, spheres outside the box, regions that cannot hold count
+    } catch (const SceneError& e) {
+        if (e.path().empty()) throw;  // already "file:line:col: ..."
+        reader.fail(e.path(), e.what());
+    } catch (const nlohmann::json::exception& e) {
+        reader.failAt(0, e.what());  // a check above missed a case: still one line, no crash
+    }
+    return scene;
+}
+
+Scene loadScene(const std::string& path) {
+    std::ifstream file(path, std::ios::binary);
+    if (!file) throw SceneError(path + ":1:1: cannot open the scene file");
+    std::ostringstream text;
+    text << file.rdbuf();
+    if (file.bad()) throw SceneError(path + ":1:1: cannot read the scene file");
+    return parseScene(text.str(), path);
+}
+
+std::string sceneText(const Scene& scene, const physics::World& world) {
+    checkFinite(world);
+    std::ostringstream out;
+    out << "{\n"
+        << "  \"title\": " << dump(scene.title) << ",\n"
+        << "  \"slide\": " << dump(scene.slide) << ",\n"
+        << "  \"description\": " << dump(scene.description) << ",\n"
+        << "  \"box\": " << boxText(scene.box) << ",\n"
+        << "  \"planes\": " << planesText(world) << ",\n"
+        << "  \"parameters\": " << parametersText(scene) << ",\n"
+        << "  \"seed\": " << scene.seed << ",\n"
+        << "  \"time\": " << dump(world.time) << ",\n"
+        << "  \"steps\": " << world.stepCount << ",\n"
+        << "  \"spheres\": " << spheresText(world) << "\n"
+        << "}\n";
+    return out.str();
+}
+
+void saveScene(const std::string& path, const Scene& scene, const physics::World& world) {
+    const std::string text = sceneText(scene, world);
+    std::ofstream file(path, std::ios::binary | std::ios::trunc);
+    file << text;
+    file.close();
+    if (!file) throw SceneError(path + ": cannot write the scene file");
+}
+
+}  // namespace scenes

@@ -1,0 +1,184 @@
+// The parameter table: one name, range, default and tooltip per lecture parameter,
+// read by the UI, the command line's --set and the JSON loader.
+#include <gtest/gtest.h>
+
+#include <set>
+#include <string>
+
+#include "scenes/parameters.h"
+
+namespace {
+
+using scenes::applySetting;
+using scenes::Parameter;
+using scenes::ParameterKind;
+using scenes::Scene;
+
+bool contains(const std::string& text, const std::string& part) {
+    return text.find(part) != std::string::npos;
+}
+
+Scene sceneWithGenerators() {
+    Scene scene;
+    scenes::Generator g;
+    g.count = 50;
+    scene.generators = {g, g};
+    return scene;
+}
+
+TEST(ParameterTable, HasTheLectureParametersOnceEach) {
+    std::set<std::string> names;
+    for (const Parameter& p : scenes::parameterTable()) names.insert(std::string(p.name));
+    EXPECT_EQ(names.size(), scenes::parameterTable().size());
+    const std::set<std::string> expected = {
+        "alpha",  "beta",     "epsilon", "mu",    "h",          "substeps", "passes", "gravity",
+        "method", "response", "split",   "order", "broadphase", "count",    "radius", "seed"};
+    EXPECT_EQ(names, expected);
+}
+
+TEST(ParameterTable, EveryDefaultLiesInItsRange) {
+    for (const Parameter& p : scenes::parameterTable()) {
+        SCOPED_TRACE(std::string(p.name));
+        EXPECT_LE(p.min, p.defaultValue);
+        EXPECT_LE(p.defaultValue, p.max);
+        EXPECT_LT(p.min, p.max);
+        EXPECT_EQ(scenes::checkValue(p, p.defaultValue), "");
+        EXPECT_FALSE(p.label.empty());
+        EXPECT_FALSE(p.tooltip.empty());
+        ASSERT_NE(p.get, nullptr);
+        ASSERT_NE(p.set, nullptr);
+        if (p.kind == ParameterKind::Choice) {
+            EXPECT_EQ(p.max, static_cast<double>(p.choices.size()) - 1.0);
+        }
+    }
+}
+
+TEST(ParameterTable, LiveDefaultsAreThoseOfADefaultScene) {
+    const Scene scene;
+    for (const Parameter& p : scenes::parameterTable()) {
+        if (p.applies != scenes::Applies::Live) continue;
+        SCOPED_TRACE(std::string(p.name));
+        EXPECT_EQ(p.get(scene), p.defaultValue);
+    }
+    EXPECT_EQ(scenes::findParameter("gravity")->defaultValue, 9.81);
+    EXPECT_EQ(scenes::findParameter("h")->defaultValue, 1.0 / 60.0);
+}
+
+TEST(ParameterTable, RangesAreTheLecturesAndApplyAsDocumented) {
+    const Parameter* h = scenes::findParameter("h");
+    ASSERT_NE(h, nullptr);
+    EXPECT_EQ(h->min, 1e-4);
+    EXPECT_EQ(h->max, 0.1);
+    EXPECT_EQ(h->unit, "s");
+    EXPECT_EQ(scenes::findParameter("epsilon")->unit, "m/s");
+    EXPECT_EQ(scenes::findParameter("epsilon")->max, 10.0);
+    EXPECT_EQ(scenes::findParameter("substeps")->max, 64.0);
+    EXPECT_EQ(scenes::findParameter("passes")->max, 100.0);
+    EXPECT_EQ(scenes::findParameter("gravity")->max, 50.0);
+    EXPECT_EQ(scenes::findParameter("count")->applies, scenes::Applies::Restart);
+    EXPECT_EQ(scenes::findParameter("radius")->applies, scenes::Applies::Restart);
+    EXPECT_EQ(scenes::findParameter("seed")->applies, scenes::Applies::Restart);
+    EXPECT_EQ(scenes::findParameter("mu")->applies, scenes::Applies::Live);
+    EXPECT_TRUE(contains(std::string(scenes::findParameter("mu")->tooltip), "not Coulomb"));
+    EXPECT_TRUE(
+        contains(std::string(scenes::findParameter("epsilon")->tooltip), "|g| h / substeps"));
+    EXPECT_EQ(scenes::findParameter("nope"), nullptr);
+}
+
+TEST(ApplySetting, AcceptsGoodValuesAndChangesTheScene) {
+    Scene scene = sceneWithGenerators();
+    EXPECT_EQ(applySetting(scene, "alpha=0.25"), "");
+    EXPECT_EQ(scene.params.alpha, 0.25);
+    EXPECT_EQ(applySetting(scene, " beta = 0.5 "), "");
+    EXPECT_EQ(scene.params.beta, 0.5);
+    EXPECT_EQ(applySetting(scene, "h=0.001"), "");
+    EXPECT_EQ(scene.params.timeStep, 0.001);
+    EXPECT_EQ(applySetting(scene, "substeps=8"), "");
+    EXPECT_EQ(scene.params.substeps, 8);
+    EXPECT_EQ(applySetting(scene, "gravity=3.5"), "");
+    EXPECT_EQ(scene.params.gravity, glm::dvec3(0.0, 0.0, -3.5));
+    EXPECT_EQ(applySetting(scene, "method=velocity"), "");
+    EXPECT_EQ(scene.params.method, physics::Method::VelocityBased);
+    EXPECT_EQ(applySetting(scene, "response=momentum"), "");
+    EXPECT_EQ(scene.params.response, physics::ResponseModel::MomentumConserving);
+    EXPECT_EQ(applySetting(scene, "split=mass"), "");
+    EXPECT_EQ(scene.params.split, physics::PositionSplit::MassWeighted);
+    EXPECT_EQ(applySetting(scene, "order=shuffled"), "");
+    EXPECT_EQ(scene.params.order, physics::PairOrder::Shuffled);
+    EXPECT_EQ(applySetting(scene, "broadphase=allpairs"), "");
+    EXPECT_EQ(scene.params.broadPhase, physics::BroadPhase::AllPairs);
+    EXPECT_EQ(applySetting(scene, "count=500"), "");
+    EXPECT_EQ(scene.generators[0].count, 500);
+    EXPECT_EQ(scene.generators[1].count, 50);
+    EXPECT_EQ(applySetting(scene, "radius=0.03"), "");
+    EXPECT_EQ(scene.generators[1].radiusMin, 0.03);
+    EXPECT_EQ(scene.generators[1].radiusMax, 0.03);
+    EXPECT_EQ(applySetting(scene, "seed=42"), "");
+    EXPECT_EQ(scene.seed, 42u);
+}
+
+TEST(ApplySetting, RefusesOutOfRangeWithTheRange) {
+    Scene scene;
+    EXPECT_EQ(applySetting(scene, "beta=1.5"), "beta = 1.5 is out of range [0, 1]");
+    EXPECT_EQ(applySetting(scene, "h=0"), "h = 0 is out of range [0.0001, 0.1] s");
+    EXPECT_EQ(applySetting(scene, "epsilon=-1"), "epsilon = -1 is out of range [0, 10] m/s");
+    EXPECT_EQ(applySetting(scene, "passes=0"), "passes = 0 is out of range [1, 100]");
+    EXPECT_EQ(applySetting(scene, "substeps=2.5"), "substeps = 2.5 must be a whole number");
+    EXPECT_EQ(scene.params.beta, physics::Params{}.beta);  // unchanged on error
+    EXPECT_EQ(scene.params.timeStep, physics::Params{}.timeStep);
+}
+
+TEST(ApplySetting, RefusesUnknownNamesWithCloseAndValidNames) {
+    Scene scene;
+    const std::string typo = applySetting(scene, "alpah=0.5");
+    EXPECT_TRUE(contains(typo, "unknown parameter 'alpah'")) << typo;
+    EXPECT_TRUE(contains(typo, "did you mean 'alpha'?")) << typo;
+    EXPECT_TRUE(contains(typo, "alpha, beta, epsilon, mu, h")) << typo;
+    const std::string far = applySetting(scene, "friction=0.5");
+    EXPECT_TRUE(contains(far, "unknown parameter 'friction'")) << far;
+    EXPECT_FALSE(contains(far, "did you mean")) << far;
+    EXPECT_EQ(applySetting(scene, "alpha"), "expected name=value, got 'alpha'");
+}
+
+TEST(ApplySetting, RefusesValuesThatAreNotNumbersOrChoices) {
+    Scene scene;
+    EXPECT_EQ(applySetting(scene, "alpha=abc"), "value 'abc' for alpha is not a number");
+    EXPECT_EQ(applySetting(scene, "alpha=0.5x"), "value '0.5x' for alpha is not a number");
+    EXPECT_EQ(applySetting(scene, "alpha="), "value '' for alpha is not a number");
+    EXPECT_EQ(applySetting(scene, "alpha=nan"), "value 'nan' for alpha is not a number");
+    EXPECT_EQ(applySetting(scene, "gravity=inf"), "value 'inf' for gravity is not a number");
+    EXPECT_EQ(applySetting(scene, "method=fast"),
+              "method = 'fast' is not a choice; choices: position, velocity, response-only");
+    EXPECT_EQ(applySetting(scene, "order=2"),
+              "order = '2' is not a choice; choices: index, reversed, shuffled");
+    EXPECT_EQ(scene.params.alpha, physics::Params{}.alpha);
+}
+
+TEST(ApplySetting, RestartParametersNeedGeneratedSpheres) {
+    Scene scene;
+    EXPECT_EQ(applySetting(scene, "count=10"), "scene has no generated spheres");
+    EXPECT_EQ(applySetting(scene, "radius=0.1"), "scene has no generated spheres");
+    EXPECT_EQ(applySetting(scene, "count=-1"), "count = -1 is out of range [0, 1000000]");
+    EXPECT_EQ(applySetting(scene, "seed=-3"), "seed = -3 is out of range [0, 9007199254740992]");
+}
+
+TEST(FormatValue, ReadsBackThroughApplySetting) {
+    Scene scene = sceneWithGenerators();
+    scene.params.timeStep = 1.0 / 240.0;
+    scene.params.alpha = 0.1 + 0.2;  // 0.30000000000000004: needs all 17 digits
+    scene.params.method = physics::Method::VelocityBased;
+    scene.seed = 123456789;
+    EXPECT_EQ(scenes::formatValue(*scenes::findParameter("method"), scene), "velocity");
+    EXPECT_EQ(scenes::formatValue(*scenes::findParameter("alpha"), scene), "0.30000000000000004");
+    EXPECT_EQ(scenes::formatValue(*scenes::findParameter("substeps"), scene), "4");
+    EXPECT_EQ(scenes::formatValue(*scenes::findParameter("seed"), scene), "123456789");
+    for (const Parameter& p : scenes::parameterTable()) {
+        SCOPED_TRACE(std::string(p.name));
+        Scene copy = scene;
+        const std::string text = scenes::formatValue(p, scene);
+        EXPECT_EQ(applySetting(copy, std::string(p.name) + "=" + text), "");
+        EXPECT_EQ(p.get(copy), p.get(scene));
+    }
+}
+
+}  // namespace

@@ -1,0 +1,494 @@
+// Scene files: every kind of bad input is refused with "file:line:col: what",
+// the shipped presets load and build cleanly, and a saved state loads back
+// bit for bit.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <glm/geometric.hpp>
+#include <initializer_list>
+#include <string>
+
+#include "physics/diagnostics.h"
+#include "physics/step.h"
+#include "scenes/parameters.h"
+#include "scenes/presets.h"
+#include "scenes/scene_json.h"
+
+namespace {
+
+using scenes::Scene;
+
+bool contains(const std::string& text, const std::string& part) {
+    return text.find(part) != std::string::npos;
+}
+
+// The message parseScene throws for `text`, or "" when it loads.
+std::string errorOf(const std::string& text) {
+    try {
+        scenes::parseScene(text, "bad.json");
+    } catch (const scenes::SceneError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+// One line that starts with "bad.json:<line>:<column>:" and names the problem.
+void expectError(const std::string& text, const std::string& location,
+                 std::initializer_list<const char*> words) {
+    const std::string message = errorOf(text);
+    SCOPED_TRACE(message);
+    EXPECT_EQ(message.rfind("bad.json:" + location + ": ", 0), 0u);
+    EXPECT_EQ(message.find('\n'), std::string::npos);
+    for (const char* word : words) EXPECT_TRUE(contains(message, word)) << word;
+}
+
+const char* const kBox = R"("box": {"size": [2, 2, 2], "tilt": 0},)";
+
+// --- bad input: one test per kind, each checking file, line, column and words ---
+
+TEST(SceneFile, RefusesJsonSyntaxErrorsAtTheirLine) {
+    expectError("{\n  \"title\": \"x\",\n  \"seed\" 3\n}", "3:10",
+                {"invalid JSON: syntax error", "expected ':'"});
+    expectError("{\n  \"spheres\": [\n", "3:1", {"syntax error", "unexpected end of input"});
+    expectError("", "1:1", {"syntax error", "unexpected end of input"});
+    expectError("{\n  \"title\": \"a\nb\"\n}", "2:14", {"syntax error", "control character"});
+}
+
+TEST(SceneFile, RefusesARootThatIsNotAnObject) {
+    expectError("\n  [1, 2]", "2:3", {"a scene must be a JSON object", "got an array"});
+}
+
+TEST(SceneFile, RefusesUnknownKeysAndSuggestsTheClosest) {
+    expectError("{\n  \"title\": \"x\",\n  \"tittle\": \"y\"\n}", "3:3",
+                {"unknown key 'tittle'", "did you mean 'title'?", "in the scene"});
+    expectError("{\n  \"parameters\": {\"beta\": 0.5,\n                 \"alpah\": 0.5}\n}", "3:18",
+                {"unknown key 'alpah'", "did you mean 'alpha'?", "(in parameters)"});
+    expectError(std::string("{\n  ") + kBox + R"(
+  "spheres": [
+    {"p": [0, 0, 1], "r": 0.1},
+    {"p": [0, 0, 1.5], "radius": 0.1}
+  ]
+})",
+                "5:24", {"unknown key 'radius'", "(in spheres[1])", "valid: p, v, r, m"});
+    expectError(std::string("{\n  ") + kBox + R"(
+  "generate": [{"count": 3,
+    "region": {"min": [0, 0, 0], "max": [1, 1, 1], "mid": [0, 0, 0]}}]
+})",
+                "4:52", {"unknown key 'mid'", "did you mean 'min'?", "generate[0].region"});
+}
+
+TEST(SceneFile, RefusesRepeatedKeys) {
+    expectError("{\n  \"parameters\": {\"alpha\": 0.5,\n    \"alpha\": 0.7}\n}", "3:5",
+                {"key 'parameters.alpha' appears twice"});
+}
+
+TEST(SceneFile, RefusesWrongTypes) {
+    expectError("{\n  \"parameters\": {\"alpha\": \"one\"}\n}", "2:27",
+                {"parameters.alpha must be a number, got a string"});
+    expectError("{\n  \"box\": [2, 2, 2]\n}", "2:10",
+                {"box must be an object {...}, got an array"});
+    expectError("{\n  \"title\": 3\n}", "2:12", {"title must be a string, got a number"});
+    expectError("{\n  \"spheres\": {\"p\": [0, 0, 1]}\n}", "2:14",
+                {"spheres must be an array [...], got an object"});
+    expectError("{\n  \"spheres\": [{\"p\": [0, 1]}]\n}", "2:21",
+                {"spheres[0].p must be an array of 3 numbers [x, y, z], got an array of 2"});
+    expectError("{\n  \"spheres\": [{\"p\": [0, 0, true]}]\n}", "2:28",
+                {"spheres[0].p[2] must be a number, got a boolean"});
+    expectError("{\n  \"parameters\": {\"substeps\": 2.5}\n}", "2:30",
+                {"substeps = 2.5 must be a whole number"});
+    expectError(
+        "{\n  \"parameters\": {\"method\": 1}\n}", "2:28",
+        {"parameters.method must be one of position, velocity, response-only, got a number"});
+}
+
+TEST(SceneFile, RefusesMissingRequiredKeys) {
+    expectError(std::string("{\n  ") + kBox + "\n  \"spheres\": [\n    {\"r\": 0.1}]\n}", "4:5",
+                {"spheres[0] needs \"p\""});
+    expectError("{\n  \"planes\": [{\"point\": [0, 0, 0]}]\n}", "2:14",
+                {"planes[0] needs \"normal\""});
+}
+
+TEST(SceneFile, RefusesNonPositiveRadiusAndMass) {
+    expectError(std::string("{\n  ") + kBox + R"(
+  "spheres": [
+    {"p": [0, 0, 1], "r": -0.1, "m": 1}
+  ]
+})",
+                "4:27", {"spheres[0].r = -0.1 must be positive (m)"});
+    expectError(std::string("{\n  ") + kBox + R"(
+  "spheres": [
+    {"p": [0, 0, 1], "r": 0.1, "m": 0}
+  ]
+})",
+                "4:37", {"spheres[0].m = 0 must be positive (kg)"});
+    expectError(R"({"generate": [{"count": 1, "radius": [0.1, 0]}]})", "1:44",
+                {"generate[0].radius[1] = 0 must be positive (m)"});
+    expectError(R"({"generate": [{"count": 1, "density": -5}]})", "1:39",
+                {"generate[0].density = -5 must be positive (kg/m^3)"});
+}
+
+TEST(SceneFile, RefusesNumbersTooLargeForADouble) {
+    expectError("{\n  \"title\": \"1e999\",\n  \"spheres\": [\n    {\"p\": [0, 0, 1e999]}\n  ]\n}",
+                "4:18", {"number out of the range of a double"});
+    expectError("{\"parameters\": {\"gravity\": -2e400}}", "1:28",
+                {"out of the range of a double"});
+}
+
+TEST(SceneFile, RefusesParametersOutOfTheirTableRange) {
+    expectError("{\n  \"parameters\": {\n    \"alpha\": 1.5\n  }\n}", "3:14",
+                {"alpha = 1.5 is out of range [0, 1]"});
+    expectError("{\n  \"parameters\": {\"h\": 0}\n}", "2:23",
+                {"h = 0 is out of range [0.0001, 0.1] s"});
+    expectError("{\n  \"parameters\": {\"passes\": 1000}\n}", "2:28",
+                {"passes = 1000 is out of range [1, 100]"});
+    expectError("{\n  \"seed\": -1\n}", "2:11",
+                {"seed = -1 is out of range [0, 9007199254740992]"});
+    expectError("{\n  \"box\": {\"tilt\": 120}\n}", "2:19",
+                {"box.tilt = 120 is out of range [-90, 90]"});
+}
+
+TEST(SceneFile, RefusesUnknownChoiceNames) {
+    expectError("{\n  \"parameters\": {\n    \"method\": \"fast\"\n  }\n}", "3:15",
+                {"unknown method choice 'fast'", "valid: position, velocity, response-only"});
+    expectError("{\"parameters\": {\"order\": \"reverse\"}}", "1:26",
+                {"unknown order choice 'reverse'", "did you mean 'reversed'?"});
+    expectError("{\"generate\": [{\"count\": 1, \"kind\": \"latice\"}]}", "1:36",
+                {"unknown kind 'latice'", "did you mean 'lattice'?"});
+}
+
+TEST(SceneFile, RefusesAZeroNormal) {
+    expectError("{\n  \"planes\": [\n    {\"point\": [0, 0, 0], \"normal\": [0, 0, 0]}\n  ]\n}",
+                "3:36", {"planes[0].normal is zero"});
+}
+
+TEST(SceneFile, RefusesOverlappingSpheresByIndex) {
+    expectError(std::string("{\n  ") + kBox + R"(
+  "spheres": [
+    {"p": [0, 0, 1], "r": 0.1},
+    {"p": [0.5, 0, 1], "r": 0.1},
+    {"p": [0.05, 0, 1.05], "r": 0.1}
+  ]
+})",
+                "6:11", {"spheres[2] at (0.05, 0, 1.05) overlaps spheres[0] at (0, 0, 1)"});
+}
+
+TEST(SceneFile, RefusesSpheresOutsideTheBoxByIndex) {
+    expectError(std::string("{\n  ") + kBox + R"(
+  "spheres": [
+    {"p": [0, 0, 1], "r": 0.1},
+    {"p": [0.5, 0, 0.05], "r": 0.1}
+  ]
+})",
+                "5:11", {"spheres[1]", "is outside the box: it crosses the box's floor"});
+    expectError(R"({"planes": [{"point": [0, 0, 1], "normal": [0, 0, 1]}],
+ "spheres": [{"p": [0, 0, 0.5], "r": 0.1}]})",
+                "2:20", {"spheres[0]", "crosses planes[0]"});
+}
+
+TEST(SceneFile, RefusesGeneratorRegionsOutsideTheBox) {
+    expectError(std::string("{\n  ") + kBox + R"(
+  "generate": [
+    {"count": 10, "radius": 0.05,
+     "region": {"min": [-1.5, -1, 0], "max": [1, 1, 2]}}
+  ]
+})",
+                "5:16", {"generate[0] region corner (-1.5, -1, 0) is outside the box", "-x wall"});
+    expectError(R"({"generate": [{"count": 1, "region": {"min": [0, 0, 0], "max": [1, 0, 1]}}]})",
+                "1:64", {"generate[0].region max must exceed min"});
+}
+
+TEST(SceneFile, RefusesANegativeCount) {
+    expectError("{\n  \"generate\": [\n    {\"count\": -3}\n  ]\n}", "3:15",
+                {"generate[0].count = -3 is out of range [0, 1000000]"});
+    expectError("{\n  \"generate\": [\n    {\"count\": 2.5}\n  ]\n}", "3:15",
+                {"generate[0].count = 2.5 must be a whole number"});
+}
+
+TEST(SceneFile, RefusesACountTheRegionCannotHold) {
+    expectError(std::string("{\n  ") + kBox + R"(
+  "generate": [
+    {"kind": "lattice", "radius": 0.05,
+     "count": 1000,
+     "region": {"min": [-0.5, -0.5, 0], "max": [0.5, 0.5, 1]}}
+  ]
+})",
+                "5:15", {"generate[0]: the region holds only 729 spheres", "count is 1000"});
+    expectError(std::string("{\n  ") + kBox + R"(
+  "generate": [{"radius": 0.2, "count": 500, "region": {"min": [-1, -1, 0], "max": [1, 1, 2]}}]
+})",
+                "3:41", {"region cannot hold 500 spheres"});
+}
+
+TEST(SceneFile, RefusesContradictions) {
+    expectError("{\"generate\": [{\"count\": 1, \"density\": 5, \"mass\": 1}]}", "1:42",
+                {"generate[0] gives both density and mass"});
+    expectError("{\"seed\": 3, \"parameters\": {\"seed\": 4}}", "1:28", {"seed is given twice"});
+    expectError("{\n  \"parameters\": {\"count\": 10}\n}", "2:27",
+                {"scene has no generated spheres"});
+}
+
+TEST(SceneFile, MissingFileIsOneLine) {
+    try {
+        scenes::loadScene("/nonexistent/scene.json");
+        FAIL() << "no error";
+    } catch (const scenes::SceneError& e) {
+        EXPECT_EQ(std::string(e.what()), "/nonexistent/scene.json:1:1: cannot open the scene file");
+    }
+}
+
+// --- good input ---
+
+TEST(SceneFile, ReadsEveryKey) {
+    const Scene s = scenes::parseScene(R"({
+  "title": "T", "slide": "S 4/14", "description": "D",
+  "box": {"size": [2, 3, 4], "tilt": 10},
+  "planes": [{"point": [0, 0, 0.5], "normal": [0, 3, 4]}],
+  "parameters": {"alpha": 0.5, "beta": 0.25, "epsilon": 0.2, "mu": 0.75, "h": 0.01,
+                 "substeps": 2, "passes": 7, "gravity": 3, "method": "velocity",
+                 "response": "momentum", "split": "mass", "order": "reversed",
+                 "broadphase": "allpairs", "count": 12, "radius": 0.04},
+  "seed": 77,
+  "spheres": [{"p": [0, 0, 1.5], "v": [1, 2, 3], "r": 0.1, "m": 2}],
+  "generate": [{"kind": "lattice", "count": 5, "region": {"min": [-0.5, -0.5, 1], "max": [0.5, 0.5, 1.4]},
+                "radius": [0.03, 0.05], "mass": 0.2, "velocity": [0, 0, -1], "velocitySpread": 0.1,
+                "seed": 9}]
+})",
+                                       "good.json");
+    EXPECT_EQ(s.title, "T");
+    EXPECT_EQ(s.slide, "S 4/14");
+    EXPECT_EQ(s.description, "D");
+    ASSERT_TRUE(s.box);
+    EXPECT_EQ(s.box->size, glm::dvec3(2, 3, 4));
+    EXPECT_EQ(s.box->tilt, 10.0);
+    ASSERT_EQ(s.planes.size(), 1u);
+    EXPECT_EQ(s.planes[0].normal, glm::dvec3(0, 0.6, 0.8));  // normalised on load
+    EXPECT_EQ(s.params.alpha, 0.5);
+    EXPECT_EQ(s.params.beta, 0.25);
+    EXPECT_EQ(s.params.epsilon, 0.2);
+    EXPECT_EQ(s.params.mu, 0.75);
+    EXPECT_EQ(s.params.timeStep, 0.01);
+    EXPECT_EQ(s.params.substeps, 2);
+    EXPECT_EQ(s.params.passes, 7);
+    EXPECT_EQ(s.params.gravity, glm::dvec3(0, 0, -3));
+    EXPECT_EQ(s.params.method, physics::Method::VelocityBased);
+    EXPECT_EQ(s.params.response, physics::ResponseModel::MomentumConserving);
+    EXPECT_EQ(s.params.split, physics::PositionSplit::MassWeighted);
+    EXPECT_EQ(s.params.order, physics::PairOrder::Reversed);
+    EXPECT_EQ(s.params.broadPhase, physics::BroadPhase::AllPairs);
+    EXPECT_EQ(s.seed, 77u);
+    ASSERT_EQ(s.spheres.size(), 1u);
+    EXPECT_EQ(s.spheres[0].v, glm::dvec3(1, 2, 3));
+    EXPECT_EQ(s.spheres[0].m, 2.0);
+    ASSERT_EQ(s.generators.size(), 1u);
+    const scenes::Generator& g = s.generators[0];
+    EXPECT_EQ(g.kind, scenes::GeneratorKind::Lattice);
+    EXPECT_EQ(g.count, 12);        // "count" in parameters acts on the first generator
+    EXPECT_EQ(g.radiusMin, 0.04);  // "radius" in parameters fixes every generator's radius
+    EXPECT_EQ(g.radiusMax, 0.04);
+    EXPECT_EQ(g.massRule, scenes::MassRule::Fixed);
+    EXPECT_EQ(g.mass, 0.2);
+    EXPECT_EQ(g.velocity, glm::dvec3(0, 0, -1));
+    EXPECT_EQ(g.velocitySpread, 0.1);
+    ASSERT_TRUE(g.seed);
+    EXPECT_EQ(*g.seed, 9u);
+    EXPECT_FALSE(s.snapshot);
+    EXPECT_EQ(scenes::buildWorld(s).size(), 13u);
+}
+
+TEST(SceneFile, OmittedKeysTakeTheDefaults) {
+    const Scene s = scenes::parseScene(R"({"box": null, "spheres": [{"p": [0, 0, 0]}]})", "x.json");
+    const Scene defaults;
+    EXPECT_FALSE(s.box);
+    EXPECT_EQ(s.seed, defaults.seed);
+    EXPECT_EQ(s.params.beta, defaults.params.beta);
+    EXPECT_EQ(s.params.gravity, defaults.params.gravity);
+    EXPECT_EQ(s.spheres[0].r, scenes::Sphere{}.r);
+    EXPECT_EQ(s.spheres[0].v, glm::dvec3(0.0));
+    const Scene boxOnly = scenes::parseScene(R"({"box": {}})", "x.json");
+    ASSERT_TRUE(boxOnly.box);
+    EXPECT_EQ(boxOnly.box->size, glm::dvec3(2, 2, 2));
+}
+
+// --- the shipped presets ---
+
+TEST(Presets, EightScenesSortedByFileName) {
+    const std::vector<std::string> expected = {
+        "01_single_bounce", "02_head_on", "03_head_on_unequal", "04_newtons_cradle", "05_column",
+        "06_gas",           "07_pile",    "08_inclined_plane"};
+    EXPECT_EQ(scenes::listPresets(), expected);
+    EXPECT_TRUE(std::filesystem::exists(scenes::presetPath("01_single_bounce")));
+    EXPECT_EQ(scenes::presetPath("02_head_on.json"), scenes::presetPath("02_head_on"));
+    try {
+        scenes::presetPath("99_nothing");
+        FAIL() << "no error";
+    } catch (const scenes::SceneError& e) {
+        EXPECT_TRUE(contains(e.what(), "unknown preset '99_nothing'; presets: 01_single_bounce"));
+    }
+}
+
+TEST(Presets, EveryPresetLoadsAndBuildsWithoutOverlapInsideTheBox) {
+    for (const std::string& name : scenes::listPresets()) {
+        SCOPED_TRACE(name);
+        const Scene scene = scenes::loadScene(scenes::presetPath(name));
+        EXPECT_FALSE(scene.title.empty());
+        EXPECT_FALSE(scene.slide.empty());
+        EXPECT_FALSE(scene.description.empty());
+        ASSERT_TRUE(scene.box);
+        const physics::World w = scenes::buildWorld(scene);
+        ASSERT_GT(w.size(), 0u);
+        std::size_t overlaps = 0, outside = 0;
+        for (std::size_t i = 0; i < w.size(); ++i) {
+            for (std::size_t j = i + 1; j < w.size(); ++j) {
+                const double gap =
+                    glm::distance(w.position[i], w.position[j]) - w.radius[i] - w.radius[j];
+                overlaps += gap < -1e-12;
+            }
+            for (const physics::Plane& plane : w.planes) {
+                outside +=
+                    glm::dot(w.position[i] - plane.point, plane.normal) < w.radius[i] - 1e-12;
+            }
+        }
+        EXPECT_EQ(overlaps, 0u);
+        EXPECT_EQ(outside, 0u);
+        for (const scenes::Parameter& p : scenes::parameterTable()) {
+            if (p.applies == scenes::Applies::Live) {
+                EXPECT_EQ(scenes::checkValue(p, p.get(scene)), "");
+            }
+        }
+    }
+}
+
+TEST(Presets, EachShowsItsPhenomenon) {
+    auto load = [](const char* name) { return scenes::loadScene(scenes::presetPath(name)); };
+    const Scene bounce = load("01_single_bounce");
+    ASSERT_EQ(bounce.spheres.size(), 1u);
+    EXPECT_EQ(bounce.spheres[0].p.z, 1.5);
+    EXPECT_EQ(bounce.params.beta, 0.8);
+    const Scene headOn = load("02_head_on");
+    EXPECT_EQ(headOn.params.alpha, 1.0);
+    EXPECT_EQ(headOn.params.beta, 1.0);
+    EXPECT_EQ(headOn.params.gravity, glm::dvec3(0.0));
+    EXPECT_EQ(headOn.spheres[0].m, headOn.spheres[1].m);
+    const Scene unequal = load("03_head_on_unequal");
+    EXPECT_EQ(unequal.spheres[0].m, 1.0);
+    EXPECT_EQ(unequal.spheres[1].m, 3.0);
+    const Scene cradle = load("04_newtons_cradle");
+    ASSERT_EQ(cradle.spheres.size(), 5u);
+    EXPECT_EQ(cradle.spheres[0].v, glm::dvec3(2, 0, 0));
+    for (std::size_t i = 1; i < 5; ++i) {
+        EXPECT_EQ(glm::distance(cradle.spheres[i].p, cradle.spheres[i - 1].p), 0.2);  // touching
+        EXPECT_EQ(cradle.spheres[i].v, glm::dvec3(0.0));
+    }
+    EXPECT_EQ(cradle.params.epsilon, 0.0);
+    const Scene column = load("05_column");
+    ASSERT_EQ(column.spheres.size(), 10u);
+    EXPECT_EQ(column.spheres[0].p.z, column.spheres[0].r);  // on the floor
+    EXPECT_EQ(scenes::buildWorld(load("06_gas")).size(), 300u);
+    EXPECT_EQ(load("06_gas").params.gravity, glm::dvec3(0.0));
+    EXPECT_EQ(scenes::buildWorld(load("07_pile")).size(), 1000u);
+    const Scene incline = load("08_inclined_plane");
+    ASSERT_EQ(incline.planes.size(), 1u);
+    EXPECT_NEAR(std::acos(incline.planes[0].normal.z) * 180.0 / 3.14159265358979323846, 20.0, 1e-6);
+}
+
+// Runs a preset for `frames` time steps, after applying "name=value" settings.
+physics::World runPreset(const char* name, int frames,
+                         std::initializer_list<const char*> settings = {}) {
+    Scene scene = scenes::loadScene(scenes::presetPath(name));
+    for (const char* setting : settings) EXPECT_EQ(scenes::applySetting(scene, setting), "");
+    physics::World world = scenes::buildWorld(scene);
+    for (int k = 0; k < frames; ++k) physics::step(world, scene.params);
+    return world;
+}
+
+TEST(PresetPhysics, HeadOnEqualMassesSwapVelocities) {
+    const physics::World w = runPreset("02_head_on", 60);  // they meet at t = 0.8 s
+    EXPECT_NEAR(w.velocity[0].x, 0.0, 1e-12);
+    EXPECT_NEAR(w.velocity[1].x, 1.0, 1e-12);
+}
+
+TEST(PresetPhysics, HeadOnMasses1And3FollowTheClosedForm) {
+    const physics::World w = runPreset("03_head_on_unequal", 60);
+    EXPECT_NEAR(w.velocity[0].x, (1.0 - 3.0) / 4.0, 1e-12);  // ((m1 - m2) v1 + 2 m2 v2) / (m1 + m2)
+    EXPECT_NEAR(w.velocity[1].x, 2.0 * 1.0 / 4.0, 1e-12);
+}
+
+TEST(PresetPhysics, NewtonsCradleNeedsMorePassesInReversedOrder) {
+    const physics::World index = runPreset("04_newtons_cradle", 12);
+    for (std::size_t i = 0; i < 4; ++i) EXPECT_NEAR(index.velocity[i].x, 0.0, 2e-6);
+    EXPECT_NEAR(index.velocity[4].x, 2.0, 2e-6);
+    const physics::World reversed = runPreset("04_newtons_cradle", 12, {"order=reversed"});
+    EXPECT_LT(reversed.velocity[4].x, 1.9);  // the impulse spread over the row
+    const physics::World fixed = runPreset("04_newtons_cradle", 12, {"order=reversed", "passes=4"});
+    EXPECT_NEAR(fixed.velocity[4].x, 2.0, 2e-6);
+}
+
+// --- save and load ---
+
+// Saves and loads back through a text, as saveScene and loadScene do through a file.
+physics::World reloaded(const Scene& scene, const physics::World& world, Scene* loaded = nullptr) {
+    const Scene back = scenes::parseScene(scenes::sceneText(scene, world), "saved.json");
+    if (loaded) *loaded = back;
+    return scenes::buildWorld(back);
+}
+
+TEST(SaveLoad, RoundTripIsBitIdentical) {
+    const Scene scene = scenes::loadScene(scenes::presetPath("07_pile"));
+    physics::World world = scenes::buildWorld(scene);
+    world.velocity[3] = {-0.0, 1.0 / 3.0, 1e-300};  // sign of zero, all 17 digits, tiny numbers
+    Scene back;
+    const physics::World again = reloaded(scene, world, &back);
+    EXPECT_EQ(again.position, world.position);
+    EXPECT_EQ(again.velocity, world.velocity);
+    EXPECT_EQ(again.radius, world.radius);
+    EXPECT_EQ(again.mass, world.mass);
+    EXPECT_TRUE(std::signbit(again.velocity[3].x));
+    EXPECT_EQ(physics::stateHash(again), physics::stateHash(world));
+    EXPECT_TRUE(back.generators.empty());
+    EXPECT_EQ(back.spheres.size(), 1000u);
+    EXPECT_TRUE(back.snapshot);
+    EXPECT_EQ(back.title, scene.title);
+    for (const scenes::Parameter& p : scenes::parameterTable()) {
+        if (p.applies == scenes::Applies::Live) {
+            EXPECT_EQ(p.get(back), p.get(scene)) << p.name;
+        }
+    }
+}
+
+TEST(SaveLoad, RoundTripAfterStepping) {
+    for (const char* name : {"07_pile", "08_inclined_plane", "06_gas"}) {
+        SCOPED_TRACE(name);
+        Scene scene = scenes::loadScene(scenes::presetPath(name));
+        scene.params.order = physics::PairOrder::Shuffled;  // uses the seed and the step count
+        physics::World world = scenes::buildWorld(scene);
+        for (int k = 0; k < 300; ++k) physics::step(world, scene.params);
+        const std::string path =
+            (std::filesystem::temp_directory_path() / (std::string("spheres_") + name + ".json"))
+                .string();
+        scenes::saveScene(path, scene, world);
+        Scene back = scenes::loadScene(path);
+        std::remove(path.c_str());
+        physics::World again = scenes::buildWorld(back);
+        EXPECT_EQ(physics::stateHash(again), physics::stateHash(world));
+        EXPECT_EQ(again.time, world.time);
+        EXPECT_EQ(again.stepCount, world.stepCount);
+        EXPECT_EQ(again.planes.size(), world.planes.size());
+        // Both continue identically: the saved state is the whole state.
+        for (int k = 0; k < 100; ++k) {
+            physics::step(world, scene.params);
+            physics::step(again, back.params);
+        }
+        EXPECT_EQ(physics::stateHash(again), physics::stateHash(world));
+    }
+}
+
+TEST(SaveLoad, RefusesToSaveANonFiniteState) {
+    Scene scene;
+    physics::World world;
+    world.addSphere({0, 0, std::nan("")}, {0, 0, 0}, 0.1, 1.0);
+    EXPECT_THROW(scenes::sceneText(scene, world), scenes::SceneError);
+}
+
+}  // namespace
