@@ -1,0 +1,111 @@
+#include "platform/window.h"
+
+#include <glad/gl.h>
+// After glad, so that GLFW does not pull in the system GL header.
+#include <GLFW/glfw3.h>
+
+namespace platform {
+namespace {
+
+// GLFW reports errors through a C callback; keep the last message so that
+// create() can hand it back instead of crashing or printing to nowhere.
+thread_local std::string lastGlfwError;
+
+void onGlfwError(int code, const char* description) {
+    lastGlfwError = "GLFW error " + std::to_string(code) + ": " + (description ? description : "");
+}
+
+std::string takeGlfwError(const char* fallback) {
+    std::string message = lastGlfwError.empty() ? fallback : lastGlfwError;
+    lastGlfwError.clear();
+    return message;
+}
+
+void setError(std::string* error, const std::string& message) {
+    if (error) *error = message;
+}
+
+void setContextHints(const WindowOptions& options) {
+    glfwDefaultWindowHints();
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);  // required on macOS
+    glfwWindowHint(GLFW_RESIZABLE, GLFW_TRUE);
+    glfwWindowHint(GLFW_SAMPLES, options.samples);
+    // HiDPI: scale the window to the monitor on Windows/X11, full-resolution framebuffer on macOS.
+    glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);
+    glfwWindowHint(GLFW_COCOA_RETINA_FRAMEBUFFER, GLFW_TRUE);
+}
+
+}  // namespace
+
+std::unique_ptr<Window> Window::create(const WindowOptions& options, std::string* error) {
+    glfwSetErrorCallback(onGlfwError);
+    if (!glfwInit()) {
+        setError(error, takeGlfwError("GLFW could not be initialised (is there a display?)"));
+        return nullptr;
+    }
+    setContextHints(options);
+    GLFWwindow* window =
+        glfwCreateWindow(options.width, options.height, options.title.c_str(), nullptr, nullptr);
+    if (!window) {
+        setError(error, takeGlfwError("could not create an OpenGL 3.3 core window"));
+        glfwTerminate();
+        return nullptr;
+    }
+    glfwMakeContextCurrent(window);
+    if (!gladLoadGL(glfwGetProcAddress)) {
+        setError(error, "glad could not load OpenGL 3.3 core through GLFW");
+        glfwDestroyWindow(window);
+        glfwTerminate();
+        return nullptr;
+    }
+    glfwSwapInterval(options.vsync ? 1 : 0);
+    return std::unique_ptr<Window>(new Window(window));
+}
+
+Window::~Window() {
+    glfwDestroyWindow(window_);
+    glfwTerminate();
+}
+
+bool Window::shouldClose() const { return glfwWindowShouldClose(window_) != 0; }
+void Window::requestClose() { glfwSetWindowShouldClose(window_, GLFW_TRUE); }
+void Window::pollEvents() { glfwPollEvents(); }
+void Window::swapBuffers() { glfwSwapBuffers(window_); }
+void Window::setTitle(const std::string& title) { glfwSetWindowTitle(window_, title.c_str()); }
+
+void Window::setVsync(bool on) {
+    glfwMakeContextCurrent(window_);
+    glfwSwapInterval(on ? 1 : 0);
+}
+
+glm::ivec2 Window::windowSize() const {
+    glm::ivec2 size{0};
+    glfwGetWindowSize(window_, &size.x, &size.y);
+    return size;
+}
+
+glm::ivec2 Window::framebufferSize() const {
+    glm::ivec2 size{0};
+    glfwGetFramebufferSize(window_, &size.x, &size.y);
+    return size;
+}
+
+glm::vec2 Window::contentScale() const {
+    glm::vec2 scale{1.0f};
+    glfwGetWindowContentScale(window_, &scale.x, &scale.y);
+    return scale;
+}
+
+glm::vec2 Window::framebufferScale() const {
+    const glm::ivec2 window = windowSize();
+    const glm::ivec2 framebuffer = framebufferSize();
+    if (window.x <= 0 || window.y <= 0) return glm::vec2{1.0f};
+    return glm::vec2(framebuffer) / glm::vec2(window);
+}
+
+double Window::time() const { return glfwGetTime(); }
+
+}  // namespace platform

@@ -1,0 +1,50 @@
+#pragma once
+// The interactive window: GLFW with an OpenGL 3.3 core context, glad loaded.
+// Input stays with the app, which reads it through handle().
+#include <glm/vec2.hpp>
+#include <memory>
+#include <string>
+
+struct GLFWwindow;
+
+namespace platform {
+
+struct WindowOptions {
+    int width = 1280;  // screen coordinates (scaled by the monitor's content scale)
+    int height = 720;  // screen coordinates
+    std::string title = "Rigid Spheres";
+    bool vsync = true;
+    int samples = 4;  // MSAA samples of the default framebuffer, 0 for none
+};
+
+// One window per process: it initialises GLFW and terminates it when destroyed.
+class Window {
+  public:
+    // Returns nullptr and fills *error (when given) if there is no display or no GL 3.3.
+    static std::unique_ptr<Window> create(const WindowOptions& options, std::string* error);
+    ~Window();
+    Window(const Window&) = delete;
+    Window& operator=(const Window&) = delete;
+
+    bool shouldClose() const;
+    void requestClose();
+    void pollEvents();
+    void swapBuffers();
+    void setTitle(const std::string& title);
+    void setVsync(bool on);
+
+    glm::ivec2 windowSize() const;       // screen coordinates: what mouse positions use
+    glm::ivec2 framebufferSize() const;  // pixels: what glViewport uses
+    glm::vec2 contentScale() const;  // 1 on a normal screen, 2 on a HiDPI one: scale fonts by it
+    // framebufferSize / windowSize: for ImGui's DisplayFramebufferScale (1 when minimised).
+    glm::vec2 framebufferScale() const;
+    double time() const;  // s since GLFW was initialised
+
+    GLFWwindow* handle() const { return window_; }
+
+  private:
+    explicit Window(GLFWwindow* window) : window_(window) {}
+    GLFWwindow* window_ = nullptr;
+};
+
+}  // namespace platform

@@ -1,0 +1,171 @@
+#include "render/renderer.h"
+
+#include <cmath>
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+
+#include "render/background_pass.h"
+#include "render/line_pass.h"
+#include "render/plane_clipping.h"
+#include "render/plane_pass.h"
+#include "render/sphere_pass.h"
+
+namespace render {
+namespace {
+
+// Key light from the upper left, slightly behind the viewer (view space).
+const glm::vec3 kLightView = glm::normalize(glm::vec3(-0.45f, 0.65f, 0.62f));
+// NDC depth by which lines are pulled towards the eye, so lines on faces win.
+constexpr float kLineDepthBias = 2e-5f;
+
+FrameContext makeFrameContext(const Camera& camera, int x, int y, int width, int height,
+                              const RenderStyle& style) {
+    FrameContext frame;
+    frame.viewport = glm::vec4(x, y, width, height);
+    frame.nearPlane = camera.nearPlane();
+    frame.view = camera.view();
+    frame.projection = camera.projection(static_cast<float>(width) / static_cast<float>(height));
+    frame.viewProjection = frame.projection * frame.view;
+    frame.cameraPosition = camera.position();
+    frame.viewportSize = glm::vec2(static_cast<float>(width), static_cast<float>(height));
+    frame.pixelSize = 2.0f * std::tan(0.5f * camera.fovY) / static_cast<float>(height);
+    frame.lightView = kLightView;
+    // The view matrix is a rotation plus a translation: its transpose inverts the rotation.
+    const glm::mat3 rotation(frame.view);
+    frame.lightWorld = glm::transpose(rotation) * kLightView;
+    frame.upView = rotation * glm::vec3(0.0f, 0.0f, 1.0f);
+    frame.style = &style;
+    return frame;
+}
+
+void appendOutline(const Polygon& polygon, const RenderStyle& style,
+                   std::vector<OverlayLine>& lines) {
+    const glm::u8vec4 color(glm::clamp(style.edgeColor, 0.0f, 1.0f) * 255.0f + 0.5f);
+    for (std::size_t i = 0; i < polygon.size(); ++i) {
+        lines.push_back({polygon[i], polygon[(i + 1) % polygon.size()], color, style.edgeWidth});
+    }
+}
+
+// The planes sorted by how they are drawn this frame.
+struct PlaneDrawList {
+    std::vector<PlaneFace> farFaces;    // the floor and the box walls the camera looks at
+    std::vector<PlaneFace> extraFaces;  // other planes (an incline): translucent, after spheres
+    std::vector<OverlayLine> edges;     // every box edge (near walls included), extra outlines
+};
+
+PlaneDrawList collectPlanes(const FrameSnapshot& snapshot, const RenderStyle& style,
+                            const glm::vec3& cameraPosition) {
+    PlaneDrawList list;
+    const std::vector<Polygon> polygons = planePolygons(snapshot);
+    const int floor = style.showGrid ? floorPlaneIndex(snapshot) : -1;
+    const bool hasBox = snapshot.boxPlaneCount > 0;
+    for (std::size_t i = 0; i < polygons.size(); ++i) {
+        const bool inBox = static_cast<int>(i) < snapshot.boxPlaneCount;
+        const bool isFloor = static_cast<int>(i) == floor;
+        if (polygons[i].empty() || (inBox && !style.showBox)) continue;
+        const Plane& plane = snapshot.planes[i];
+        const glm::vec3 normal = glm::normalize(plane.normal);
+        // Without a box, a ground plane's outline is only where the cube cut it.
+        if (inBox || hasBox) appendOutline(polygons[i], style, list.edges);
+        if (!inBox && !isFloor) {
+            list.extraFaces.push_back({polygons[i], normal, style.extraPlaneColor, false});
+        } else if (!isNearPlane(plane, cameraPosition)) {
+            list.farFaces.push_back(
+                {polygons[i], normal, isFloor ? style.floorColor : style.wallColor, isFloor});
+        }
+    }
+    return list;
+}
+
+// Confines drawing to the viewport and clears its depth only, so that several
+// views can share one framebuffer.
+void beginViewport(int x, int y, int width, int height) {
+    glViewport(x, y, width, height);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(x, y, width, height);
+    glDepthMask(GL_TRUE);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    glDepthFunc(GL_LESS);
+    glDisable(GL_CULL_FACE);
+}
+
+}  // namespace
+
+struct Renderer::Passes {
+    BackgroundPass background;
+    PlanePass planes;
+    SpherePass spheres;
+    LinePass lines;
+};
+
+Renderer::Renderer() = default;
+Renderer::~Renderer() { shutdown(); }
+
+std::string Renderer::init() {
+    shutdown();
+    passes_ = std::make_unique<Passes>();
+    for (std::string error : {passes_->background.init(), passes_->planes.init(),
+                              passes_->spheres.init(), passes_->lines.init()}) {
+        if (!error.empty()) {
+            shutdown();
+            return error;
+        }
+    }
+    return {};
+}
+
+void Renderer::shutdown() {
+    if (!passes_) return;
+    passes_->background.destroy();
+    passes_->planes.destroy();
+    passes_->spheres.destroy();
+    passes_->lines.destroy();
+    passes_.reset();
+}
+
+int floorPlaneIndex(const FrameSnapshot& snapshot) {
+    const int count = snapshot.boxPlaneCount > 0 ? snapshot.boxPlaneCount
+                                                 : static_cast<int>(snapshot.planes.size());
+    int best = -1;
+    float bestUp = 0.5f;  // a floor must face upwards at least 60 degrees from vertical
+    for (int i = 0; i < count && i < static_cast<int>(snapshot.planes.size()); ++i) {
+        const float up = glm::normalize(snapshot.planes[static_cast<std::size_t>(i)].normal).z;
+        if (up > bestUp) {
+            bestUp = up;
+            best = i;
+        }
+    }
+    return best;
+}
+
+bool isNearPlane(const Plane& plane, const glm::vec3& cameraPosition) {
+    return glm::dot(cameraPosition - plane.point, plane.normal) < 0.0f;
+}
+
+void Renderer::draw(const FrameSnapshot& snapshot, const Camera& camera, int x, int y, int width,
+                    int height) {
+    if (!passes_ || width <= 0 || height <= 0) return;
+    const FrameContext frame = makeFrameContext(camera, x, y, width, height, style);
+    beginViewport(x, y, width, height);
+    passes_->background.draw(frame);
+
+    PlaneDrawList planes = collectPlanes(snapshot, style, frame.cameraPosition);
+    GLint sampleBuffers = 0;
+    glGetIntegerv(GL_SAMPLE_BUFFERS, &sampleBuffers);
+    passes_->planes.draw(planes.farFaces, frame, true);
+    passes_->spheres.draw(snapshot, frame, style.antialiasEdges && sampleBuffers > 0);
+    passes_->planes.draw(planes.extraFaces, frame, false);
+    passes_->lines.draw(planes.edges, frame, true, kLineDepthBias);
+
+    std::vector<OverlayLine> overlay(snapshot.lines.begin(), snapshot.lines.end());
+    for (const OverlayPoint& point : snapshot.points) overlay.push_back(pointAsLine(point));
+    passes_->lines.draw(overlay, frame, !style.overlayOnTop, kLineDepthBias);
+
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_BLEND);
+    glDisable(GL_SCISSOR_TEST);
+    glUseProgram(0);
+}
+
+}  // namespace render

@@ -1,0 +1,183 @@
+#include "render/sphere_pass.h"
+
+#include <algorithm>
+#include <cstddef>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "render/shader_sources.h"
+
+namespace render {
+namespace {
+
+constexpr float kCorners[] = {-1.0f, -1.0f, 1.0f, -1.0f, -1.0f, 1.0f, 1.0f, 1.0f};
+// Largest point sprite used, px: below every implementation's limit, and larger
+// spheres are few enough for squares.
+constexpr float kMaxPointPixels = 64.0f;
+
+static_assert(sizeof(SphereInstance) == 20, "SphereInstance must stay tightly packed");
+
+// The sphere attributes at locations 1..3, from a SphereInstance buffer.
+void sphereAttributes(GLuint buffer, GLuint divisor) {
+    glBindBuffer(GL_ARRAY_BUFFER, buffer);
+    const struct {
+        GLuint location;
+        GLint size;
+        GLenum type;
+        GLboolean normalized;
+        std::size_t offset;
+    } attributes[] = {{1, 3, GL_FLOAT, GL_FALSE, offsetof(SphereInstance, center)},
+                      {2, 1, GL_FLOAT, GL_FALSE, offsetof(SphereInstance, radius)},
+                      {3, 4, GL_UNSIGNED_BYTE, GL_TRUE, offsetof(SphereInstance, color)}};
+    for (const auto& a : attributes) {
+        glEnableVertexAttribArray(a.location);
+        glVertexAttribPointer(a.location, a.size, a.type, a.normalized, sizeof(SphereInstance),
+                              reinterpret_cast<const void*>(a.offset));
+        glVertexAttribDivisor(a.location, divisor);
+    }
+}
+
+void upload(GLuint buffer, const std::vector<SphereInstance>& instances) {
+    glBindBuffer(GL_ARRAY_BUFFER, buffer);
+    glBufferData(GL_ARRAY_BUFFER,
+                 static_cast<GLsizeiptr>(instances.size() * sizeof(SphereInstance)),
+                 instances.data(), GL_STREAM_DRAW);
+}
+
+// A point sprite is dropped whole when its centre leaves the viewport, and is
+// limited in size: only spheres whose outline (bounded generously) lies inside
+// the viewport, beyond the near plane, and small enough, may be one.
+bool fitsPointSprite(const glm::vec3& viewCenter, float radius, const FrameContext& frame,
+                     float marginPixels) {
+    const float front = -viewCenter.z - radius;  // m, depth of the nearest point
+    if (front <= frame.nearPlane * 1.01f) return false;
+    const glm::vec2 tangent = glm::vec2(viewCenter) / -viewCenter.z;
+    // Off-axis outlines stretch by up to 1 / cos^2 of the angle from the axis.
+    const float stretch =
+        1.0f + glm::dot(glm::vec2(viewCenter), glm::vec2(viewCenter)) / (front * front);
+    const float reach = radius / front / frame.pixelSize * stretch + marginPixels + 1.0f;
+    if (2.0f * reach > kMaxPointPixels) return false;
+    const glm::vec2 pixel = tangent / frame.pixelSize + 0.5f * frame.viewportSize;
+    return pixel.x >= reach && pixel.y >= reach && pixel.x <= frame.viewportSize.x - reach &&
+           pixel.y <= frame.viewportSize.y - reach;
+}
+
+}  // namespace
+
+std::string SpherePass::buildProgram(Program& p, std::string_view label,
+                                     std::string_view vertexSource) {
+    std::string error = p.program.build(label, vertexSource, shaders::kSphereFrag);
+    if (!error.empty()) return error;
+    p.view = p.program.uniform("uView");
+    p.projection = p.program.uniform("uProjection");
+    p.pixelSize = p.program.uniform("uPixelSize");
+    p.viewportSize = p.program.uniform("uViewportSize");
+    p.marginPixels = p.program.uniform("uMarginPixels");
+    p.viewport = p.program.uniform("uViewport");
+    p.lightDirection = p.program.uniform("uLightDirection");
+    p.upDirection = p.program.uniform("uUpDirection");
+    p.coverageAlpha = p.program.uniform("uCoverageAlpha");
+    return {};
+}
+
+std::string SpherePass::init() {
+    std::string error = buildProgram(pointProgram_, "sphere point", shaders::kSpherePointVert);
+    if (error.empty()) error = buildProgram(quadProgram_, "sphere square", shaders::kSphereVert);
+    if (!error.empty()) return error;
+
+    GLuint arrays[2];
+    GLuint buffers[3];
+    glGenVertexArrays(2, arrays);
+    glGenBuffers(3, buffers);
+    pointArray_ = arrays[0];
+    quadArray_ = arrays[1];
+    cornerBuffer_ = buffers[0];
+    pointBuffer_ = buffers[1];
+    quadBuffer_ = buffers[2];
+
+    glBindVertexArray(pointArray_);
+    sphereAttributes(pointBuffer_, 0);
+    glBindVertexArray(quadArray_);
+    glBindBuffer(GL_ARRAY_BUFFER, cornerBuffer_);
+    glBufferData(GL_ARRAY_BUFFER, sizeof kCorners, kCorners, GL_STATIC_DRAW);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, nullptr);
+    sphereAttributes(quadBuffer_, 1);
+    glBindVertexArray(0);
+    return {};
+}
+
+void SpherePass::destroy() {
+    pointProgram_.program.destroy();
+    quadProgram_.program.destroy();
+    const GLuint arrays[] = {pointArray_, quadArray_};
+    const GLuint buffers[] = {cornerBuffer_, pointBuffer_, quadBuffer_};
+    if (pointArray_ != 0) {
+        glDeleteBuffers(3, buffers);
+        glDeleteVertexArrays(2, arrays);
+    }
+    pointArray_ = quadArray_ = cornerBuffer_ = pointBuffer_ = quadBuffer_ = 0;
+}
+
+void SpherePass::partition(const FrameSnapshot& snapshot, const FrameContext& frame,
+                           float marginPixels) {
+    points_.clear();
+    quads_.clear();
+    const std::size_t count =
+        std::min({snapshot.centers.size(), snapshot.radii.size(), snapshot.colors.size()});
+    for (std::size_t i = 0; i < count; ++i) {
+        const SphereInstance sphere{snapshot.centers[i], snapshot.radii[i], snapshot.colors[i]};
+        const glm::vec3 viewCenter(frame.view * glm::vec4(sphere.center, 1.0f));
+        if (viewCenter.z + sphere.radius >= 0.0f) continue;  // wholly behind the eye
+        (fitsPointSprite(viewCenter, sphere.radius, frame, marginPixels) ? points_ : quads_)
+            .push_back(sphere);
+    }
+}
+
+void SpherePass::setUniforms(const Program& p, const FrameContext& frame, float marginPixels,
+                             bool coverageAlpha) {
+    glUseProgram(p.program.id());
+    glUniformMatrix4fv(p.view, 1, GL_FALSE, glm::value_ptr(frame.view));
+    glUniformMatrix4fv(p.projection, 1, GL_FALSE, glm::value_ptr(frame.projection));
+    glUniform1f(p.pixelSize, frame.pixelSize);
+    glUniform2fv(p.viewportSize, 1, glm::value_ptr(frame.viewportSize));
+    glUniform1f(p.marginPixels, marginPixels);
+    glUniform4fv(p.viewport, 1, glm::value_ptr(frame.viewport));
+    glUniform3fv(p.lightDirection, 1, glm::value_ptr(frame.lightView));
+    glUniform3fv(p.upDirection, 1, glm::value_ptr(frame.upView));
+    glUniform1i(p.coverageAlpha, coverageAlpha ? 1 : 0);
+}
+
+void SpherePass::draw(const FrameSnapshot& snapshot, const FrameContext& frame,
+                      bool coverageAlpha) {
+    // Coverage needs fragments up to a pixel and a half outside the outline, px.
+    const float marginPixels = coverageAlpha ? 1.5f : 0.5f;
+    partition(snapshot, frame, marginPixels);
+    if (points_.empty() && quads_.empty()) return;
+    glEnable(GL_DEPTH_TEST);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+    glEnable(GL_PROGRAM_POINT_SIZE);
+    if (coverageAlpha) {
+        // Alpha becomes the sample mask; the target keeps the background's alpha of 1.
+        glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
+    }
+    if (!points_.empty()) {
+        upload(pointBuffer_, points_);
+        setUniforms(pointProgram_, frame, marginPixels, coverageAlpha);
+        glBindVertexArray(pointArray_);
+        glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(points_.size()));
+    }
+    if (!quads_.empty()) {
+        upload(quadBuffer_, quads_);
+        setUniforms(quadProgram_, frame, marginPixels, coverageAlpha);
+        glBindVertexArray(quadArray_);
+        glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(quads_.size()));
+    }
+    glBindVertexArray(0);
+    glDisable(GL_PROGRAM_POINT_SIZE);
+    glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+}
+
+}  // namespace render

@@ -1,0 +1,53 @@
+#pragma once
+// Internal to spheres_render: every sphere as a ray-cast impostor. Small spheres
+// well inside the viewport are point sprites (one vertex each); the rest are
+// instanced squares. Both use the same fragment shader.
+#include <glm/gtc/type_precision.hpp>
+#include <glm/vec3.hpp>
+#include <string>
+#include <vector>
+
+#include "render/frame_context.h"
+#include "render/frame_snapshot.h"
+#include "render/gl_program.h"
+
+namespace render {
+
+// One sphere as the GPU reads it (20 bytes, interleaved).
+struct SphereInstance {
+    glm::vec3 center;  // m, world
+    float radius;      // m
+    glm::u8vec4 color;
+};
+
+class SpherePass {
+  public:
+    std::string init();
+    void destroy();
+    // coverageAlpha: the target is multisampled and edges use alpha-to-coverage.
+    void draw(const FrameSnapshot& snapshot, const FrameContext& frame, bool coverageAlpha);
+
+  private:
+    struct Program {
+        GlProgram program;
+        GLint view = -1, projection = -1, pixelSize = -1, viewportSize = -1, marginPixels = -1,
+              viewport = -1, lightDirection = -1, upDirection = -1, coverageAlpha = -1;
+    };
+    std::string buildProgram(Program& program, std::string_view label,
+                             std::string_view vertexSource);
+    void partition(const FrameSnapshot& snapshot, const FrameContext& frame, float marginPixels);
+    void setUniforms(const Program& program, const FrameContext& frame, float marginPixels,
+                     bool coverageAlpha);
+
+    Program pointProgram_;
+    Program quadProgram_;
+    GLuint pointArray_ = 0;  // vertex array: one point per sphere
+    GLuint quadArray_ = 0;   // vertex array: four corners, one instance per sphere
+    GLuint cornerBuffer_ = 0;
+    GLuint pointBuffer_ = 0;              // SphereInstance per point sprite
+    GLuint quadBuffer_ = 0;               // SphereInstance per square
+    std::vector<SphereInstance> points_;  // reused from frame to frame
+    std::vector<SphereInstance> quads_;
+};
+
+}  // namespace render
