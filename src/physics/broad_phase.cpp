@@ -9,7 +9,7 @@
 namespace physics {
 namespace {
 
-bool withinReach(const World& world, std::uint32_t i, std::uint32_t j, double margin) {
+bool withinReachOf(const World& world, std::uint32_t i, std::uint32_t j, double margin) {
     const double reach = world.radius[i] + world.radius[j] + margin;
     const glm::dvec3 delta = world.position[i] - world.position[j];
     return glm::dot(delta, delta) <= reach * reach;
@@ -70,30 +70,76 @@ void sortByCell(const World& world, const GridShape& grid, Workspace& ws) {
     // Filling advanced each start to the next cell's: shift back.
     for (std::size_t c = cellCount; c > 0; --c) ws.cellStart[c] = ws.cellStart[c - 1];
     ws.cellStart[0] = 0;
+    ws.cellOrdered.resize(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        const std::uint32_t i = ws.sphereByCell[k];
+        ws.cellOrdered[k] = glm::dvec4(world.position[i], world.radius[i]);
+    }
 }
 
-// Pairs (i, j > i) from the 27 cells around sphere i, appended in ascending j.
-std::uint64_t pairsAround(const World& world, const GridShape& grid, const Workspace& ws,
-                          std::uint32_t i, double margin, std::vector<SpherePair>& pairs) {
-    const glm::ivec3 c = grid.cellOf(world.position[i]);
-    const glm::ivec3 lo = glm::max(c - 1, glm::ivec3(0));
-    const glm::ivec3 hi = glm::min(c + 1, grid.dims - 1);
-    const std::size_t first = pairs.size();
+// The 13 neighbour cells "after" a cell (z, then y, then x): with the cell itself,
+// every pair of neighbouring cells is visited exactly once.
+constexpr int kForward[13][3] = {{1, 0, 0},  {-1, 1, 0}, {0, 1, 0},  {1, 1, 0},  {-1, -1, 1},
+                                 {0, -1, 1}, {1, -1, 1}, {-1, 0, 1}, {0, 0, 1},  {1, 0, 1},
+                                 {-1, 1, 1}, {0, 1, 1},  {1, 1, 1}};
+
+bool withinReach(const glm::dvec4& a, const glm::dvec4& b, double margin) {
+    const double reach = a.w + b.w + margin;
+    const glm::dvec3 delta = glm::dvec3(a) - glm::dvec3(b);
+    return glm::dot(delta, delta) <= reach * reach;
+}
+
+// Tests the spheres at cell-ordered positions [a0, a1) against [b0, b1).
+std::uint64_t testRange(Workspace& ws, std::uint32_t a0, std::uint32_t a1, std::uint32_t b0,
+                        std::uint32_t b1, bool sameCell, double margin) {
     std::uint64_t tests = 0;
-    for (int z = lo.z; z <= hi.z; ++z) {
-        for (int y = lo.y; y <= hi.y; ++y) {
-            const std::uint32_t row = grid.linear({0, y, z});
-            for (std::uint32_t k = ws.cellStart[row + lo.x]; k < ws.cellStart[row + hi.x + 1]; ++k) {
-                const std::uint32_t j = ws.sphereByCell[k];
-                if (j <= i) continue;
-                ++tests;
-                if (withinReach(world, i, j, margin)) pairs.push_back({i, j});
+    for (std::uint32_t a = a0; a < a1; ++a) {
+        for (std::uint32_t b = sameCell ? a + 1 : b0; b < b1; ++b) {
+            ++tests;
+            if (!withinReach(ws.cellOrdered[a], ws.cellOrdered[b], margin)) continue;
+            const std::uint32_t i = ws.sphereByCell[a], j = ws.sphereByCell[b];
+            ws.unorderedPairs.push_back({std::min(i, j), std::max(i, j)});
+        }
+    }
+    return tests;
+}
+
+std::uint64_t scanCells(const GridShape& grid, double margin, Workspace& ws) {
+    std::uint64_t tests = 0;
+    for (int z = 0; z < grid.dims.z; ++z) {
+        for (int y = 0; y < grid.dims.y; ++y) {
+            for (int x = 0; x < grid.dims.x; ++x) {
+                const std::uint32_t c = grid.linear({x, y, z});
+                const std::uint32_t a0 = ws.cellStart[c], a1 = ws.cellStart[c + 1];
+                if (a0 == a1) continue;
+                tests += testRange(ws, a0, a1, a0, a1, true, margin);
+                for (const auto& d : kForward) {
+                    const glm::ivec3 n(x + d[0], y + d[1], z + d[2]);
+                    if (glm::any(glm::lessThan(n, glm::ivec3(0))) ||
+                        glm::any(glm::greaterThanEqual(n, grid.dims))) continue;
+                    const std::uint32_t cn = grid.linear(n);
+                    tests += testRange(ws, a0, a1, ws.cellStart[cn], ws.cellStart[cn + 1], false, margin);
+                }
             }
         }
     }
-    std::sort(pairs.begin() + static_cast<std::ptrdiff_t>(first), pairs.end(),
-              [](const SpherePair& a, const SpherePair& b) { return a.j < b.j; });
     return tests;
+}
+
+// Puts the pairs in the lecture's loop order (i, then j) with a counting sort by i
+// and a short sort of each i's few partners.
+void orderByIndex(std::size_t sphereCount, Workspace& ws) {
+    ws.pairStart.assign(sphereCount + 1, 0);
+    for (const SpherePair& p : ws.unorderedPairs) ++ws.pairStart[p.i + 1];
+    for (std::size_t i = 0; i < sphereCount; ++i) ws.pairStart[i + 1] += ws.pairStart[i];
+    ws.pairs.resize(ws.unorderedPairs.size());
+    for (const SpherePair& p : ws.unorderedPairs) ws.pairs[ws.pairStart[p.i]++] = p;
+    auto begin = ws.pairs.begin();
+    for (std::size_t i = 0; i < sphereCount; ++i) {  // pairStart[i] now ends sphere i's run
+        const auto end = ws.pairs.begin() + ws.pairStart[i];
+        std::sort(begin, end, [](const SpherePair& a, const SpherePair& b) { return a.j < b.j; });
+        begin = end;
+    }
 }
 
 }  // namespace
@@ -111,7 +157,7 @@ std::uint64_t findPairsAllPairs(const World& world, double margin, std::vector<S
     for (std::uint32_t i = 0; i < n; ++i) {
         for (std::uint32_t j = i + 1; j < n; ++j) {
             ++tests;
-            if (withinReach(world, i, j, margin)) pairs.push_back({i, j});
+            if (withinReachOf(world, i, j, margin)) pairs.push_back({i, j});
         }
     }
     return tests;
@@ -122,9 +168,9 @@ std::uint64_t findPairsGrid(const World& world, double margin, Workspace& worksp
     if (world.size() < 2) return 0;
     const GridShape grid = chooseGrid(world, margin);
     sortByCell(world, grid, workspace);
-    std::uint64_t tests = 0;
-    const auto n = static_cast<std::uint32_t>(world.size());
-    for (std::uint32_t i = 0; i < n; ++i) tests += pairsAround(world, grid, workspace, i, margin, workspace.pairs);
+    workspace.unorderedPairs.clear();
+    const std::uint64_t tests = scanCells(grid, margin, workspace);
+    orderByIndex(world.size(), workspace);
     return tests;
 }
 

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 namespace physics {
 
@@ -31,6 +32,9 @@ struct Workspace {
     std::vector<std::uint32_t> cellOfSphere;
     std::vector<std::uint32_t> cellStart;   // counting-sort offsets, one per cell + 1
     std::vector<std::uint32_t> sphereByCell;
+    std::vector<glm::dvec4> cellOrdered;         // centre (m) and radius (m), in sphereByCell order
+    std::vector<SpherePair> unorderedPairs;      // as the grid finds them
+    std::vector<std::uint32_t> pairStart;        // counting sort of pairs by i
 };
 
 struct World {

@@ -1,0 +1,27 @@
+#pragma once
+// Writes a row of diagnostics per sample, as CSV or as JSON lines (by file extension).
+#include <fstream>
+#include <string>
+
+#include "physics/diagnostics.h"
+
+namespace app {
+
+class DiagnosticsLog {
+public:
+    // Throws UsageError when the extension is neither .csv nor .jsonl, or the file
+    // cannot be opened for writing.
+    explicit DiagnosticsLog(const std::string& path);
+    void write(std::uint64_t step, double time, const physics::Diagnostics& d);
+
+private:
+    std::ofstream file_;
+    bool csv_ = true;
+};
+
+// One line for a terminal: energies (J), momentum (kg m/s), contacts, penetration, hash.
+std::string summarize(const physics::Diagnostics& d);
+
+std::string hexHash(std::uint64_t hash);
+
+}  // namespace app

@@ -1,0 +1,18 @@
+#pragma once
+// Turns the simulation into what the renderer and the panel read: the plain
+// snapshot of spheres and planes, and the readouts. Shared by the window and the
+// capture mode so both show the same thing.
+#include "app/simulation.h"
+#include "render/frame_snapshot.h"
+#include "ui/control_panel.h"
+
+namespace app {
+
+void buildSnapshot(const Simulation& simulation, render::ColorBy colorBy, render::FrameSnapshot& snapshot);
+
+ui::Readouts makeReadouts(const Simulation& simulation, double fps, double renderMs);
+
+// Axis-aligned bounds of the box (or of the spheres when there is none), m, for the camera.
+void sceneBounds(const Simulation& simulation, glm::vec3& lo, glm::vec3& hi);
+
+}  // namespace app

@@ -1,0 +1,32 @@
+#pragma once
+// The last few hundred samples of the readouts, for the UI's scrolling plots and
+// for export as CSV.
+#include <array>
+#include <string>
+#include <vector>
+
+#include "physics/diagnostics.h"
+
+namespace app {
+
+enum class Series { Kinetic, Potential, Modified, Momentum, Contacts, Penetration, Count };
+
+class History {
+public:
+    static constexpr int kCapacity = 600;  // samples kept
+
+    void clear();
+    void add(double time, const physics::Diagnostics& d);
+    // Oldest first, for ImGui::PlotLines.
+    const std::vector<float>& values(Series series) const { return ordered_[static_cast<int>(series)]; }
+    std::size_t size() const { return times_.size(); }
+    static const char* name(Series series);  // with its unit
+    // Writes time and every series as CSV; false when the file cannot be written.
+    bool writeCsv(const std::string& path) const;
+
+private:
+    std::vector<double> times_;
+    std::array<std::vector<float>, static_cast<int>(Series::Count)> ordered_;
+};
+
+}  // namespace app

@@ -1,0 +1,25 @@
+#pragma once
+// Where the app's scene comes from: a file or a shipped preset, plus --set overrides.
+#include <string>
+#include <vector>
+
+#include "scenes/scene.h"
+
+namespace app {
+
+// Thrown for bad command-line input; main prints what() and exits with code 2.
+struct UsageError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+// `nameOrPath` is a file, or a preset name with or without its number and .json
+// ("pile", "07_pile"). Then every "name=value" of `settings` is applied, in order.
+// Throws scenes::SceneError (file:line:col) or UsageError.
+scenes::Scene loadSceneWithSettings(const std::string& nameOrPath,
+                                    const std::vector<std::string>& settings);
+
+// The file behind a preset name or path; empty when there is none. Throws
+// UsageError when a fragment matches several presets.
+std::string resolveScenePath(const std::string& nameOrPath);
+
+}  // namespace app

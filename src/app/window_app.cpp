@@ -1,0 +1,280 @@
+#include "app/window_app.h"
+
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <memory>
+
+#include <glad/gl.h>
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <backends/imgui_impl_glfw.h>
+
+#include "app/frame_builder.h"
+#include "app/scene_source.h"
+#include "app/simulation.h"
+#include "platform/window.h"
+#include "render/camera.h"
+#include "render/image_io.h"
+#include "render/offscreen_target.h"
+#include "render/renderer.h"
+#include "scenes/presets.h"
+#include "scenes/scene_json.h"
+#include "ui/control_panel.h"
+#include "ui/imgui_gl_renderer.h"
+#include "ui/ui_font.h"
+
+namespace app {
+namespace {
+
+constexpr float kBaseFontPx = 17.0f;  // at UI scale 1 on a normal screen
+
+class WindowApp {
+public:
+    WindowApp(std::unique_ptr<platform::Window> window, scenes::Scene scene, const WindowAppOptions& options);
+    ~WindowApp();
+    int run();
+
+private:
+    static void onKey(GLFWwindow* w, int key, int scancode, int action, int mods);
+    static void onScroll(GLFWwindow* w, double dx, double dy);
+    void handleKey(int key);
+    void handleMouse();
+    void frame(double dt);
+    void drawScene();
+    void apply(const ui::PanelActions& actions);
+    void loadPreset(int index);
+    void loadFile(const std::string& path);
+    void rebuildFont();
+    void resetCamera();
+    bool saveScreenshot(const std::string& path);
+
+    std::unique_ptr<platform::Window> window_;
+    Simulation simulation_;
+    WindowAppOptions options_;
+    render::Renderer renderer_;
+    render::Camera camera_;
+    render::FrameSnapshot snapshot_;
+    ui::ImGuiGlRenderer imguiRenderer_;
+    ui::PanelState panel_;
+    std::vector<std::string> presets_;
+    double fps_ = 0.0, renderMs_ = 0.0;
+    bool screenshotRequested_ = false;
+};
+
+WindowApp::WindowApp(std::unique_ptr<platform::Window> window, scenes::Scene scene, const WindowAppOptions& options)
+    : window_(std::move(window)), simulation_(std::move(scene)), options_(options), presets_(scenes::listPresets()) {
+    simulation_.paused = options.paused;
+    panel_.scenePath = resolveScenePath(options.scene);
+    for (std::size_t k = 0; k < presets_.size(); ++k) {
+        if (scenes::presetPath(presets_[k]) == panel_.scenePath) panel_.presetIndex = static_cast<int>(k);
+    }
+    GLFWwindow* handle = window_->handle();
+    glfwSetWindowUserPointer(handle, this);
+    // Ours first: ImGui's backend chains to the callbacks installed before it.
+    glfwSetKeyCallback(handle, onKey);
+    glfwSetScrollCallback(handle, onScroll);
+    ImGui::CreateContext();
+    ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini left in the working directory
+    ImGui::StyleColorsDark();
+    ImGui_ImplGlfw_InitForOpenGL(handle, true);
+    imguiRenderer_.init();
+    panel_.uiScale = std::max(1.0f, window_->contentScale().x);
+    rebuildFont();
+    resetCamera();
+}
+
+WindowApp::~WindowApp() {
+    imguiRenderer_.shutdown();
+    renderer_.shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+}
+
+void WindowApp::rebuildFont() {
+    ui::loadUiFont(kBaseFontPx * panel_.uiScale);
+    ImGuiStyle style;
+    ImGui::StyleColorsDark(&style);
+    style.WindowRounding = 0.0f;
+    style.FrameRounding = 3.0f;
+    style.ScaleAllSizes(panel_.uiScale);
+    ImGui::GetStyle() = style;
+    imguiRenderer_.invalidateFontTexture();
+}
+
+void WindowApp::resetCamera() {
+    glm::vec3 lo, hi;
+    sceneBounds(simulation_, lo, hi);
+    const glm::ivec2 size = window_->framebufferSize();
+    camera_.reset(lo, hi, size.y > 0 ? float(size.x) / float(size.y) : 1.0f);
+}
+
+void WindowApp::onKey(GLFWwindow* w, int key, int, int action, int) {
+    if (action != GLFW_PRESS && action != GLFW_REPEAT) return;
+    if (ImGui::GetCurrentContext() && ImGui::GetIO().WantTextInput) return;
+    static_cast<WindowApp*>(glfwGetWindowUserPointer(w))->handleKey(key);
+}
+
+void WindowApp::onScroll(GLFWwindow* w, double, double dy) {
+    if (ImGui::GetCurrentContext() && ImGui::GetIO().WantCaptureMouse) return;
+    static_cast<WindowApp*>(glfwGetWindowUserPointer(w))->camera_.zoom(float(dy));
+}
+
+void WindowApp::handleKey(int key) {
+    const int count = static_cast<int>(presets_.size());
+    switch (key) {
+        case GLFW_KEY_P: case GLFW_KEY_SPACE: simulation_.paused = !simulation_.paused; break;
+        case GLFW_KEY_O: case GLFW_KEY_N: simulation_.singleStep(); break;
+        case GLFW_KEY_R: simulation_.restart(); break;
+        case GLFW_KEY_RIGHT_BRACKET: loadPreset((panel_.presetIndex + 1) % count); break;
+        case GLFW_KEY_LEFT_BRACKET: loadPreset((panel_.presetIndex + count - 1) % count); break;
+        case GLFW_KEY_TAB: panel_.visible = !panel_.visible; break;
+        case GLFW_KEY_F12: screenshotRequested_ = true; break;
+        case GLFW_KEY_C: resetCamera(); break;
+        case GLFW_KEY_ESCAPE: window_->requestClose(); break;
+        default: break;
+    }
+}
+
+// Left drag orbits, right drag (or shift + left drag) pans: unless ImGui has the mouse.
+void WindowApp::handleMouse() {
+    const ImGuiIO& io = ImGui::GetIO();
+    if (io.WantCaptureMouse) return;
+    const glm::vec2 scale = window_->framebufferScale();
+    const float dx = io.MouseDelta.x * scale.x, dy = io.MouseDelta.y * scale.y;
+    const bool shift = io.KeyShift;
+    if ((ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0.0f) && shift) || ImGui::IsMouseDragging(ImGuiMouseButton_Right, 0.0f)) {
+        camera_.pan(dx, dy, float(window_->framebufferSize().y));
+    } else if (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0.0f)) {
+        camera_.orbit(dx, dy);
+    }
+}
+
+void WindowApp::loadPreset(int index) {
+    if (index < 0 || index >= static_cast<int>(presets_.size())) return;
+    loadFile(scenes::presetPath(presets_[static_cast<std::size_t>(index)]));
+    panel_.presetIndex = index;
+}
+
+void WindowApp::loadFile(const std::string& path) {
+    try {
+        const double timeScale = simulation_.timeScale;
+        simulation_.setScene(scenes::loadScene(path));
+        simulation_.timeScale = timeScale;
+        panel_.scenePath = path;
+        panel_.presetIndex = -1;
+        panel_.message.clear();
+        resetCamera();
+    } catch (const std::exception& e) {
+        panel_.message = e.what();  // a broken file is reported in the panel, the demo goes on
+    }
+}
+
+void WindowApp::apply(const ui::PanelActions& a) {
+    if (a.togglePause) simulation_.paused = !simulation_.paused;
+    if (a.step) simulation_.singleStep();
+    if (a.restart) simulation_.restart();
+    if (a.resetCamera) resetCamera();
+    if (a.fontChanged) rebuildFont();
+    if (a.screenshot) screenshotRequested_ = true;
+    if (a.preset >= 0) loadPreset(a.preset);
+    if (!a.loadPath.empty()) loadFile(a.loadPath);
+    if (!a.savePath.empty()) {
+        try {
+            scenes::saveScene(a.savePath, simulation_.scene(), simulation_.world());
+            panel_.message = "saved " + a.savePath;
+        } catch (const std::exception& e) {
+            panel_.message = e.what();
+        }
+    }
+    if (a.exportCsv) {
+        const std::string path = "spheres_plots.csv";
+        panel_.message = simulation_.history().writeCsv(path) ? "wrote " + path : "cannot write " + path;
+    }
+}
+
+void WindowApp::drawScene() {
+    const glm::ivec2 size = window_->framebufferSize();
+    const auto start = std::chrono::steady_clock::now();
+    buildSnapshot(simulation_, static_cast<render::ColorBy>(panel_.colorBy), snapshot_);
+    renderer_.style.showBox = panel_.showBox;
+    renderer_.style.showGrid = panel_.showGrid;
+    renderer_.style.lineScale = window_->contentScale().x;
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    renderer_.draw(snapshot_, camera_, 0, 0, size.x, size.y);
+    renderMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+void WindowApp::frame(double dt) {
+    window_->pollEvents();
+    imguiRenderer_.newFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+    handleMouse();
+    simulation_.advance(dt);
+    drawScene();
+    const ui::Readouts readouts = makeReadouts(simulation_, fps_, renderMs_);
+    const ui::PanelActions actions =
+        ui::drawControlPanel(simulation_.editableScene(), simulation_.timeScale, readouts, panel_, presets_);
+    ImGui::Render();
+    imguiRenderer_.render(ImGui::GetDrawData());
+    apply(actions);
+    if (screenshotRequested_) {
+        char name[64];
+        std::snprintf(name, sizeof name, "spheres_%llu.png", static_cast<unsigned long long>(std::time(nullptr)));
+        panel_.message = saveScreenshot(name) ? std::string("screenshot: ") + name : "cannot write the screenshot";
+        screenshotRequested_ = false;
+    }
+}
+
+bool WindowApp::saveScreenshot(const std::string& path) {
+    const glm::ivec2 size = window_->framebufferSize();
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glReadBuffer(GL_BACK);
+    return render::writePng(path, size.x, size.y, render::readPixelsRGBA(size.x, size.y));
+}
+
+int WindowApp::run() {
+    if (const std::string error = renderer_.init(); !error.empty()) {
+        std::fprintf(stderr, "spheres: the renderer could not start: %s\n", error.c_str());
+        return 1;
+    }
+    double last = window_->time();
+    for (int frames = 0; !window_->shouldClose(); ++frames) {
+        const double now = window_->time();
+        const double dt = std::min(now - last, 0.25);  // s; a stall (dragging the window) is not simulated
+        last = now;
+        fps_ = dt > 0.0 ? 0.9 * fps_ + 0.1 / dt : fps_;
+        const bool lastFrame = options_.frames > 0 && frames + 1 >= options_.frames;
+        frame(dt);
+        if (lastFrame && !options_.screenshot.empty() && !saveScreenshot(options_.screenshot)) {
+            std::fprintf(stderr, "spheres: --screenshot %s: cannot write the file\n", options_.screenshot.c_str());
+            return 1;
+        }
+        window_->swapBuffers();
+        if (lastFrame) break;
+    }
+    return 0;
+}
+
+}  // namespace
+
+int runWindowApp(const WindowAppOptions& options) {
+    scenes::Scene scene = loadSceneWithSettings(options.scene, options.settings);
+    std::string error;
+    platform::WindowOptions windowOptions;
+    windowOptions.width = options.width;
+    windowOptions.height = options.height;
+    auto window = platform::Window::create(windowOptions, &error);
+    if (!window) {
+        std::fprintf(stderr,
+                     "spheres: cannot open a window (%s). Without a display, run headless: "
+                     "`spheres capture --scene %s --frames 60 --out frames/` or `xvfb-run -a spheres`\n",
+                     error.c_str(), options.scene.c_str());
+        return 2;
+    }
+    WindowApp app(std::move(window), std::move(scene), options);
+    return app.run();
+}
+
+}  // namespace app

@@ -1,0 +1,167 @@
+#include "ui/control_panel.h"
+
+#include <cstdio>
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include "scenes/parameters.h"
+
+namespace ui {
+namespace {
+
+constexpr double kTimeScaleRange[2] = {0.01, 4.0};
+
+void tooltip(std::string_view text) {
+    if (!ImGui::IsItemHovered() || text.empty()) return;
+    ImGui::BeginTooltip();
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 28.0f);
+    ImGui::TextUnformatted(text.data(), text.data() + text.size());
+    ImGui::PopTextWrapPos();
+    ImGui::EndTooltip();
+}
+
+std::string labelOf(const scenes::Parameter& p) {
+    std::string label(p.label);
+    if (!p.unit.empty()) label += " (" + std::string(p.unit) + ")";
+    if (p.applies == scenes::Applies::Restart) label += " (restart)";
+    return label + "##" + std::string(p.name);
+}
+
+// One widget for one table entry; returns true when the value was committed.
+bool parameterWidget(const scenes::Parameter& p, scenes::Scene& scene) {
+    double value = p.get(scene);
+    bool changed = false;
+    const std::string label = labelOf(p);
+    if (p.kind == scenes::ParameterKind::Choice) {
+        int index = static_cast<int>(value);
+        const std::string current(p.choices[static_cast<std::size_t>(index)]);
+        if (ImGui::BeginCombo(label.c_str(), current.c_str())) {
+            for (std::size_t k = 0; k < p.choices.size(); ++k) {
+                const std::string name(p.choices[k]);
+                if (ImGui::Selectable(name.c_str(), static_cast<int>(k) == index)) {
+                    value = static_cast<double>(k);
+                    changed = true;
+                }
+            }
+            ImGui::EndCombo();
+        }
+    } else if (p.kind == scenes::ParameterKind::Integer) {
+        int integer = static_cast<int>(value);
+        const int lo = static_cast<int>(p.min), hi = static_cast<int>(std::min(p.max, 1e9));
+        changed = ImGui::SliderInt(label.c_str(), &integer, lo, std::min(hi, lo + 100000));
+        value = integer;
+    } else {
+        const bool logarithmic = p.min > 0.0 && p.max / p.min > 100.0;
+        changed = ImGui::SliderScalar(label.c_str(), ImGuiDataType_Double, &value, &p.min, &p.max,
+                                      "%.4g", logarithmic ? ImGuiSliderFlags_Logarithmic : 0);
+    }
+    tooltip(p.tooltip);
+    // A restart parameter is committed when the slider is let go, not on every drag frame.
+    const bool commit = p.applies == scenes::Applies::Live ? changed : ImGui::IsItemDeactivatedAfterEdit();
+    if (changed) p.set(scene, value);
+    return commit && p.applies == scenes::Applies::Restart;
+}
+
+void runSection(double& timeScale, const Readouts& r, PanelActions& actions) {
+    if (ImGui::Button(r.paused ? "Run (P)" : "Pause (P)")) actions.togglePause = true;
+    ImGui::SameLine();
+    if (ImGui::Button("Step (O)")) actions.step = true;
+    ImGui::SameLine();
+    if (ImGui::Button("Restart (R)")) actions.restart = true;
+    ImGui::SliderScalar("time scale", ImGuiDataType_Double, &timeScale,
+                        &kTimeScaleRange[0], &kTimeScaleRange[1], "%.3g x", ImGuiSliderFlags_Logarithmic);
+    tooltip("Simulated seconds per real second: below 1 is slow motion. The step h does not change.");
+    ImGui::Text("t = %.3f s   %llu steps   %zu spheres", r.time, static_cast<unsigned long long>(r.steps), r.sphereCount);
+    if (r.behindRealTime) ImGui::TextColored({1.0f, 0.55f, 0.2f, 1.0f}, "behind real time: lower the time scale or N");
+}
+
+void sceneSection(scenes::Scene& scene, PanelState& state, const std::vector<std::string>& presets,
+                  PanelActions& actions) {
+    const char* current = state.presetIndex >= 0 ? presets[static_cast<std::size_t>(state.presetIndex)].c_str() : "(file)";
+    if (ImGui::BeginCombo("preset ([ ])", current)) {
+        for (std::size_t k = 0; k < presets.size(); ++k) {
+            if (ImGui::Selectable(presets[k].c_str(), static_cast<int>(k) == state.presetIndex)) {
+                actions.preset = static_cast<int>(k);
+            }
+        }
+        ImGui::EndCombo();
+    }
+    for (const scenes::Parameter& p : scenes::parameterTable()) {
+        if (p.applies == scenes::Applies::Restart && p.get && parameterWidget(p, scene)) actions.restart = true;
+    }
+    ImGui::InputText("file", &state.scenePath);
+    if (ImGui::Button("Load")) actions.loadPath = state.scenePath;
+    ImGui::SameLine();
+    if (ImGui::Button("Save state")) actions.savePath = state.scenePath;
+    tooltip("Saves the current positions, velocities and parameters as a scene file.");
+}
+
+void readoutsSection(const Readouts& r, PanelActions& actions) {
+    const physics::Diagnostics& d = r.diagnostics;
+    ImGui::Text("%.0f FPS   draw %.2f ms   physics step %.2f ms", r.fps, r.renderMs, r.stepMs);
+    ImGui::Text("contacts: %llu sphere, %llu wall; bounces %llu, static %llu",
+                static_cast<unsigned long long>(d.sphereContacts), static_cast<unsigned long long>(d.wallContacts),
+                static_cast<unsigned long long>(r.stats.collisions), static_cast<unsigned long long>(r.stats.staticContacts));
+    ImGui::Text("kinetic %.4g J   potential %.4g J", d.kinetic, d.potential);
+    ImGui::Text("total %.6g J   E~ %.6g J", d.total, d.modified);
+    tooltip("E~ = sum m (-g.p + |v + h g/2|^2 / 2): the energy the time integration keeps exactly in free flight.");
+    ImGui::Text("momentum (%.3g, %.3g, %.3g) kg m/s", d.momentum.x, d.momentum.y, d.momentum.z);
+    ImGui::Text("deepest penetration %.2f %% of r", 100.0 * d.maxPenetration);
+    ImGui::Text("state hash %016llx", static_cast<unsigned long long>(d.hash));
+    tooltip("Same scene, same seed, same parameters: same hash. Compare runs with it.");
+    const float height = ImGui::GetFontSize() * 3.0f;
+    for (const auto& [name, samples] : r.plots) {
+        if (samples->empty()) continue;
+        char overlay[64];
+        std::snprintf(overlay, sizeof overlay, "%.4g", samples->back());
+        ImGui::PlotLines(name, samples->data(), static_cast<int>(samples->size()), 0, overlay,
+                         FLT_MAX, FLT_MAX, ImVec2(0, height));
+    }
+    if (ImGui::Button("Export plots as CSV")) actions.exportCsv = true;
+}
+
+void viewSection(PanelState& state, PanelActions& actions) {
+    ImGui::Combo("colour by", &state.colorBy, "sphere id\0speed\0contact state\0");
+    tooltip("Contact state: blue free, orange colliding (bounce), green static contact (speed at or below epsilon).");
+    ImGui::Checkbox("box", &state.showBox);
+    ImGui::SameLine();
+    ImGui::Checkbox("floor grid", &state.showGrid);
+    if (ImGui::SliderFloat("UI scale", &state.uiScale, 0.75f, 3.0f, "%.2f")) actions.fontChanged = true;
+    if (ImGui::Button("Reset view (C)")) actions.resetCamera = true;
+    ImGui::SameLine();
+    if (ImGui::Button("Screenshot (F12)")) actions.screenshot = true;
+}
+
+}  // namespace
+
+PanelActions drawControlPanel(scenes::Scene& scene, double& timeScale, const Readouts& readouts,
+                              PanelState& state, const std::vector<std::string>& presetNames) {
+    PanelActions actions;
+    if (!state.visible) return actions;
+    const ImGuiViewport* viewport = ImGui::GetMainViewport();
+    const float width = std::min(ImGui::GetFontSize() * 26.0f, viewport->WorkSize.x * 0.5f);
+    ImGui::SetNextWindowPos(viewport->WorkPos, ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(width, viewport->WorkSize.y), ImGuiCond_Always);
+    ImGui::Begin("Rigid spheres", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+    ImGui::PushItemWidth(-ImGui::GetFontSize() * 11.0f);
+    ImGui::TextWrapped("%s", scene.title.c_str());
+    if (!scene.slide.empty()) ImGui::TextDisabled("%s", scene.slide.c_str());
+    if (!scene.description.empty()) ImGui::TextWrapped("%s", scene.description.c_str());
+    ImGui::Separator();
+    runSection(timeScale, readouts, actions);
+    if (ImGui::CollapsingHeader("Lecture parameters", ImGuiTreeNodeFlags_DefaultOpen)) {
+        for (const scenes::Parameter& p : scenes::parameterTable()) {
+            if (p.applies == scenes::Applies::Live) parameterWidget(p, scene);
+        }
+    }
+    if (ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) sceneSection(scene, state, presetNames, actions);
+    if (ImGui::CollapsingHeader("Readouts", ImGuiTreeNodeFlags_DefaultOpen)) readoutsSection(readouts, actions);
+    if (ImGui::CollapsingHeader("View")) viewSection(state, actions);
+    if (!state.message.empty()) ImGui::TextWrapped("%s", state.message.c_str());
+    ImGui::PopItemWidth();
+    ImGui::End();
+    return actions;
+}
+
+}  // namespace ui

@@ -1,0 +1,59 @@
+#pragma once
+// The one ImGui panel: the lecture's parameters (read from scenes::parameterTable,
+// so the UI, the CLI and the JSON agree), the run controls, the scene and the
+// readouts. It edits the scene's live parameters in place and returns the actions
+// that the app must carry out (restart, step, load a preset, ...).
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "physics/diagnostics.h"
+#include "physics/step.h"
+#include "scenes/scene.h"
+
+namespace ui {
+
+// The panel's own settings, kept between frames.
+struct PanelState {
+    bool visible = true;
+    float uiScale = 1.0f;      // multiplies the font size
+    int colorBy = 2;           // render::ColorBy: 0 id, 1 speed, 2 contact state
+    bool showBox = true;
+    bool showGrid = true;
+    std::string scenePath;     // the load / save field
+    std::string message;       // the last action's result (screenshot path, errors)
+    int presetIndex = -1;      // into the preset list; -1: a file
+};
+
+// What the app shows in the readouts; plain numbers, filled each frame.
+struct Readouts {
+    double fps = 0.0;
+    double renderMs = 0.0;  // ms to draw the scene, CPU side
+    double stepMs = 0.0;    // ms of wall time for the last step
+    bool paused = false;
+    bool behindRealTime = false;
+    double time = 0.0;      // s, simulated
+    std::uint64_t steps = 0;
+    std::size_t sphereCount = 0;
+    physics::StepStats stats;
+    physics::Diagnostics diagnostics;
+    std::vector<std::pair<const char*, const std::vector<float>*>> plots;  // name, samples
+};
+
+struct PanelActions {
+    bool restart = false;       // a restart parameter changed, or the button
+    bool togglePause = false;
+    bool step = false;
+    bool resetCamera = false;
+    bool screenshot = false;
+    bool exportCsv = false;
+    bool fontChanged = false;   // uiScale changed: rebuild the font
+    int preset = -1;            // load this preset
+    std::string loadPath;       // load this scene file
+    std::string savePath;       // save the current state here
+};
+
+PanelActions drawControlPanel(scenes::Scene& scene, double& timeScale, const Readouts& readouts,
+                              PanelState& state, const std::vector<std::string>& presetNames);
+
+}  // namespace ui

@@ -1,0 +1,31 @@
+#include "ui/ui_font.h"
+
+#include <imgui.h>
+
+// The .ttf file (from fonts-dejavu-core) is assembled straight into read-only data.
+// SPHERES_FONT_FILE is an absolute path given by CMake.
+__asm__(".section .rodata\n"
+        ".balign 16\n"
+        "spheres_ui_font_begin:\n"
+        ".incbin \"" SPHERES_FONT_FILE "\"\n"
+        "spheres_ui_font_end:\n"
+        ".previous\n");
+extern "C" const unsigned char spheres_ui_font_begin[];
+extern "C" const unsigned char spheres_ui_font_end[];
+
+namespace ui {
+
+ImFont* loadUiFont(float pixelSize) {
+    ImGuiIO& io = ImGui::GetIO();
+    io.Fonts->Clear();
+    ImFontConfig config;
+    config.FontDataOwnedByAtlas = false;  // the bytes live in the binary
+    config.OversampleH = 2;
+    static const ImWchar ranges[] = {0x0020, 0x00FF, 0x0370, 0x03FF,  // Latin-1, Greek (α β ε μ)
+                                     0x2010, 0x22FF, 0};              // punctuation, arrows, maths
+    const int size = static_cast<int>(spheres_ui_font_end - spheres_ui_font_begin);
+    void* data = const_cast<unsigned char*>(spheres_ui_font_begin);
+    return io.Fonts->AddFontFromMemoryTTF(data, size, pixelSize, &config, ranges);
+}
+
+}  // namespace ui
