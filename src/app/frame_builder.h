@@ -15,4 +15,8 @@ ui::Readouts makeReadouts(const Simulation& simulation, double fps, double rende
 // Axis-aligned bounds of the box (or of the spheres when there is none), m, for the camera.
 void sceneBounds(const Simulation& simulation, glm::vec3& lo, glm::vec3& hi);
 
+// The scene's viewport (x, y, width, height; GL's lower-left origin) in a framebuffer
+// of `size` pixels whose left `panelPixels` belong to the panel.
+glm::ivec4 viewportRightOf(glm::ivec2 size, float panelPixels);
+
 }  // namespace app

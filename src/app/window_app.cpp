@@ -47,6 +47,7 @@ private:
     void loadFile(const std::string& path);
     void rebuildFont();
     void resetCamera();
+    glm::ivec4 sceneViewport() const;  // x, y, width, height in framebuffer pixels
     bool saveScreenshot(const std::string& path);
 
     std::unique_ptr<platform::Window> window_;
@@ -102,11 +103,18 @@ void WindowApp::rebuildFont() {
     imguiRenderer_.invalidateFontTexture();
 }
 
+// The scene takes the window right of the panel (ImGui must be inside a frame).
+glm::ivec4 WindowApp::sceneViewport() const {
+    const glm::ivec2 size = window_->framebufferSize();
+    const float panel = ImGui::GetCurrentContext() ? ui::panelWidth(panel_, float(window_->windowSize().x)) : 0.0f;
+    return viewportRightOf(size, panel * window_->framebufferScale().x);
+}
+
 void WindowApp::resetCamera() {
     glm::vec3 lo, hi;
     sceneBounds(simulation_, lo, hi);
-    const glm::ivec2 size = window_->framebufferSize();
-    camera_.reset(lo, hi, size.y > 0 ? float(size.x) / float(size.y) : 1.0f);
+    const glm::ivec4 view = sceneViewport();
+    camera_.reset(lo, hi, view.w > 0 ? float(view.z) / float(view.w) : 1.0f);
 }
 
 void WindowApp::onKey(GLFWwindow* w, int key, int, int action, int) {
@@ -194,14 +202,18 @@ void WindowApp::apply(const ui::PanelActions& a) {
 }
 
 void WindowApp::drawScene() {
-    const glm::ivec2 size = window_->framebufferSize();
+    const glm::ivec4 view = sceneViewport();
     const auto start = std::chrono::steady_clock::now();
     buildSnapshot(simulation_, static_cast<render::ColorBy>(panel_.colorBy), snapshot_);
     renderer_.style.showBox = panel_.showBox;
     renderer_.style.showGrid = panel_.showGrid;
     renderer_.style.lineScale = window_->contentScale().x;
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    renderer_.draw(snapshot_, camera_, 0, 0, size.x, size.y);
+    const glm::ivec2 size = window_->framebufferSize();
+    glViewport(0, 0, size.x, size.y);
+    glClearColor(0.09f, 0.10f, 0.12f, 1.0f);  // behind the panel
+    glClear(GL_COLOR_BUFFER_BIT);
+    renderer_.draw(snapshot_, camera_, view.x, view.y, view.z, view.w);
     renderMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
@@ -214,8 +226,9 @@ void WindowApp::frame(double dt) {
     simulation_.advance(dt);
     drawScene();
     const ui::Readouts readouts = makeReadouts(simulation_, fps_, renderMs_);
-    const ui::PanelActions actions =
+    ui::PanelActions actions =
         ui::drawControlPanel(simulation_.editableScene(), simulation_.timeScale, readouts, panel_, presets_);
+    ui::drawReadouts(readouts, actions);
     ImGui::Render();
     imguiRenderer_.render(ImGui::GetDrawData());
     apply(actions);

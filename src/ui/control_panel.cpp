@@ -97,26 +97,32 @@ void sceneSection(scenes::Scene& scene, PanelState& state, const std::vector<std
     tooltip("Saves the current positions, velocities and parameters as a scene file.");
 }
 
-void readoutsSection(const Readouts& r, PanelActions& actions) {
+void readoutsBody(const Readouts& r, PanelActions& actions) {
     const physics::Diagnostics& d = r.diagnostics;
-    ImGui::Text("%.0f FPS   draw %.2f ms   physics step %.2f ms", r.fps, r.renderMs, r.stepMs);
-    ImGui::Text("contacts: %llu sphere, %llu wall; bounces %llu, static %llu",
-                static_cast<unsigned long long>(d.sphereContacts), static_cast<unsigned long long>(d.wallContacts),
-                static_cast<unsigned long long>(r.stats.collisions), static_cast<unsigned long long>(r.stats.staticContacts));
-    ImGui::Text("kinetic %.4g J   potential %.4g J", d.kinetic, d.potential);
-    ImGui::Text("total %.6g J   E~ %.6g J", d.total, d.modified);
-    tooltip("E~ = sum m (-g.p + |v + h g/2|^2 / 2): the energy the time integration keeps exactly in free flight.");
+    ImGui::Text("%.0f FPS   draw %.1f ms   step %.2f ms", r.fps, r.renderMs, r.stepMs);
+    ImGui::Text("contacts %llu sphere + %llu wall", static_cast<unsigned long long>(d.sphereContacts),
+                static_cast<unsigned long long>(d.wallContacts));
+    ImGui::Text("last step: %llu bounces, %llu static", static_cast<unsigned long long>(r.stats.collisions),
+                static_cast<unsigned long long>(r.stats.staticContacts));
+    tooltip("A bounce is a contact whose relative normal speed is above epsilon; a static contact is at or below it (slide 13).");
+    ImGui::Text("kinetic %.5g J", d.kinetic);
+    ImGui::Text("potential %.5g J", d.potential);
+    ImGui::Text("total %.6g J", d.total);
+    ImGui::Text("E~ %.6g J", d.modified);
+    tooltip("E~ = sum m (-g.p + |v + h g/2|^2 / 2): the energy the time integration keeps exactly in free flight. "
+            "Use it for bounce heights: the naive total wobbles by O(g v h).");
     ImGui::Text("momentum (%.3g, %.3g, %.3g) kg m/s", d.momentum.x, d.momentum.y, d.momentum.z);
     ImGui::Text("deepest penetration %.2f %% of r", 100.0 * d.maxPenetration);
     ImGui::Text("state hash %016llx", static_cast<unsigned long long>(d.hash));
     tooltip("Same scene, same seed, same parameters: same hash. Compare runs with it.");
-    const float height = ImGui::GetFontSize() * 3.0f;
+    const float height = ImGui::GetFontSize() * 2.5f;
     for (const auto& [name, samples] : r.plots) {
         if (samples->empty()) continue;
         char overlay[64];
         std::snprintf(overlay, sizeof overlay, "%.4g", samples->back());
-        ImGui::PlotLines(name, samples->data(), static_cast<int>(samples->size()), 0, overlay,
-                         FLT_MAX, FLT_MAX, ImVec2(0, height));
+        ImGui::TextUnformatted(name);
+        ImGui::PlotLines((std::string("##") + name).c_str(), samples->data(), static_cast<int>(samples->size()), 0,
+                         overlay, FLT_MAX, FLT_MAX, ImVec2(ImGui::GetContentRegionAvail().x, height));
     }
     if (ImGui::Button("Export plots as CSV")) actions.exportCsv = true;
 }
@@ -135,16 +141,20 @@ void viewSection(PanelState& state, PanelActions& actions) {
 
 }  // namespace
 
+float panelWidth(const PanelState& state, float displayWidth) {
+    if (!state.visible) return 0.0f;
+    return std::min(ImGui::GetFontSize() * 25.0f, displayWidth * 0.45f);
+}
+
 PanelActions drawControlPanel(scenes::Scene& scene, double& timeScale, const Readouts& readouts,
                               PanelState& state, const std::vector<std::string>& presetNames) {
     PanelActions actions;
     if (!state.visible) return actions;
     const ImGuiViewport* viewport = ImGui::GetMainViewport();
-    const float width = std::min(ImGui::GetFontSize() * 26.0f, viewport->WorkSize.x * 0.5f);
     ImGui::SetNextWindowPos(viewport->WorkPos, ImGuiCond_Always);
-    ImGui::SetNextWindowSize(ImVec2(width, viewport->WorkSize.y), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(panelWidth(state, viewport->WorkSize.x), viewport->WorkSize.y), ImGuiCond_Always);
     ImGui::Begin("Rigid spheres", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
-    ImGui::PushItemWidth(-ImGui::GetFontSize() * 11.0f);
+    ImGui::PushItemWidth(ImGui::GetFontSize() * 9.5f);
     ImGui::TextWrapped("%s", scene.title.c_str());
     if (!scene.slide.empty()) ImGui::TextDisabled("%s", scene.slide.c_str());
     if (!scene.description.empty()) ImGui::TextWrapped("%s", scene.description.c_str());
@@ -156,12 +166,23 @@ PanelActions drawControlPanel(scenes::Scene& scene, double& timeScale, const Rea
         }
     }
     if (ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) sceneSection(scene, state, presetNames, actions);
-    if (ImGui::CollapsingHeader("Readouts", ImGuiTreeNodeFlags_DefaultOpen)) readoutsSection(readouts, actions);
     if (ImGui::CollapsingHeader("View")) viewSection(state, actions);
     if (!state.message.empty()) ImGui::TextWrapped("%s", state.message.c_str());
     ImGui::PopItemWidth();
     ImGui::End();
     return actions;
+}
+
+void drawReadouts(const Readouts& readouts, PanelActions& actions) {
+    const ImGuiViewport* viewport = ImGui::GetMainViewport();
+    const float margin = ImGui::GetFontSize() * 0.5f;
+    ImGui::SetNextWindowPos(ImVec2(viewport->WorkPos.x + viewport->WorkSize.x - margin, viewport->WorkPos.y + margin),
+                            ImGuiCond_Always, ImVec2(1.0f, 0.0f));
+    ImGui::SetNextWindowSize(ImVec2(ImGui::GetFontSize() * 18.0f, 0.0f), ImGuiCond_Always);
+    ImGui::SetNextWindowBgAlpha(0.82f);
+    ImGui::Begin("Readouts", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize);
+    readoutsBody(readouts, actions);
+    ImGui::End();
 }
 
 }  // namespace ui

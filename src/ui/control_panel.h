@@ -53,7 +53,15 @@ struct PanelActions {
     std::string savePath;       // save the current state here
 };
 
+// The parameters panel, docked on the left; returns what the app must do.
 PanelActions drawControlPanel(scenes::Scene& scene, double& timeScale, const Readouts& readouts,
                               PanelState& state, const std::vector<std::string>& presetNames);
+
+// The readouts (numbers and plots), floating at the top right of the scene view.
+void drawReadouts(const Readouts& readouts, PanelActions& actions);
+
+// Width of the docked panel in ImGui units (window coordinates) for a display of
+// `displayWidth`, at the current font size; 0 when the panel is hidden.
+float panelWidth(const PanelState& state, float displayWidth);
 
 }  // namespace ui

@@ -1,0 +1,114 @@
+// The real window under Xvfb: starts `spheres` as a user would, takes screenshots
+// with --screenshot and checks what a teacher would see on them.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include "render/image_io.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+bool haveXvfb() { return std::system("command -v xvfb-run >/dev/null 2>&1") == 0; }
+
+// Runs the window for `frames` frames and returns the screenshot; "" on failure.
+std::string screenshot(const std::string& name, const std::string& arguments) {
+    const fs::path out = fs::path(SPHERES_TEST_OUTPUT_DIR) / (name + ".png");
+    fs::remove(out);
+    const std::string command = "xvfb-run -a -s '-screen 0 1280x800x24' '" SPHERES_EXECUTABLE "' " +
+                                arguments + " --screenshot '" + out.string() + "' >/dev/null 2>&1";
+    return std::system(command.c_str()) == 0 && fs::exists(out) ? out.string() : "";
+}
+
+render::Image load(const std::string& path) {
+    render::Image image;
+    EXPECT_TRUE(render::readPng(path, &image)) << path;
+    return image;
+}
+
+// Fraction of the pixels of a rectangle for which `test` holds.
+template <class Test>
+double fraction(const render::Image& image, int x0, int y0, int x1, int y1, Test test) {
+    int hits = 0, total = 0;
+    for (int y = y0; y < y1; y += 2) {
+        for (int x = x0; x < x1; x += 2) {
+            hits += test(image.pixel(x, y)) ? 1 : 0;
+            ++total;
+        }
+    }
+    return total ? double(hits) / total : 0.0;
+}
+
+// Mean absolute channel difference over a rectangle, 0..255.
+double meanDifference(const render::Image& a, const render::Image& b, int x0, int y0, int x1, int y1) {
+    double sum = 0.0;
+    int count = 0;
+    for (int y = y0; y < y1; ++y) {
+        for (int x = x0; x < x1; ++x) {
+            const glm::ivec4 d = glm::abs(glm::ivec4(a.pixel(x, y)) - glm::ivec4(b.pixel(x, y)));
+            sum += d.x + d.y + d.z;
+            count += 3;
+        }
+    }
+    return sum / count;
+}
+
+bool saturated(glm::u8vec4 p) {  // sphere colours; the box, floor, panel and background are greys
+    const int hi = std::max({int(p.x), int(p.y), int(p.z)}), lo = std::min({int(p.x), int(p.y), int(p.z)});
+    return hi - lo > 60;
+}
+
+bool dark(glm::u8vec4 p) { return p.x + p.y + p.z < 3 * 45; }
+
+// The scene left of the readouts window (which shows FPS, and so changes by itself).
+constexpr int kSceneX0 = 460, kSceneX1 = 940, kSceneY0 = 0, kSceneY1 = 800;
+
+}  // namespace
+
+TEST(Window, ShowsThePanelAndTheSpheresInTheBox) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run not found: install the xvfb package to run the window tests";
+    const std::string path = screenshot("window_pile", "--scene 07_pile --frames 40");
+    ASSERT_FALSE(path.empty()) << "spheres did not run or wrote no screenshot under Xvfb";
+    const render::Image image = load(path);
+    ASSERT_EQ(image.width, 1280);
+    ASSERT_EQ(image.height, 800);
+    // The panel: its label column is ImGui's dark window background behind light text.
+    EXPECT_GT(fraction(image, 180, 250, 400, 780, dark), 0.6);
+    // The spheres: coloured pixels in the lower half of the scene (the pile), none
+    // in its top rows (the sky above the box).
+    EXPECT_GT(fraction(image, kSceneX0, 450, kSceneX1, 780, saturated), 0.15);
+    EXPECT_LT(fraction(image, kSceneX0, 0, kSceneX1, 60, saturated), 0.01);
+}
+
+TEST(Window, FramesChangeWhileRunningAndNotWhilePaused) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run not found: install the xvfb package to run the window tests";
+    const std::string early = screenshot("window_run_early", "--scene 07_pile --frames 5");
+    const std::string late = screenshot("window_run_late", "--scene 07_pile --frames 70");
+    const std::string pausedEarly = screenshot("window_paused_early", "--scene 07_pile --paused --frames 5");
+    const std::string pausedLate = screenshot("window_paused_late", "--scene 07_pile --paused --frames 70");
+    ASSERT_FALSE(early.empty() || late.empty() || pausedEarly.empty() || pausedLate.empty());
+    const double running = meanDifference(load(early), load(late), kSceneX0, kSceneY0, kSceneX1, kSceneY1);
+    const double paused = meanDifference(load(pausedEarly), load(pausedLate), kSceneX0, kSceneY0, kSceneX1, kSceneY1);
+    EXPECT_GT(running, 2.0);   // the spheres fell
+    EXPECT_LT(paused, 0.01);   // nothing moved
+}
+
+TEST(Window, WithoutADisplayExitsWithCodeTwoAndSaysHowToRunHeadless) {
+    const fs::path log = fs::path(SPHERES_TEST_OUTPUT_DIR) / "no_display.txt";
+    const std::string command = "env -u DISPLAY -u WAYLAND_DISPLAY '" SPHERES_EXECUTABLE "' --frames 1 2>'" +
+                                log.string() + "'";
+    const int status = std::system(command.c_str());
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 2);
+    std::FILE* file = std::fopen(log.c_str(), "r");
+    ASSERT_NE(file, nullptr);
+    char line[1024] = {};
+    ASSERT_NE(std::fgets(line, sizeof line, file), nullptr);
+    std::fclose(file);
+    EXPECT_NE(std::string(line).find("cannot open a window"), std::string::npos) << line;
+    EXPECT_NE(std::string(line).find("spheres capture"), std::string::npos) << line;
+}
