@@ -9,12 +9,6 @@
 namespace physics {
 namespace {
 
-bool withinReachOf(const World& world, std::uint32_t i, std::uint32_t j, double margin) {
-    const double reach = world.radius[i] + world.radius[j] + margin;
-    const glm::dvec3 delta = world.position[i] - world.position[j];
-    return glm::dot(delta, delta) <= reach * reach;
-}
-
 // The grid covers the spheres' bounding box. Cells are never smaller than one
 // largest diameter plus the margin, and grow if needed to keep at most ~4 cells
 // per sphere, so spheres that fly far apart cannot blow up the memory.
@@ -144,6 +138,12 @@ void orderByIndex(std::size_t sphereCount, Workspace& ws) {
 
 }  // namespace
 
+bool withinReach(const World& world, const SpherePair& pair, double margin) {
+    const double reach = world.radius[pair.i] + world.radius[pair.j] + margin;
+    const glm::dvec3 delta = world.position[pair.i] - world.position[pair.j];
+    return glm::dot(delta, delta) <= reach * reach;
+}
+
 double maxRadius(const World& world) {
     double r = 0.0;
     for (double ri : world.radius) r = std::max(r, ri);
@@ -157,7 +157,7 @@ std::uint64_t findPairsAllPairs(const World& world, double margin, std::vector<S
     for (std::uint32_t i = 0; i < n; ++i) {
         for (std::uint32_t j = i + 1; j < n; ++j) {
             ++tests;
-            if (withinReachOf(world, i, j, margin)) pairs.push_back({i, j});
+            if (withinReach(world, {i, j}, margin)) pairs.push_back({i, j});
         }
     }
     return tests;

@@ -22,4 +22,7 @@ std::uint64_t findPairsGrid(const World& world, double margin, Workspace& worksp
 
 double maxRadius(const World& world);  // m, 0 for an empty world
 
+// Whether the pair's spheres are within `margin` (m) of touching.
+bool withinReach(const World& world, const SpherePair& pair, double margin);
+
 }  // namespace physics

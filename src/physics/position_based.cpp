@@ -11,7 +11,7 @@ namespace {
 
 void particlesVelocityAndPosition(World& world, const Params& params, StepStats& stats,
                                   bool firstPass) {
-    for (const SpherePair& pair : world.workspace.pairs) {
+    for (const SpherePair& pair : world.workspace.visitOrder) {
         SphereContact contact;
         if (!touching(world, pair, contact)) continue;
         respondToContact(world, pair, contact, params, stats, firstPass);

@@ -1,6 +1,7 @@
 #include "physics/step.h"
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 #include <glm/geometric.hpp>
@@ -12,9 +13,41 @@
 namespace physics {
 namespace {
 
-// Candidate pairs reach this fraction of the largest radius beyond touching, so
-// that contacts created by the position corrections of a pass are seen by the next.
+// Candidate pairs must reach at least this fraction of the largest radius beyond
+// touching, so that contacts created by the corrections of a pass are seen by the next.
 constexpr double kMarginFraction = 0.1;
+// The grid builds them with this reach and keeps them (a Verlet list) until two
+// spheres could have closed the difference: at rest, a pile rebuilds rarely. Each
+// step then keeps exactly the pairs within the margin, so the cache never changes
+// the result: the next state is a function of this one, as with a fresh build.
+constexpr double kSkinFraction = 0.3;
+
+struct Extent {
+    double maxRadius = 0.0;  // m
+    double radiusSum = 0.0;  // m
+};
+
+Extent extentOf(const World& world) {
+    Extent e;
+    for (double r : world.radius) {
+        e.maxRadius = std::max(e.maxRadius, r);
+        e.radiusSum += r;
+    }
+    return e;
+}
+
+bool cachedPairsStillReach(const World& world, const Extent& extent, double margin) {
+    const Workspace& ws = world.workspace;
+    if (!ws.cached || ws.positionsAtBuild.size() != world.size() || ws.radiusSumAtBuild != extent.radiusSum) {
+        return false;
+    }
+    double maxMoveSquared = 0.0;  // m^2
+    for (std::size_t i = 0; i < world.size(); ++i) {
+        const glm::dvec3 move = world.position[i] - ws.positionsAtBuild[i];
+        maxMoveSquared = std::max(maxMoveSquared, glm::dot(move, move));
+    }
+    return 2.0 * std::sqrt(maxMoveSquared) <= ws.reachAtBuild - margin;
+}
 
 void reorder(std::vector<SpherePair>& pairs, PairOrder order, std::uint64_t seed,
              std::uint64_t stepCount) {
@@ -45,10 +78,25 @@ void integratePosition(World& world, double h) {
 }
 
 void findOrderedPairs(World& world, const Params& params, StepStats& stats) {
-    const double margin = kMarginFraction * maxRadius(world);
-    stats.pairTests += findPairs(params.broadPhase, world, margin, world.workspace);
-    stats.candidatePairs += world.workspace.pairs.size();
-    reorder(world.workspace.pairs, params.order, world.seed, world.stepCount);
+    Workspace& ws = world.workspace;
+    const Extent extent = extentOf(world);
+    const double margin = kMarginFraction * extent.maxRadius;
+    if (params.broadPhase == BroadPhase::AllPairs) {  // the lecture's loop, every step
+        ws.cached = false;
+        stats.pairTests += findPairs(params.broadPhase, world, margin, ws);
+    } else if (!cachedPairsStillReach(world, extent, margin)) {
+        ws.reachAtBuild = kSkinFraction * extent.maxRadius;
+        stats.pairTests += findPairs(params.broadPhase, world, ws.reachAtBuild, ws);
+        ws.positionsAtBuild = world.position;
+        ws.radiusSumAtBuild = extent.radiusSum;
+        ws.cached = true;
+    }
+    ws.visitOrder.clear();
+    for (const SpherePair& pair : ws.pairs) {
+        if (withinReach(world, pair, margin)) ws.visitOrder.push_back(pair);
+    }
+    stats.candidatePairs += ws.visitOrder.size();
+    reorder(ws.visitOrder, params.order, world.seed, world.stepCount);
 }
 
 bool touching(const World& world, const SpherePair& pair, SphereContact& contact) {
@@ -103,7 +151,7 @@ void respondToContact(World& world, std::uint32_t i, const Plane& plane, const P
 }
 
 void respondToAllContacts(World& world, const Params& params, StepStats& stats, bool firstPass) {
-    for (const SpherePair& pair : world.workspace.pairs) {
+    for (const SpherePair& pair : world.workspace.visitOrder) {
         SphereContact contact;
         if (touching(world, pair, contact)) respondToContact(world, pair, contact, params, stats, firstPass);
     }

@@ -13,7 +13,7 @@ namespace physics {
 namespace {
 
 void cancelPenetratingVelocity(World& world) {
-    for (const SpherePair& pair : world.workspace.pairs) {
+    for (const SpherePair& pair : world.workspace.visitOrder) {
         SphereContact contact;
         if (!touching(world, pair, contact)) continue;
         cancelApproachBetween(world.velocity[pair.i], world.velocity[pair.j], world.mass[pair.i],

@@ -28,7 +28,14 @@ struct SpherePair {
 
 // Scratch memory reused from step to step, so a step allocates nothing once warm.
 struct Workspace {
-    std::vector<SpherePair> pairs;          // candidate pairs of this solver step
+    std::vector<SpherePair> pairs;          // candidate pairs (i, j), in index order
+    std::vector<SpherePair> visitOrder;     // the same pairs, in the order the passes visit them
+    // The candidate pairs are kept while no sphere has moved far enough to meet a
+    // sphere outside them (a Verlet list): these say what they were built from.
+    std::vector<glm::dvec3> positionsAtBuild;  // m
+    double radiusSumAtBuild = -1.0;            // m, changes when spheres or radii change
+    double reachAtBuild = 0.0;                 // m, beyond touching
+    bool cached = false;                       // false: rebuild at the next solver step
     std::vector<std::uint32_t> cellOfSphere;
     std::vector<std::uint32_t> cellStart;   // counting-sort offsets, one per cell + 1
     std::vector<std::uint32_t> sphereByCell;
