@@ -37,11 +37,12 @@ void measure(int count, int passes, const char* broadPhase, int warmup, int time
     physics::World world = scenes::buildWorld(scene);
     for (int k = 0; k < warmup; ++k) physics::step(world, scene.params);
     const auto start = std::chrono::steady_clock::now();
-    for (int k = 0; k < timed; ++k) physics::step(world, scene.params);
+    physics::StepStats stats;
+    for (int k = 0; k < timed; ++k) stats += physics::step(world, scene.params);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const double solverSteps = double(timed) * scene.params.substeps;
-    std::printf("%-9s %8d %3d %12.3f %14.1f\n", broadPhase, count, passes, 1e3 * seconds / solverSteps,
-                1e9 * seconds / (solverSteps * count));
+    std::printf("%-9s %8d %3d %12.3f %14.1f %9.0f %%\n", broadPhase, count, passes, 1e3 * seconds / solverSteps,
+                1e9 * seconds / (solverSteps * count), 100.0 * double(stats.broadPhaseBuilds) / solverSteps);
     std::fflush(stdout);
 }
 
@@ -51,7 +52,7 @@ int main(int argc, char** argv) {
     const int maxCount = argc > 1 ? std::atoi(argv[1]) : 100000;
     const int passes = argc > 2 ? std::atoi(argv[2]) : 4;
     std::printf("pile (07_pile), one thread, h/substeps per solver step\n");
-    std::printf("%-9s %8s %3s %12s %14s\n", "broad", "N", "K", "ms/step", "ns/sphere-step");
+    std::printf("%-9s %8s %3s %12s %14s %10s\n", "broad", "N", "K", "ms/step", "ns/sphere-step", "rebuilds");
     for (int count : {1000, 10000, 100000}) {
         if (count > maxCount) break;
         measure(count, passes, "grid", 180, count >= 100000 ? 10 : 30);

@@ -61,6 +61,7 @@ void reorder(std::vector<SpherePair>& pairs, PairOrder order, std::uint64_t seed
 
 StepStats& StepStats::operator+=(const StepStats& o) {
     pairTests += o.pairTests;
+    broadPhaseBuilds += o.broadPhaseBuilds;
     candidatePairs += o.candidatePairs;
     sphereContacts += o.sphereContacts;
     wallContacts += o.wallContacts;
@@ -84,12 +85,14 @@ void findOrderedPairs(World& world, const Params& params, StepStats& stats) {
     if (params.broadPhase == BroadPhase::AllPairs) {  // the lecture's loop, every step
         ws.cached = false;
         stats.pairTests += findPairs(params.broadPhase, world, margin, ws);
+        ++stats.broadPhaseBuilds;
     } else if (!cachedPairsStillReach(world, extent, margin)) {
         ws.reachAtBuild = kSkinFraction * extent.maxRadius;
         stats.pairTests += findPairs(params.broadPhase, world, ws.reachAtBuild, ws);
         ws.positionsAtBuild = world.position;
         ws.radiusSumAtBuild = extent.radiusSum;
         ws.cached = true;
+        ++stats.broadPhaseBuilds;
     }
     ws.visitOrder.clear();
     for (const SpherePair& pair : ws.pairs) {

@@ -10,6 +10,7 @@ namespace physics {
 // What one step did, summed over its solver steps.
 struct StepStats {
     std::uint64_t pairTests = 0;       // distance tests made by the broad phase
+    std::uint64_t broadPhaseBuilds = 0;  // solver steps that rebuilt the candidate pairs
     std::uint64_t candidatePairs = 0;  // pairs within reach, handed to the passes
     std::uint64_t sphereContacts = 0;  // overlapping pairs found in the first pass
     std::uint64_t wallContacts = 0;    // sphere-plane contacts found in the first pass

@@ -132,7 +132,8 @@ std::vector<Parameter> makeTable() {
              param<&Params::epsilon>()),
         real("mu", "\u03bc  static-contact friction", "", 0.0, 1.0, kDefaults.mu,
              "Slide 13: friction v \u2190 \u03bc v on both spheres of a static contact. A damping "
-             "factor applied every solver step, not Coulomb's friction coefficient: 1 keeps the "
+             "factor applied each time a static contact is handled (once per pass), not Coulomb's "
+             "friction coefficient: 1 keeps the "
              "velocity, 0 stops it.",
              param<&Params::mu>()),
         real("h", "h  time step", "s", 1e-4, 0.1, kDefaults.timeStep,
