@@ -111,7 +111,9 @@ void readoutsBody(const Readouts& r, PanelActions& actions) {
     ImGui::Text("E~ %.6g J", d.modified);
     tooltip("E~ = sum m (-g.p + |v + h g/2|^2 / 2): the energy the time integration keeps exactly in free flight. "
             "Use it for bounce heights: the naive total wobbles by O(g v h).");
-    ImGui::Text("momentum (%.3g, %.3g, %.3g) kg m/s", d.momentum.x, d.momentum.y, d.momentum.z);
+    ImGui::Text("p (%.2g, %.2g, %.2g) kg m/s", d.momentum.x, d.momentum.y, d.momentum.z);
+    tooltip("Total momentum, sum m v. Gravity changes it; the walls too. Between spheres alone it is kept by the "
+            "momentum-conserving response for every alpha, beta, and by the lecture's only when beta = 1.");
     ImGui::Text("deepest penetration %.2f %% of r", 100.0 * d.maxPenetration);
     ImGui::Text("state hash %016llx", static_cast<unsigned long long>(d.hash));
     tooltip("Same scene, same seed, same parameters: same hash. Compare runs with it.");
@@ -178,7 +180,10 @@ void drawReadouts(const Readouts& readouts, PanelActions& actions) {
     const float margin = ImGui::GetFontSize() * 0.5f;
     ImGui::SetNextWindowPos(ImVec2(viewport->WorkPos.x + viewport->WorkSize.x - margin, viewport->WorkPos.y + margin),
                             ImGuiCond_Always, ImVec2(1.0f, 0.0f));
-    ImGui::SetNextWindowSize(ImVec2(ImGui::GetFontSize() * 18.0f, 0.0f), ImGuiCond_Always);
+    const float width = std::min(ImGui::GetFontSize() * 18.0f, viewport->WorkSize.x * 0.3f);
+    ImGui::SetNextWindowSize(ImVec2(width, 0.0f), ImGuiCond_Always);
+    // On a small window the readouts would hide the scene: they start folded there.
+    ImGui::SetNextWindowCollapsed(viewport->WorkSize.x < 1000.0f, ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowBgAlpha(0.82f);
     ImGui::Begin("Readouts", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize);
     readoutsBody(readouts, actions);
