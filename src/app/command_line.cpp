@@ -5,6 +5,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/capture_command.h"
 #include "app/scene_source.h"
 #include "app/simulate_command.h"
 #include "app/window_app.h"
@@ -26,6 +27,26 @@ void addSimulate(CLI::App& cli, SimulateOptions& o) {
     sim->add_option("--out", o.out, "Diagnostics file: .csv or .jsonl");
     sim->add_option("--state", o.state, "Final state of every sphere (id, p, v, r, m): .csv");
     sim->add_option("--save", o.save, "Save the final state and parameters as a scene .json");
+}
+
+void addCapture(CLI::App& cli, CaptureOptions& o) {
+    CLI::App* cap = cli.add_subcommand("capture", "Render frames of a scene to PNG files without a display (OSMesa or EGL)");
+    cap->add_option("--scene", o.scene, "Scene file or preset name (see `spheres presets`)")->required();
+    cap->add_option("--set", o.settings, "Override a parameter: name=value (repeatable)");
+    cap->add_option_function<int>("--frames", [&o](const int& n) { o.frames = n; },
+                                  "Run N frames of 1/60 s (frame 0 = the initial state) and write frames 0 .. N-1");
+    cap->add_option_function<int>("--every", [&o](const int& k) { o.every = k; },
+                                  "With --frames: write only frames 0, K, 2K, ... (default 1)");
+    cap->add_option_function<std::string>("--at", [&o](const std::string& list) { o.at = list; },
+                                          "Instead of --frames: write these frames, e.g. 0,30,120 (increasing)");
+    cap->add_option("--out", o.out, "Folder for frame_NNNNNN.png and manifest.json (created if missing)")->required();
+    cap->add_option("--size", o.size, "Image size WxH in pixels (16 to 8192 each)")->capture_default_str();
+    cap->add_option("--camera", o.camera,
+                    "azimuth,elevation[,distance] in degrees, degrees, m (default: the window's view of the box)");
+    cap->add_option("--color-by", o.colorBy, "Sphere colours: id, speed or contact")->capture_default_str();
+    cap->add_flag("--with-ui", o.withUi, "Draw the control panel and the readouts as the window does");
+    cap->add_option("--gl", o.gl, "Headless GL: osmesa, egl or auto (OSMesa first, then EGL)")->capture_default_str();
+    cap->add_option("--samples", o.samples, "Multisampling: samples per pixel, 0 to 16")->capture_default_str();
 }
 
 void addWindowOptions(CLI::App& cli, WindowAppOptions& o) {
@@ -59,6 +80,8 @@ int runCommandLine(int argc, char** argv) {
     addWindowOptions(cli, window);
     SimulateOptions simulate;
     addSimulate(cli, simulate);
+    CaptureOptions capture;
+    addCapture(cli, capture);
     CLI::App* presets = cli.add_subcommand("presets", "List the shipped scenes");
     try {
         cli.parse(argc, argv);
@@ -69,6 +92,7 @@ int runCommandLine(int argc, char** argv) {
     }
     try {
         if (cli.got_subcommand("simulate")) return runSimulate(simulate);
+        if (cli.got_subcommand("capture")) return runCapture(capture);
         if (presets->parsed()) return listPresets();
         return runWindowApp(window);
     } catch (const UsageError& e) {

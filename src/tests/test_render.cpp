@@ -3,6 +3,8 @@
 // checked by properties with tolerances, never exact pixels (Mesa versions differ).
 #include <glad/gl.h>
 #include <gtest/gtest.h>
+
+#include "shaded_colour.h"
 #include <imgui.h>
 
 #include <algorithm>
@@ -337,20 +339,6 @@ std::string backendName(const ::testing::TestParamInfo<platform::HeadlessBackend
 
 glm::u8vec4 pixelAt(const render::Image& image, const vec3& projected) {
     return image.pixel(static_cast<int>(projected.x), static_cast<int>(projected.y));
-}
-
-// The pixel is the colour under some lighting: a multiple k of it (shading),
-// with little of any other hue mixed in.
-void expectShadedVersionOf(glm::u8vec4 pixel, glm::u8vec4 colour) {
-    const glm::vec3 p(pixel.x, pixel.y, pixel.z);
-    const glm::vec3 c(colour.x, colour.y, colour.z);
-    const float k = glm::dot(p, c) / glm::dot(c, c);
-    EXPECT_GT(k, 0.45f) << "too dark";
-    EXPECT_LT(k, 1.35f) << "too bright";
-    const glm::vec3 residual = glm::abs(p - k * c);
-    EXPECT_LT(std::max({residual.x, residual.y, residual.z}), 45.0f)
-        << "pixel (" << p.x << ", " << p.y << ", " << p.z << ") vs colour (" << c.x << ", " << c.y
-        << ", " << c.z << ")";
 }
 
 render::Camera frontCamera(const vec3& target, float distance) {

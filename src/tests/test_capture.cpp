@@ -1,0 +1,412 @@
+// `spheres capture`: refused input (exit code 2 through the command line, nothing
+// written), then properties of captured frames that need no stored image, run
+// once per headless backend (OSMesa, EGL), and the manifest against a world
+// stepped the same way here.
+#include <gtest/gtest.h>
+
+#include "shaded_colour.h"
+#include <imgui.h>
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <glm/geometric.hpp>
+#include <string>
+#include <vector>
+
+#include "app/scene_source.h"
+#include "physics/diagnostics.h"
+#include "render/palette.h"
+#include "test_capture_support.h"
+
+namespace {
+
+using app::CaptureOptions;
+using app::UsageError;
+using capture_test::fs::exists;
+using platform::HeadlessBackend;
+
+// ---------------------------------------------------------------- refusals
+
+// A capture that would succeed, to be broken one option at a time.
+CaptureOptions validOptions(const std::string& out) {
+    CaptureOptions options =
+        capture_test::smallCapture("01_single_bounce", out, HeadlessBackend::Auto);
+    options.frames = 2;
+    return options;
+}
+
+// Runs the capture, expects a one-line UsageError containing `expected` and no
+// output folder; returns the message.
+std::string expectRefused(const CaptureOptions& options, const std::string& expected) {
+    std::string message;
+    try {
+        app::runCapture(options);
+        ADD_FAILURE() << "not refused; expected: " << expected;
+    } catch (const UsageError& e) {
+        message = e.what();
+    }
+    EXPECT_NE(message.find(expected), std::string::npos) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << "one line: " << message;
+    EXPECT_FALSE(exists(options.out)) << "nothing may be written: " << options.out;
+    return message;
+}
+
+TEST(CaptureRefusals, SizesOutsideSixteenTo8192PixelsOrMalformed) {
+    const std::string out = capture_test::freshFolder("refused_size");
+    for (const char* size : {"0x200", "320x0", "9000x200", "320x8193", "320", "axb", "320x200x3",
+                             "-320x200", "320x", ""}) {
+        CaptureOptions options = validOptions(out);
+        options.size = size;
+        expectRefused(options, "--size");
+    }
+}
+
+TEST(CaptureRefusals, MalformedCamera) {
+    const std::string out = capture_test::freshFolder("refused_camera");
+    for (const char* camera : {"10", "1,2,3,4", "a,b,c", "10,,3", "nan,10,3", "10,95", "10,-89,3",
+                               "10,20,0", "10,20,-1"}) {
+        CaptureOptions options = validOptions(out);
+        options.camera = camera;
+        expectRefused(options, "--camera");
+    }
+}
+
+TEST(CaptureRefusals, FramesMustBeEitherFramesWithEveryOrAnIncreasingAtList) {
+    const std::string out = capture_test::freshFolder("refused_frames");
+    CaptureOptions neither = validOptions(out);
+    neither.frames.reset();
+    expectRefused(neither, "--frames N");
+    CaptureOptions both = validOptions(out);
+    both.at = "0,10";
+    expectRefused(both, "not both");
+    CaptureOptions everyAlone = validOptions(out);
+    everyAlone.frames.reset();
+    everyAlone.every = 5;
+    expectRefused(everyAlone, "--every needs --frames");
+    CaptureOptions noFrames = validOptions(out);
+    noFrames.frames = 0;
+    expectRefused(noFrames, "--frames");
+    CaptureOptions everyZero = validOptions(out);
+    everyZero.every = 0;
+    expectRefused(everyZero, "--every");
+    for (const char* list : {"", "5,3", "3,3", "1,,2", "-1", "1000000", "4,x"}) {
+        CaptureOptions at = validOptions(out);
+        at.frames.reset();
+        at.at = list;
+        expectRefused(at, "--at");
+    }
+}
+
+TEST(CaptureRefusals, UnknownColouringGlBackendAndSamples) {
+    const std::string out = capture_test::freshFolder("refused_names");
+    CaptureOptions colour = validOptions(out);
+    colour.colorBy = "mass";
+    expectRefused(colour, "--color-by mass: expected id, speed or contact");
+    CaptureOptions gl = validOptions(out);
+    gl.gl = "glx";
+    expectRefused(gl, "--gl glx: expected osmesa, egl or auto");
+    CaptureOptions samples = validOptions(out);
+    samples.samples = 64;
+    expectRefused(samples, "--samples");
+}
+
+TEST(CaptureRefusals, OutThatIsAFileCannotBeCreatedOrTakesNoFiles) {
+    const std::string folder = capture_test::freshFolder("refused_out");
+    capture_test::fs::create_directories(folder);
+    const std::string file = folder + "/not_a_folder";
+    std::ofstream(file) << "keep me";
+    CaptureOptions onFile = validOptions(file);
+    try {
+        app::runCapture(onFile);
+        ADD_FAILURE() << "a file as --out was not refused";
+    } catch (const UsageError& e) {
+        EXPECT_NE(std::string(e.what()).find("is not a folder"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(capture_test::fs::file_size(file), 7u) << "the file is left alone";
+    expectRefused(validOptions(file + "/frames"), "cannot create the folder");
+    expectRefused(validOptions("/proc/spheres_capture_test/frames"), "cannot create the folder");
+    EXPECT_EQ(std::vector<capture_test::fs::path>(capture_test::fs::directory_iterator(folder), {})
+                  .size(),
+              1u);
+    // A folder that exists but takes no files (even for root): refused, and left in place.
+    try {
+        app::runCapture(validOptions("/proc"));
+        ADD_FAILURE() << "/proc as --out was not refused";
+    } catch (const UsageError& e) {
+        EXPECT_NE(std::string(e.what()).find("cannot write files"), std::string::npos) << e.what();
+    }
+    EXPECT_TRUE(capture_test::fs::is_directory("/proc"));
+}
+
+TEST(CaptureRefusals, BrokenSceneOrSettingIsRefusedBeforeWriting) {
+    const std::string out = capture_test::freshFolder("refused_scene");
+    CaptureOptions scene = validOptions(out);
+    scene.scene = "no_such_scene_anywhere";
+    EXPECT_ANY_THROW(app::runCapture(scene));
+    CaptureOptions setting = validOptions(out);
+    setting.settings = {"beta=7"};
+    EXPECT_THROW(app::runCapture(setting), UsageError);
+    EXPECT_FALSE(exists(out));
+}
+
+class CaptureBackendRefusal : public ::testing::TestWithParam<HeadlessBackend> {};
+
+TEST_P(CaptureBackendRefusal, UnavailableBackendSaysWhatWasTriedAndWhatToDo) {
+    if (capture_test::unavailableReason(GetParam()).empty()) {
+        GTEST_SKIP() << platform::toString(GetParam()) << " works here: nothing to refuse";
+    }
+    CaptureOptions options = validOptions(capture_test::freshFolder("refused_backend"));
+    options.gl = platform::toString(GetParam());
+    const std::string message = expectRefused(options, "tried " + options.gl);
+    EXPECT_NE(message.find("libosmesa6"), std::string::npos) << message;
+}
+
+INSTANTIATE_TEST_SUITE_P(Backends, CaptureBackendRefusal,
+                         ::testing::Values(HeadlessBackend::OSMesa, HeadlessBackend::EGL),
+                         capture_test::backendName);
+
+// The real executable: exit code 2, one line "spheres: ..." on stderr, nothing written.
+TEST(CaptureCommandLine, RefusedInputExitsWithCodeTwoAndOneLine) {
+    const std::string out = capture_test::freshFolder("cli_refused");
+    const std::string command = std::string("'") + SPHERES_EXECUTABLE +
+                                "' capture --scene pile --frames 3 --size 0x0 --out '" + out +
+                                "' 2>&1";
+    FILE* pipe = popen(command.c_str(), "r");
+    ASSERT_NE(pipe, nullptr);
+    std::string output;
+    char buffer[256];
+    while (std::fgets(buffer, sizeof buffer, pipe)) output += buffer;
+    const int status = pclose(pipe);
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 2);
+    EXPECT_EQ(output.rfind("spheres: --size 0x0:", 0), 0u) << output;
+    EXPECT_EQ(std::count(output.begin(), output.end(), '\n'), 1) << output;
+    EXPECT_FALSE(exists(out));
+}
+
+// ---------------------------------------------------------------- frames, per backend
+
+class CaptureImages : public ::testing::TestWithParam<HeadlessBackend> {
+  protected:
+    void SetUp() override {
+        if (const std::string why = capture_test::unavailableReason(GetParam()); !why.empty()) {
+            GTEST_SKIP() << platform::toString(GetParam()) << " is not available here: " << why;
+        }
+    }
+
+    // Captures `scene` into a fresh folder named after the test and the backend.
+    std::string capture(CaptureOptions options, const std::string& name) {
+        options.out = capture_test::freshFolder(name + "_" + platform::toString(GetParam()));
+        options.gl = platform::toString(GetParam());
+        EXPECT_EQ(app::runCapture(options), 0);
+        return options.out;
+    }
+
+    CaptureOptions small(const std::string& scene) const {
+        return capture_test::smallCapture(scene, "", GetParam());
+    }
+};
+
+glm::u8vec4 pixelAt(const render::Image& image, const glm::vec3& projected) {
+    return image.pixel(static_cast<int>(projected.x), static_cast<int>(projected.y));
+}
+
+glm::vec2 sizeOf(const render::Image& image) { return {float(image.width), float(image.height)}; }
+
+TEST_P(CaptureImages, FallingSphereCentreLandsOnAPixelOfItsColour) {
+    CaptureOptions options = small("01_single_bounce");
+    options.at = "0,20,40";
+    options.colorBy = "id";
+    const std::string out = capture(options, "sphere_centre");
+    const nlohmann::json manifest = capture_test::readManifest(out);
+    const render::Camera camera = capture_test::cameraOf(manifest);
+    const scenes::Scene scene = capture_test::presetScene("01_single_bounce");
+    for (int frame : {0, 20, 40}) {
+        const physics::World world = capture_test::worldAtFrame(scene, frame);
+        const render::Image image = capture_test::readFrame(out, frame);
+        const glm::vec3 centre = camera.project(glm::vec3(world.position[0]), sizeOf(image));
+        expectShadedVersionOf(pixelAt(image, centre), render::idColor(0));
+        // Two radii above the centre is no longer the sphere.
+        const glm::vec3 above = camera.project(
+            glm::vec3(world.position[0]) + glm::vec3(0, 0, 2 * world.radius[0]), sizeOf(image));
+        EXPECT_GT(capture_test::channelSpread(pixelAt(image, above), pixelAt(image, centre)), 30)
+            << frame;
+    }
+}
+
+TEST_P(CaptureImages, CameraOptionSetsTheAnglesAndTheDistance) {
+    CaptureOptions options = small("01_single_bounce");
+    options.at = "0";
+    options.colorBy = "id";
+    options.camera = "-90,0,4";
+    const std::string out = capture(options, "camera_option");
+    const nlohmann::json camera = capture_test::readManifest(out).at("camera");
+    EXPECT_NEAR(camera.at("azimuth_deg").get<double>(), -90.0, 1e-4);
+    EXPECT_NEAR(camera.at("elevation_deg").get<double>(), 0.0, 1e-4);
+    EXPECT_NEAR(camera.at("distance_m").get<double>(), 4.0, 1e-6);
+    // Looking along +y from the front at the box's mid-height: the sphere at
+    // (0, 0, 1.5) is on the vertical centre line, above the middle.
+    const render::Image image = capture_test::readFrame(out, 0);
+    const glm::vec3 centre = capture_test::cameraOf(capture_test::readManifest(out))
+                                 .project({0.0f, 0.0f, 1.5f}, sizeOf(image));
+    EXPECT_NEAR(centre.x, 160.0f, 0.5f);
+    EXPECT_LT(centre.y, 100.0f);
+    expectShadedVersionOf(pixelAt(image, centre), render::idColor(0));
+}
+
+TEST_P(CaptureImages, FloorIsDrawnBelowTheSpheresAndHiddenByThem) {
+    CaptureOptions options = small("05_column");
+    options.at = "0";
+    options.colorBy = "id";
+    const std::string out = capture(options, "floor");
+    const render::Camera camera = capture_test::cameraOf(capture_test::readManifest(out));
+    const render::Image image = capture_test::readFrame(out, 0);
+    const glm::vec2 size = sizeOf(image);
+    // The bottom sphere (r = 0.0625 m on the floor) shows its own colour through the floor.
+    const glm::vec3 bottom = camera.project({0.0f, 0.0f, 0.0625f}, size);
+    expectShadedVersionOf(pixelAt(image, bottom), render::idColor(0));
+    // A floor point in front of the column, between grid lines: below the sphere
+    // on screen, light and grey (the floor), not the background's blue-grey.
+    const glm::vec3 floor = camera.project({0.15f, -0.25f, 0.0f}, size);
+    EXPECT_GT(floor.y, bottom.y + 5.0f);
+    const glm::u8vec4 floorPixel = pixelAt(image, floor);
+    EXPECT_GT(capture_test::luminance(floorPixel), 200.0f);
+    EXPECT_LT(capture_test::channelSpread(floorPixel, glm::u8vec4(floorPixel.x)), 20);
+    // Outside the box, at the same height on screen, the background is darker.
+    const glm::u8vec4 background = image.pixel(2, static_cast<int>(floor.y));
+    EXPECT_GT(capture_test::luminance(floorPixel), capture_test::luminance(background) + 40.0f);
+}
+
+int differingPixels(const render::Image& a, const render::Image& b) {
+    int count = 0;
+    for (int y = 0; y < a.height; ++y) {
+        for (int x = 0; x < a.width; ++x) count += a.pixel(x, y) != b.pixel(x, y) ? 1 : 0;
+    }
+    return count;
+}
+
+TEST_P(CaptureImages, FramesChangeWhileTheBallFallsAndNotWhenNothingMoves) {
+    CaptureOptions falling = small("01_single_bounce");
+    falling.frames = 21;
+    falling.every = 10;
+    const std::string out = capture(falling, "moving");
+    const render::Image f0 = capture_test::readFrame(out, 0);
+    const render::Image f10 = capture_test::readFrame(out, 10);
+    const render::Image f20 = capture_test::readFrame(out, 20);
+    EXPECT_GT(differingPixels(f0, f10), 50);
+    EXPECT_GT(differingPixels(f10, f20), 50);
+    EXPECT_FALSE(
+        capture_test::fs::exists(capture_test::fs::path(out) / capture_test::frameName(5)));
+
+    // No gravity, nothing moving: the solver steps, the picture stays.
+    CaptureOptions still = small("01_single_bounce");
+    still.settings = {"gravity=0"};
+    still.at = "0,30";
+    const std::string stillOut = capture(still, "still");
+    EXPECT_EQ(capture_test::readFrame(stillOut, 0).rgba,
+              capture_test::readFrame(stillOut, 30).rgba);
+    const nlohmann::json frames = capture_test::readManifest(stillOut).at("frames");
+    EXPECT_GT(frames[1].at("steps").get<int>(), 0) << "the simulation did advance";
+}
+
+TEST_P(CaptureImages, WithUiThePanelFillsTheLeftOfTheFrame) {
+    CaptureOptions options = small("01_single_bounce");
+    options.size = "640x400";
+    options.at = "0";
+    options.withUi = true;
+    const std::string out = capture(options, "with_ui");
+    const nlohmann::json manifest = capture_test::readManifest(out);
+    const int panel = manifest.at("viewport")[0].get<int>();
+    EXPECT_GT(panel, 200);  // min(25 font sizes, 45 %) of 640 px at 17 px
+    EXPECT_LE(panel, 288);
+    // The panel's background: ImGui's dark WindowBg over the window's clear colour.
+    ImGuiStyle style;
+    ImGui::StyleColorsDark(&style);
+    const ImVec4 bg = style.Colors[ImGuiCol_WindowBg];
+    const glm::vec3 clear(0.09f, 0.10f, 0.12f);
+    const glm::vec3 expected = glm::vec3(bg.x, bg.y, bg.z) * bg.w + clear * (1.0f - bg.w);
+    const glm::u8vec4 panelColour(glm::vec4(expected * 255.0f + 0.5f, 255.0f));
+    const render::Image image = capture_test::readFrame(out, 0);
+    int inPanel = 0, inScene = 0;
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) {
+            const bool match = capture_test::channelSpread(image.pixel(x, y), panelColour) <= 3;
+            (x < panel ? inPanel : inScene) += match ? 1 : 0;
+            ASSERT_EQ(image.pixel(x, y).w, 255) << "opaque at " << x << ", " << y;
+        }
+    }
+    EXPECT_GT(inPanel, panel * image.height / 3) << "a third of the panel is its plain background";
+    EXPECT_LT(inScene, (image.width - panel) * image.height / 100);
+}
+
+TEST_P(CaptureImages, ManifestHashesEqualAWorldSteppedTheSameWay) {
+    const std::vector<std::string> settings = {"beta=0.5", "substeps=3"};
+    CaptureOptions options = small("03_head_on_unequal");
+    options.settings = settings;
+    options.frames = 61;
+    options.every = 20;
+    const std::string out = capture(options, "manifest");
+    const nlohmann::json manifest = capture_test::readManifest(out);
+    const scenes::Scene scene = capture_test::presetScene("03_head_on_unequal", settings);
+    EXPECT_EQ(manifest.at("title"), scene.title);
+    EXPECT_EQ(manifest.at("gl").at("backend"), platform::toString(GetParam()));
+    EXPECT_EQ(manifest.at("size"), nlohmann::json({320, 200}));
+    for (const scenes::Parameter& p : scenes::parameterTable()) {
+        EXPECT_TRUE(manifest.at("parameters").contains(std::string(p.name))) << p.name;
+    }
+    EXPECT_EQ(manifest.at("parameters").at("beta").get<double>(), 0.5);
+    const nlohmann::json& frames = manifest.at("frames");
+    ASSERT_EQ(frames.size(), 4u);
+    for (std::size_t k = 0; k < frames.size(); ++k) {
+        const int index = static_cast<int>(20 * k);
+        const physics::World world = capture_test::worldAtFrame(scene, index);
+        char hash[17];
+        std::snprintf(hash, sizeof hash, "%016llx",
+                      static_cast<unsigned long long>(physics::stateHash(world)));
+        EXPECT_EQ(frames[k].at("index").get<int>(), index);
+        EXPECT_EQ(frames[k].at("hash").get<std::string>(), hash) << "frame " << index;
+        EXPECT_EQ(frames[k].at("steps").get<std::uint64_t>(), world.stepCount);
+        EXPECT_DOUBLE_EQ(frames[k].at("time_s").get<double>(), world.time);
+        EXPECT_EQ(frames[k].at("file").get<std::string>(), capture_test::frameName(index));
+        EXPECT_TRUE(
+            capture_test::fs::exists(capture_test::fs::path(out) / capture_test::frameName(index)));
+    }
+    EXPECT_NE(frames[0].at("hash"), frames[3].at("hash"));
+}
+
+TEST_P(CaptureImages, SameInputsGiveByteIdenticalFiles) {
+    CaptureOptions options = small("04_newtons_cradle");
+    options.size = "480x300";
+    options.withUi = true;
+    options.samples = 4;
+    options.at = "0,25";
+    const std::string first = capture(options, "identical_a");
+    const std::string second = capture(options, "identical_b");
+    for (const char* name : {"frame_000000.png", "frame_000025.png", "manifest.json"}) {
+        std::ifstream a(capture_test::fs::path(first) / name, std::ios::binary);
+        std::ifstream b(capture_test::fs::path(second) / name, std::ios::binary);
+        const std::string bytesA((std::istreambuf_iterator<char>(a)), {});
+        const std::string bytesB((std::istreambuf_iterator<char>(b)), {});
+        EXPECT_FALSE(bytesA.empty()) << name;
+        EXPECT_TRUE(bytesA == bytesB) << name << " differs between two equal runs";
+    }
+}
+
+TEST_P(CaptureImages, AFrameDoesNotDependOnWhichOtherFramesAreWritten) {
+    CaptureOptions every = small("04_newtons_cradle");
+    every.size = "480x300";
+    every.withUi = true;
+    every.frames = 21;
+    CaptureOptions one = every;
+    one.frames.reset();
+    one.at = "20";
+    const std::string all = capture(every, "every_frame");
+    const std::string single = capture(one, "single_frame");
+    EXPECT_EQ(capture_test::readFrame(all, 20).rgba, capture_test::readFrame(single, 20).rgba);
+}
+
+INSTANTIATE_TEST_SUITE_P(Backends, CaptureImages,
+                         ::testing::Values(HeadlessBackend::OSMesa, HeadlessBackend::EGL),
+                         capture_test::backendName);
+
+}  // namespace
