@@ -27,8 +27,6 @@
 namespace app {
 namespace {
 
-constexpr float kBaseFontPx = 17.0f;  // at UI scale 1 on a normal screen
-
 class WindowApp {
 public:
     WindowApp(std::unique_ptr<platform::Window> window, scenes::Scene scene, const WindowAppOptions& options);
@@ -61,6 +59,7 @@ private:
     std::vector<std::string> presets_;
     double fps_ = 0.0, renderMs_ = 0.0;
     bool screenshotRequested_ = false;
+    bool cameraFitted_ = false;  // fitted in the first frame, once the panel's width is known
 };
 
 WindowApp::WindowApp(std::unique_ptr<platform::Window> window, scenes::Scene scene, const WindowAppOptions& options)
@@ -77,12 +76,10 @@ WindowApp::WindowApp(std::unique_ptr<platform::Window> window, scenes::Scene sce
     glfwSetScrollCallback(handle, onScroll);
     ImGui::CreateContext();
     ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini left in the working directory
-    ImGui::StyleColorsDark();
     ImGui_ImplGlfw_InitForOpenGL(handle, true);
     imguiRenderer_.init();
     panel_.uiScale = std::max(1.0f, window_->contentScale().x);
     rebuildFont();
-    resetCamera();
 }
 
 WindowApp::~WindowApp() {
@@ -93,13 +90,7 @@ WindowApp::~WindowApp() {
 }
 
 void WindowApp::rebuildFont() {
-    ui::loadUiFont(kBaseFontPx * panel_.uiScale);
-    ImGuiStyle style;
-    ImGui::StyleColorsDark(&style);
-    style.WindowRounding = 0.0f;
-    style.FrameRounding = 3.0f;
-    style.ScaleAllSizes(panel_.uiScale);
-    ImGui::GetStyle() = style;
+    ui::applyStyle(panel_.uiScale);
     imguiRenderer_.invalidateFontTexture();
 }
 
@@ -211,7 +202,7 @@ void WindowApp::drawScene() {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     const glm::ivec2 size = window_->framebufferSize();
     glViewport(0, 0, size.x, size.y);
-    glClearColor(0.09f, 0.10f, 0.12f, 1.0f);  // behind the panel
+    glClearColor(ui::kBackdropColor[0], ui::kBackdropColor[1], ui::kBackdropColor[2], 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
     renderer_.draw(snapshot_, camera_, view.x, view.y, view.z, view.w);
     renderMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -222,6 +213,8 @@ void WindowApp::frame(double dt) {
     imguiRenderer_.newFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
+    if (!cameraFitted_) resetCamera();
+    cameraFitted_ = true;
     handleMouse();
     simulation_.advance(dt);
     drawScene();

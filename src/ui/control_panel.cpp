@@ -99,7 +99,11 @@ void sceneSection(scenes::Scene& scene, PanelState& state, const std::vector<std
 
 void readoutsBody(const Readouts& r, PanelActions& actions) {
     const physics::Diagnostics& d = r.diagnostics;
-    ImGui::Text("%.0f FPS   draw %.1f ms   step %.2f ms", r.fps, r.renderMs, r.stepMs);
+    if (r.fps > 0.0) {
+        ImGui::Text("%.0f FPS   draw %.1f ms   step %.2f ms", r.fps, r.renderMs, r.stepMs);
+    } else {
+        ImGui::TextDisabled("FPS and timings: not measured here");  // capture: equal runs, equal images
+    }
     ImGui::Text("contacts %llu sphere + %llu wall", static_cast<unsigned long long>(d.sphereContacts),
                 static_cast<unsigned long long>(d.wallContacts));
     ImGui::Text("last step: %llu bounces, %llu static", static_cast<unsigned long long>(r.stats.collisions),

@@ -27,7 +27,7 @@ struct PanelState {
 
 // What the app shows in the readouts; plain numbers, filled each frame.
 struct Readouts {
-    double fps = 0.0;
+    double fps = 0.0;       // 0: timings are not shown (capture mode, for reproducible images)
     double renderMs = 0.0;  // ms to draw the scene, CPU side
     double stepMs = 0.0;    // ms of wall time for the last step
     bool paused = false;

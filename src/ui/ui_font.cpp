@@ -28,4 +28,14 @@ ImFont* loadUiFont(float pixelSize) {
     return io.Fonts->AddFontFromMemoryTTF(data, size, pixelSize, &config, ranges);
 }
 
+void applyStyle(float uiScale) {
+    loadUiFont(kBaseFontPixels * uiScale);
+    ImGuiStyle style;
+    ImGui::StyleColorsDark(&style);
+    style.WindowRounding = 0.0f;
+    style.FrameRounding = 3.0f;
+    style.ScaleAllSizes(uiScale);
+    ImGui::GetStyle() = style;
+}
+
 }  // namespace ui
