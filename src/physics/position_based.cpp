@@ -10,22 +10,22 @@ namespace physics {
 namespace {
 
 void particlesVelocityAndPosition(World& world, const Params& params, StepStats& stats,
-                                  bool firstPass) {
+                                  int pass) {
     for (const SpherePair& pair : world.workspace.visitOrder) {
         SphereContact contact;
         if (!touching(world, pair, contact)) continue;
-        respondToContact(world, pair, contact, params, stats, firstPass);
+        respondToContact(world, pair, contact, params, stats, pass);
         separateSpheres(world.position[pair.i], world.position[pair.j], world.mass[pair.i],
                         world.mass[pair.j], contact.u, contact.depth, params.split);
     }
 }
 
 void wallsVelocityAndPosition(World& world, const Params& params, StepStats& stats,
-                              bool firstPass) {
+                              int pass) {
     for (std::uint32_t i = 0; i < world.size(); ++i) {
         for (const Plane& plane : world.planes) {
             if (!touching(world, i, plane)) continue;
-            respondToContact(world, i, plane, params, stats, firstPass);
+            respondToContact(world, i, plane, params, stats, pass);
             projectOnPlane(world.position[i], world.radius[i], plane);
         }
     }
@@ -39,8 +39,8 @@ StepStats stepPositionBased(World& world, const Params& params, double h) {
     integratePosition(world, h);
     findOrderedPairs(world, params, stats);
     for (int pass = 0; pass < params.passes; ++pass) {
-        particlesVelocityAndPosition(world, params, stats, pass == 0);  // B
-        wallsVelocityAndPosition(world, params, stats, pass == 0);      // C
+        particlesVelocityAndPosition(world, params, stats, pass);  // B
+        wallsVelocityAndPosition(world, params, stats, pass);      // C
     }
     return stats;
 }

@@ -15,7 +15,7 @@ StepStats stepResponseOnly(World& world, const Params& params, double h) {
     integratePosition(world, h);
     findOrderedPairs(world, params, stats);
     for (int pass = 0; pass < params.passes; ++pass) {
-        respondToAllContacts(world, params, stats, pass == 0);  // B
+        respondToAllContacts(world, params, stats, pass);  // B
     }
     return stats;
 }

@@ -27,13 +27,14 @@ bool touching(const World& world, const SpherePair& pair, SphereContact& contact
 bool touching(const World& world, std::uint32_t i, const Plane& plane);
 
 // The velocity response to one contact (collision_response.h), recorded in the
-// spheres' contact state and counted in the stats (contacts on the first pass only).
+// spheres' contact state, counted in the stats (contacts on pass 0 only) and, when
+// world.recordContacts is on, logged as a ContactEvent.
 void respondToContact(World& world, const SpherePair& pair, const SphereContact& contact,
-                      const Params& params, StepStats& stats, bool firstPass);
+                      const Params& params, StepStats& stats, int pass);
 void respondToContact(World& world, std::uint32_t i, const Plane& plane, const Params& params,
-                      StepStats& stats, bool firstPass);
+                      StepStats& stats, int pass);
 
 // Velocity response to every touching pair (in pass order), then every wall contact.
-void respondToAllContacts(World& world, const Params& params, StepStats& stats, bool firstPass);
+void respondToAllContacts(World& world, const Params& params, StepStats& stats, int pass);
 
 }  // namespace physics

@@ -135,32 +135,54 @@ void count(StepStats& stats, Response response) {
 }  // namespace
 
 void respondToContact(World& world, const SpherePair& pair, const SphereContact& contact,
-                      const Params& params, StepStats& stats, bool firstPass) {
+                      const Params& params, StepStats& stats, int pass) {
+    ContactEvent event;
+    if (world.recordContacts) {
+        event = {pair.i, static_cast<std::int32_t>(pair.j), pass, false, contact.u,
+                 world.position[pair.i] - world.radius[pair.i] * contact.u, contact.depth,
+                 {world.velocity[pair.i], world.velocity[pair.j]}, {},
+                 {world.mass[pair.i], world.mass[pair.j]}};
+    }
     const Response response = respondToSphere(world.velocity[pair.i], world.velocity[pair.j],
                                               world.mass[pair.i], world.mass[pair.j], contact.u,
                                               params);
     record(world, pair.i, response);
     record(world, pair.j, response);
     count(stats, response);
-    stats.sphereContacts += firstPass;
+    stats.sphereContacts += pass == 0;
+    if (world.recordContacts && response != Response::None) {
+        event.bounce = response == Response::Bounce;
+        event.velocityAfter[0] = world.velocity[pair.i];
+        event.velocityAfter[1] = world.velocity[pair.j];
+        world.contacts.push_back(event);
+    }
 }
 
 void respondToContact(World& world, std::uint32_t i, const Plane& plane, const Params& params,
-                      StepStats& stats, bool firstPass) {
+                      StepStats& stats, int pass) {
+    const glm::dvec3 before = world.velocity[i];
     const Response response = respondToPlane(world.velocity[i], plane.normal, params);
     record(world, i, response);
     count(stats, response);
-    stats.wallContacts += firstPass;
+    stats.wallContacts += pass == 0;
+    if (world.recordContacts && response != Response::None) {
+        const auto planeIndex = static_cast<std::int32_t>(&plane - world.planes.data());
+        const double distance = glm::dot(world.position[i] - plane.point, plane.normal);  // m
+        world.contacts.push_back({i, -1 - planeIndex, pass, response == Response::Bounce, plane.normal,
+                                  world.position[i] - distance * plane.normal, world.radius[i] - distance,
+                                  {before, glm::dvec3(0.0)}, {world.velocity[i], glm::dvec3(0.0)},
+                                  {world.mass[i], 0.0}});
+    }
 }
 
-void respondToAllContacts(World& world, const Params& params, StepStats& stats, bool firstPass) {
+void respondToAllContacts(World& world, const Params& params, StepStats& stats, int pass) {
     for (const SpherePair& pair : world.workspace.visitOrder) {
         SphereContact contact;
-        if (touching(world, pair, contact)) respondToContact(world, pair, contact, params, stats, firstPass);
+        if (touching(world, pair, contact)) respondToContact(world, pair, contact, params, stats, pass);
     }
     for (std::uint32_t i = 0; i < world.size(); ++i) {
         for (const Plane& plane : world.planes) {
-            if (touching(world, i, plane)) respondToContact(world, i, plane, params, stats, firstPass);
+            if (touching(world, i, plane)) respondToContact(world, i, plane, params, stats, pass);
         }
     }
 }
@@ -180,6 +202,7 @@ StepStats solverStep(World& world, const Params& params, double h) {
 
 StepStats step(World& world, const Params& params) {
     StepStats stats;
+    world.contacts.clear();
     const double h = params.solverStep();
     for (int s = 0; s < params.substeps; ++s) {
         std::fill(world.contactState.begin(), world.contactState.end(), ContactState::Free);

@@ -33,7 +33,7 @@ StepStats stepVelocityBased(World& world, const Params& params, double h) {
     integrateVelocity(world, params.gravity, h);  // A
     findOrderedPairs(world, params, stats);
     for (int pass = 0; pass < params.passes; ++pass) {
-        respondToAllContacts(world, params, stats, pass == 0);  // B
+        respondToAllContacts(world, params, stats, pass);  // B
     }
     cancelPenetratingVelocity(world);  // C
     integratePosition(world, h);  // D

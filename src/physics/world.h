@@ -22,6 +22,23 @@ enum class ContactState : std::uint8_t {
     Static,     // static contact: relative normal speed at or below epsilon (slide 13)
 };
 
+// One velocity response, as the slides compute it, for overlays and "explain this
+// contact". Recorded only while World::recordContacts is on.
+struct ContactEvent {
+    std::uint32_t i = 0;         // the sphere
+    std::int32_t other = -1;     // the other sphere's index, or -1 - (plane index) for a plane
+    int pass = 0;                // which of the K passes
+    bool bounce = false;         // true: relative normal speed above epsilon; false: static contact
+    glm::dvec3 normal{0.0};      // unit: u (from the other sphere to i) or the plane's n
+    glm::dvec3 point{0.0};       // m, on i's surface towards the other
+    double depth = 0.0;          // m, penetration when detected
+    glm::dvec3 velocityBefore[2]{};  // m/s, of i and of the other sphere (zero for a plane)
+    glm::dvec3 velocityAfter[2]{};   // m/s
+    double massOf[2]{0.0, 0.0};      // kg (0 for a plane)
+    bool isPlane() const { return other < 0; }
+    glm::dvec3 impulse() const { return massOf[0] * (velocityAfter[0] - velocityBefore[0]); }  // kg m/s on i
+};
+
 struct SpherePair {
     std::uint32_t i, j;  // i < j
 };
@@ -55,6 +72,9 @@ struct World {
     double time = 0.0;                 // s, simulated
     std::uint64_t stepCount = 0;       // solver steps taken
     std::uint64_t seed = 1;            // drives the shuffled pair order
+
+    bool recordContacts = false;        // fill `contacts` (costs time: off unless shown)
+    std::vector<ContactEvent> contacts;  // every response of the last step(), all substeps
 
     Workspace workspace;
 

@@ -170,3 +170,42 @@ TEST(ContactChecks, SameSceneAndSeedGiveTheSameStateHash) {
         EXPECT_NE(physics::stateHash(a), physics::stateHash(c));  // the shuffle follows the seed
     }
 }
+
+TEST(ContactChecks, RecordedContactsCarryTheSlidesNumbers) {
+    physics::Params params = fixtures::exactParams(1.0 / 240.0, dvec3(0.0));
+    physics::World world;
+    fixtures::addBox(world, {4, 4, 4});
+    world.addSphere({-0.25, 0, 1}, {1.5, 0, 0}, 0.1, 1.0);
+    world.addSphere({0.25, 0, 1}, {-0.5, 0, 0}, 0.1, 3.0);
+    world.recordContacts = true;
+    std::vector<physics::ContactEvent> events;
+    for (int k = 0; k < 120 && events.empty(); ++k) {
+        physics::step(world, params);
+        events = world.contacts;
+    }
+    ASSERT_EQ(events.size(), 1u);  // one bounce, handled in the first pass
+    const physics::ContactEvent& e = events[0];
+    EXPECT_EQ(e.i, 0u);
+    EXPECT_EQ(e.other, 1);
+    EXPECT_TRUE(e.bounce);
+    EXPECT_NEAR(e.normal.x, -1.0, 1e-12);  // u points from sphere 1 to sphere 0
+    // Elastic, masses 1 and 3: sphere 0 leaves at ((1-3) 1.5 + 2 * 3 * (-0.5)) / 4 = -1.5 m/s.
+    EXPECT_NEAR(e.velocityAfter[0].x, -1.5, 1e-12);
+    EXPECT_NEAR(e.impulse().x, -3.0, 1e-12);  // m (v after - v before) = 1 * (-1.5 - 1.5)
+    EXPECT_NEAR(e.massOf[1] * (e.velocityAfter[1].x - e.velocityBefore[1].x), 3.0, 1e-12);
+
+    // A sphere falling on the floor: the event names plane 0 and its normal.
+    physics::World drop;
+    fixtures::addBox(drop, {2, 2, 2});
+    drop.addSphere({0, 0, 0.105}, {0, 0, -1}, 0.1, 2.0);
+    drop.recordContacts = true;
+    physics::step(drop, fixtures::exactParams(1.0 / 60.0));
+    ASSERT_EQ(drop.contacts.size(), 1u);
+    EXPECT_EQ(drop.contacts[0].other, -1);  // -1 - plane 0
+    EXPECT_TRUE(drop.contacts[0].isPlane());
+    EXPECT_EQ(drop.contacts[0].normal.z, 1.0);
+    EXPECT_GT(drop.contacts[0].impulse().z, 0.0);
+    drop.recordContacts = false;
+    physics::step(drop, fixtures::exactParams(1.0 / 60.0));
+    EXPECT_TRUE(drop.contacts.empty());
+}
