@@ -454,7 +454,9 @@ render::Image Capturer::drawFrame() {
     target_.bind();
     glClearColor(ui::kBackdropColor[0], ui::kBackdropColor[1], ui::kBackdropColor[2], 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    buildSnapshot(simulation_, plan_.colorBy, snapshot_);
+    ui::PanelState view;  // the panel's view options, as the window's defaults but the colouring
+    view.colorBy = static_cast<int>(plan_.colorBy);
+    buildSnapshot(simulation_, view, snapshot_);
     renderer_.draw(snapshot_, camera_, view_.x, view_.y, view_.z, view_.w);
     if (ui_) {
         ui_->layout(simulation_);

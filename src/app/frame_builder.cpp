@@ -8,9 +8,9 @@
 
 namespace app {
 
-void buildSnapshot(const Simulation& simulation, render::ColorBy colorBy, render::FrameSnapshot& snapshot) {
+void buildSnapshot(const Simulation& simulation, const ui::PanelState& view, render::FrameSnapshot& snapshot) {
     snapshot.clear();
-    render::snapshotSpheres(simulation.world(), colorBy, snapshot);
+    render::snapshotSpheres(simulation.world(), static_cast<render::ColorBy>(view.colorBy), snapshot);
     render::snapshotPlanes(simulation.world(), snapshot);
 }
 

@@ -8,7 +8,8 @@
 
 namespace app {
 
-void buildSnapshot(const Simulation& simulation, render::ColorBy colorBy, render::FrameSnapshot& snapshot);
+// What the view options of the panel (colouring, overlays) ask to draw.
+void buildSnapshot(const Simulation& simulation, const ui::PanelState& view, render::FrameSnapshot& snapshot);
 
 ui::Readouts makeReadouts(const Simulation& simulation, double fps, double renderMs);
 

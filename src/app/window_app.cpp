@@ -195,7 +195,7 @@ void WindowApp::apply(const ui::PanelActions& a) {
 void WindowApp::drawScene() {
     const glm::ivec4 view = sceneViewport();
     const auto start = std::chrono::steady_clock::now();
-    buildSnapshot(simulation_, static_cast<render::ColorBy>(panel_.colorBy), snapshot_);
+    buildSnapshot(simulation_, panel_, snapshot_);
     renderer_.style.showBox = panel_.showBox;
     renderer_.style.showGrid = panel_.showGrid;
     renderer_.style.lineScale = window_->contentScale().x;
