@@ -40,7 +40,8 @@ void addSphereContacts(const World& world, Diagnostics& d) {
 void addWallContacts(const World& world, Diagnostics& d) {
     for (std::size_t i = 0; i < world.size(); ++i) {
         for (const Plane& plane : world.planes) {
-            const double depth = world.radius[i] - glm::dot(world.position[i] - plane.point, plane.normal);
+            const Plane face = faceFor(plane, world.position[i]);
+            const double depth = world.radius[i] - glm::dot(world.position[i] - face.point, face.normal);
             if (depth < 0.0) continue;
             ++d.wallContacts;
             d.maxPenetration = std::max(d.maxPenetration, depth / world.radius[i]);

@@ -23,10 +23,11 @@ void particlesVelocityAndPosition(World& world, const Params& params, StepStats&
 void wallsVelocityAndPosition(World& world, const Params& params, StepStats& stats,
                               int pass) {
     for (std::uint32_t i = 0; i < world.size(); ++i) {
-        for (const Plane& plane : world.planes) {
-            if (!touching(world, i, plane)) continue;
-            respondToContact(world, i, plane, params, stats, pass);
-            projectOnPlane(world.position[i], world.radius[i], plane);
+        for (std::size_t k = 0; k < world.planes.size(); ++k) {
+            const Plane face = faceFor(world.planes[k], world.position[i]);
+            if (!touching(world, i, face)) continue;
+            respondToContact(world, i, k, face, params, stats, pass);
+            projectOnPlane(world.position[i], world.radius[i], face);
         }
     }
 }

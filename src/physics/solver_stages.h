@@ -31,8 +31,9 @@ bool touching(const World& world, std::uint32_t i, const Plane& plane);
 // world.recordContacts is on, logged as a ContactEvent.
 void respondToContact(World& world, const SpherePair& pair, const SphereContact& contact,
                       const Params& params, StepStats& stats, int pass);
-void respondToContact(World& world, std::uint32_t i, const Plane& plane, const Params& params,
-                      StepStats& stats, int pass);
+// `face` is faceFor(world.planes[planeIndex], the sphere's centre).
+void respondToContact(World& world, std::uint32_t i, std::size_t planeIndex, const Plane& face,
+                      const Params& params, StepStats& stats, int pass);
 
 // Velocity response to every touching pair (in pass order), then every wall contact.
 void respondToAllContacts(World& world, const Params& params, StepStats& stats, int pass);

@@ -158,18 +158,18 @@ void respondToContact(World& world, const SpherePair& pair, const SphereContact&
     }
 }
 
-void respondToContact(World& world, std::uint32_t i, const Plane& plane, const Params& params,
-                      StepStats& stats, int pass) {
+void respondToContact(World& world, std::uint32_t i, std::size_t planeIndex, const Plane& face,
+                      const Params& params, StepStats& stats, int pass) {
     const glm::dvec3 before = world.velocity[i];
-    const Response response = respondToPlane(world.velocity[i], plane.normal, params);
+    const Response response = respondToPlane(world.velocity[i], face.normal, params);
     record(world, i, response);
     count(stats, response);
     stats.wallContacts += pass == 0;
     if (world.recordContacts && response != Response::None) {
-        const auto planeIndex = static_cast<std::int32_t>(&plane - world.planes.data());
-        const double distance = glm::dot(world.position[i] - plane.point, plane.normal);  // m
-        world.contacts.push_back({i, -1 - planeIndex, pass, response == Response::Bounce, plane.normal,
-                                  world.position[i] - distance * plane.normal, world.radius[i] - distance,
+        const double distance = glm::dot(world.position[i] - face.point, face.normal);  // m
+        world.contacts.push_back({i, -1 - static_cast<std::int32_t>(planeIndex), pass,
+                                  response == Response::Bounce, face.normal,
+                                  world.position[i] - distance * face.normal, world.radius[i] - distance,
                                   {before, glm::dvec3(0.0)}, {world.velocity[i], glm::dvec3(0.0)},
                                   {world.mass[i], 0.0}});
     }
@@ -181,8 +181,9 @@ void respondToAllContacts(World& world, const Params& params, StepStats& stats, 
         if (touching(world, pair, contact)) respondToContact(world, pair, contact, params, stats, pass);
     }
     for (std::uint32_t i = 0; i < world.size(); ++i) {
-        for (const Plane& plane : world.planes) {
-            if (touching(world, i, plane)) respondToContact(world, i, plane, params, stats, pass);
+        for (std::size_t k = 0; k < world.planes.size(); ++k) {
+            const Plane face = faceFor(world.planes[k], world.position[i]);
+            if (touching(world, i, face)) respondToContact(world, i, k, face, params, stats, pass);
         }
     }
 }

@@ -21,7 +21,8 @@ void cancelPenetratingVelocity(World& world) {
     }
     for (std::uint32_t i = 0; i < world.size(); ++i) {
         for (const Plane& plane : world.planes) {
-            if (touching(world, i, plane)) cancelApproachToPlane(world.velocity[i], plane.normal);
+            const Plane face = faceFor(plane, world.position[i]);
+            if (touching(world, i, face)) cancelApproachToPlane(world.velocity[i], face.normal);
         }
     }
 }

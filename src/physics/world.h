@@ -9,11 +9,18 @@
 
 namespace physics {
 
-// A plane is a point and a unit normal pointing into the free side (slide 3).
+// A plane is a point and a unit normal pointing into the free side (slide 3). With a
+// thickness it is a thin wall instead, free on both sides: a sphere meets the face on
+// its centre's side, so a centre that jumps past the middle in one step has tunnelled.
 struct Plane {
     glm::dvec3 point{0.0};   // m
     glm::dvec3 normal{0.0, 0.0, 1.0};  // unit
+    double thickness = 0.0;  // m; 0: a half-space (everything behind it is solid)
 };
+
+// The face of `plane` that a sphere centred at p meets: the plane itself, or for a
+// thin wall the face on p's side, its normal pointing towards p.
+Plane faceFor(const Plane& plane, const glm::dvec3& p);
 
 // What happened to a sphere in the last solver step, for colouring and teaching.
 enum class ContactState : std::uint8_t {

@@ -209,3 +209,32 @@ TEST(ContactChecks, RecordedContactsCarryTheSlidesNumbers) {
     physics::step(drop, fixtures::exactParams(1.0 / 60.0));
     EXPECT_TRUE(drop.contacts.empty());
 }
+
+// A thin wall (thickness 1 cm) across a box; a small sphere shot at 30 m/s. At
+// h = 1/60 s its centre jumps 0.5 m, past the wall's middle, and it comes out on the
+// far side: tunnelling. At h = 1/1000 s it is caught on the near face and bounces back.
+TEST(ContactChecks, ThinWallIsTunnelledAtALargeStepOnly) {
+    auto finalX = [](double h) {
+        physics::Params params = fixtures::exactParams(h, dvec3(0.0));
+        physics::World world;
+        fixtures::addBox(world, {2, 2, 2});
+        world.planes.push_back({{0, 0, 0}, {1, 0, 0}, 0.01});
+        world.addSphere({-0.3, 0, 1}, {30, 0, 0}, 0.02, 1.0);
+        for (int k = 0; k * h < 0.02; ++k) physics::step(world, params);  // 20 ms of flight
+        return world.position[0].x;
+    };
+    EXPECT_GT(finalX(1.0 / 60.0), 0.0);   // crossed the wall
+    EXPECT_LT(finalX(1.0 / 1000.0), 0.0); // bounced off it
+}
+
+TEST(ContactChecks, ThinWallFaceIsOnTheSideOfTheCentre) {
+    const physics::Plane wall{{0, 0, 0}, {1, 0, 0}, 0.02};
+    const physics::Plane front = physics::faceFor(wall, {-0.5, 0, 0});
+    const physics::Plane back = physics::faceFor(wall, {0.5, 0, 0});
+    EXPECT_EQ(front.normal.x, -1.0);
+    EXPECT_NEAR(front.point.x, -0.01, 1e-15);
+    EXPECT_EQ(back.normal.x, 1.0);
+    EXPECT_NEAR(back.point.x, 0.01, 1e-15);
+    const physics::Plane halfSpace{{0, 0, 0}, {1, 0, 0}, 0.0};
+    EXPECT_EQ(physics::faceFor(halfSpace, {-0.5, 0, 0}).normal.x, 1.0);  // one-sided: unchanged
+}
