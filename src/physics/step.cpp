@@ -136,13 +136,7 @@ void count(StepStats& stats, Response response) {
 
 void respondToContact(World& world, const SpherePair& pair, const SphereContact& contact,
                       const Params& params, StepStats& stats, int pass) {
-    ContactEvent event;
-    if (world.recordContacts) {
-        event = {pair.i, static_cast<std::int32_t>(pair.j), pass, false, contact.u,
-                 world.position[pair.i] - world.radius[pair.i] * contact.u, contact.depth,
-                 {world.velocity[pair.i], world.velocity[pair.j]}, {},
-                 {world.mass[pair.i], world.mass[pair.j]}};
-    }
+    const glm::dvec3 before[2] = {world.velocity[pair.i], world.velocity[pair.j]};  // m/s
     const Response response = respondToSphere(world.velocity[pair.i], world.velocity[pair.j],
                                               world.mass[pair.i], world.mass[pair.j], contact.u,
                                               params);
@@ -151,10 +145,12 @@ void respondToContact(World& world, const SpherePair& pair, const SphereContact&
     count(stats, response);
     stats.sphereContacts += pass == 0;
     if (world.recordContacts && response != Response::None) {
-        event.bounce = response == Response::Bounce;
-        event.velocityAfter[0] = world.velocity[pair.i];
-        event.velocityAfter[1] = world.velocity[pair.j];
-        world.contacts.push_back(event);
+        world.contacts.push_back({pair.i, static_cast<std::int32_t>(pair.j), pass,
+                                  response == Response::Bounce, contact.u,
+                                  world.position[pair.i] - world.radius[pair.i] * contact.u,
+                                  contact.depth, {before[0], before[1]},
+                                  {world.velocity[pair.i], world.velocity[pair.j]},
+                                  {world.mass[pair.i], world.mass[pair.j]}});
     }
 }
 

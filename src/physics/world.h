@@ -19,8 +19,14 @@ struct Plane {
 };
 
 // The face of `plane` that a sphere centred at p meets: the plane itself, or for a
-// thin wall the face on p's side, its normal pointing towards p.
-Plane faceFor(const Plane& plane, const glm::dvec3& p);
+// thin wall the face on p's side, its normal pointing towards p. (Inline: it runs
+// for every sphere and plane in every pass.)
+inline Plane faceFor(const Plane& plane, const glm::dvec3& p) {
+    if (plane.thickness <= 0.0) return plane;
+    const glm::dvec3 d = p - plane.point;
+    const double side = d.x * plane.normal.x + d.y * plane.normal.y + d.z * plane.normal.z >= 0.0 ? 1.0 : -1.0;
+    return {plane.point + (0.5 * plane.thickness * side) * plane.normal, side * plane.normal, 0.0};
+}
 
 // What happened to a sphere in the last solver step, for colouring and teaching.
 enum class ContactState : std::uint8_t {
