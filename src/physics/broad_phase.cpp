@@ -25,15 +25,22 @@ struct GridShape {
     }
 };
 
+bool finite(const glm::dvec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
+
+// A sphere with a non-finite centre (a blown-up state, which the app reports) sits in
+// cell 0 and meets nothing: its distances are NaN, and NaN is never within reach.
 GridShape chooseGrid(const World& world, double margin) {
     glm::dvec3 lo(INFINITY), hi(-INFINITY);
     for (const glm::dvec3& p : world.position) {
+        if (!finite(p)) continue;
         lo = glm::min(lo, p);
         hi = glm::max(hi, p);
     }
+    if (!finite(lo) || !finite(hi)) lo = hi = glm::dvec3(0.0);
     GridShape grid;
     grid.origin = lo;
-    grid.cellSize = std::max(2.0 * maxRadius(world) + margin, 1e-9);
+    const double cell = 2.0 * maxRadius(world) + margin;  // m
+    grid.cellSize = std::isfinite(cell) ? std::max(cell, 1e-9) : 1.0;
     const double maxCells = std::max(4096.0, 4.0 * static_cast<double>(world.size()));
     for (;;) {
         const glm::dvec3 cells = glm::floor((hi - lo) / grid.cellSize) + 1.0;
@@ -53,7 +60,7 @@ void sortByCell(const World& world, const GridShape& grid, Workspace& ws) {
     ws.cellOfSphere.resize(n);
     ws.cellStart.assign(cellCount + 1, 0);
     for (std::size_t i = 0; i < n; ++i) {
-        ws.cellOfSphere[i] = grid.linear(grid.cellOf(world.position[i]));
+        ws.cellOfSphere[i] = finite(world.position[i]) ? grid.linear(grid.cellOf(world.position[i])) : 0;
         ++ws.cellStart[ws.cellOfSphere[i] + 1];
     }
     for (std::size_t c = 0; c < cellCount; ++c) ws.cellStart[c + 1] += ws.cellStart[c];

@@ -238,3 +238,23 @@ TEST(ContactChecks, ThinWallFaceIsOnTheSideOfTheCentre) {
     const physics::Plane halfSpace{{0, 0, 0}, {1, 0, 0}, 0.0};
     EXPECT_EQ(physics::faceFor(halfSpace, {-0.5, 0, 0}).normal.x, 1.0);  // one-sided: unchanged
 }
+
+// A blown-up state must not hang or throw in the broad phase: the app reports it.
+TEST(ContactChecks, NonFiniteSpheresMeetNothingAndTheGridStillWorks) {
+    physics::World world = scattered(300, 0.5, 9);
+    world.position[3] = dvec3(NAN, 0, 0);
+    world.position[7] = dvec3(INFINITY, 1, 2);
+    world.position[8] = dvec3(-INFINITY, 0, NAN);
+    physics::Workspace grid;
+    std::vector<physics::SpherePair> reference;
+    physics::findPairsGrid(world, 0.0, grid);
+    physics::findPairsAllPairs(world, 0.0, reference);
+    ASSERT_EQ(grid.pairs.size(), reference.size());
+    EXPECT_GT(reference.size(), 0u);
+    for (const physics::SpherePair& pair : grid.pairs) {
+        EXPECT_TRUE(pair.i != 3 && pair.j != 3 && pair.i != 7 && pair.j != 7 && pair.i != 8 && pair.j != 8);
+    }
+    physics::Params params;
+    physics::step(world, params);  // returns: no hang, no throw
+    EXPECT_TRUE(std::isnan(world.position[3].x));
+}
