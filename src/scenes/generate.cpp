@@ -174,7 +174,8 @@ std::optional<std::size_t> OccupancyGrid::overlapping(const glm::dvec3& p, doubl
 std::optional<std::size_t> crossedPlane(const std::vector<physics::Plane>& planes,
                                         const glm::dvec3& p, double r, double allowedFraction) {
     for (std::size_t k = 0; k < planes.size(); ++k) {
-        const double clearance = glm::dot(p - planes[k].point, planes[k].normal) - r;  // m
+        const physics::Plane face = physics::faceFor(planes[k], p);  // a thin wall's near face
+        const double clearance = glm::dot(p - face.point, face.normal) - r;  // m
         if (clearance < -allowedFraction * r) return k;
     }
     return std::nullopt;

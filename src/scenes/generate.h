@@ -42,7 +42,8 @@ class OccupancyGrid {
     std::unordered_map<Cell, std::vector<std::size_t>, CellHash> cells_;
 };
 
-// The first plane that the sphere (p, r) crosses by more than allowedFraction * r.
+// The first plane that the sphere (p, r) crosses by more than allowedFraction * r
+// (for a thin wall, the face on the side of p).
 std::optional<std::size_t> crossedPlane(const std::vector<physics::Plane>& planes,
                                         const glm::dvec3& p, double r, double allowedFraction);
 

@@ -82,6 +82,14 @@ Parameter restart(Parameter p) {
     return p;
 }
 
+Parameter onlyWith(bool (*available)(const Scene&), Parameter p) {
+    p.available = available;
+    return p;
+}
+
+bool hasEmitter(const Scene& s) { return !s.emitters.empty(); }
+bool hasGenerator(const Scene& s) { return !s.generators.empty(); }
+
 double gravityOf(const Scene& s) { return glm::length(s.params.gravity); }
 std::string setGravity(Scene& s, double g) {
     s.params.gravity = {0.0, 0.0, -g};  // m/s^2, pointing along -z
@@ -103,6 +111,17 @@ double radiusOf(const Scene& s) {
 std::string setRadius(Scene& s, double r) {
     if (s.generators.empty()) return kNoGenerators;
     for (Generator& g : s.generators) g.radiusMin = g.radiusMax = r;  // m
+    return {};
+}
+
+const char* const kNoEmitters = "scene has no emitter";
+
+double emitPeriodOf(const Scene& s) {
+    return s.emitters.empty() ? Emitter{}.period : s.emitters[0].period;
+}
+std::string setEmitPeriod(Scene& s, double period) {
+    if (s.emitters.empty()) return kNoEmitters;
+    s.emitters[0].period = period;  // s
     return {};
 }
 
@@ -181,13 +200,19 @@ std::vector<Parameter> makeTable() {
                "Where candidate pairs come from: a uniform grid (fast) or the lecture's loop "
                "over all N\u00b2 pairs (slow). Both find the same contacts.",
                param<&Params::broadPhase>()),
-        restart(integer("count", "N  spheres", 0, kMaxGeneratedCount, 100,
+        onlyWith(hasEmitter, real("emit_period", "T  emitter period", "s", 0.01, 60.0, Emitter{}.period,
+             "The course's emitter: one sphere every T seconds (\"rain into the cube\"), "
+             "placed only where it overlaps nothing, else at a later step. After t seconds it "
+             "has emitted floor(t / T) spheres, fewer while its spot is taken or once it "
+             "reaches its maximum. Acts on the scene's first emitter.",
+             {emitPeriodOf, setEmitPeriod})),
+        onlyWith(hasGenerator, restart(integer("count", "N  spheres", 0, kMaxGeneratedCount, 100,
                         "Number of spheres the scene's first generator places. Applies on "
                         "restart.",
-                        {countOf, setCount})),
-        restart(real("radius", "r  sphere radius", "m", 0.005, 0.5, Generator{}.radiusMax,
+                        {countOf, setCount}))),
+        onlyWith(hasGenerator, restart(real("radius", "r  sphere radius", "m", 0.005, 0.5, Generator{}.radiusMax,
                      "Radius of every generated sphere (all generators). Applies on restart.",
-                     {radiusOf, setRadius})),
+                     {radiusOf, setRadius}))),
         restart(integer("seed", "seed", 0, kMaxSeed, 1,
                         "Seed of our own random generator: generated positions and "
                         "velocities, and the shuffled pair order. Same seed, same run. "

@@ -37,6 +37,11 @@ struct Parameter {
     double (*get)(const Scene&) = nullptr;
     // Stores a value already checked by checkValue; returns "" or why it cannot.
     std::string (*set)(Scene&, double) = nullptr;
+    // Whether the scene has what the parameter acts on (an emitter, a generator);
+    // nullptr: always. The UI hides the others.
+    bool (*available)(const Scene&) = nullptr;
+
+    bool availableIn(const Scene& scene) const { return !available || available(scene); }
 };
 
 // Every parameter, in the order the UI shows them: the Live ones, then the Restart ones.

@@ -12,7 +12,7 @@ namespace scenes {
 std::string assetDirectory();
 
 // The shipped presets, by name (file name without ".json"), sorted by file name:
-// "01_single_bounce", "02_head_on", ...
+// "01_bounce_response_only", "02_bounce_projection", ...
 std::vector<std::string> listPresets();
 
 // The file of a preset, from its name (with or without ".json"). Throws

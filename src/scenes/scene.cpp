@@ -8,6 +8,7 @@
 
 #include "physics/random.h"
 #include "scenes/generate.h"
+#include "scenes/parameters.h"
 
 namespace scenes {
 
@@ -75,7 +76,12 @@ void addExtraPlanes(const Scene& scene, physics::World& world) {
         }
         const auto normal = detail::unitNormal(plane.normal);
         if (!normal) fail("planes[" + std::to_string(k) + "] has a zero normal", at + "/normal");
-        world.planes.push_back({plane.point, *normal});
+        if (!(plane.thickness >= 0) || !std::isfinite(plane.thickness)) {
+            fail("planes[" + std::to_string(k) + "] thickness must be finite and >= 0 (m), got " +
+                     number(plane.thickness),
+                 at + "/thickness");
+        }
+        world.planes.push_back({plane.point, *normal, plane.thickness});
     }
 }
 
@@ -163,11 +169,58 @@ void checkRegion(const Generator& g, std::size_t i, const physics::World& world)
     }
 }
 
+std::string emitterName(std::size_t i) { return "emitters[" + std::to_string(i) + "]"; }
+std::string emitterPath(std::size_t i, const char* key) {
+    return "/emitters/" + std::to_string(i) + "/" + key;
+}
+
+// Every value in range, and the largest sphere it emits inside the box, clear of every plane.
+void checkEmitter(const Emitter& e, std::size_t i, const physics::World& world) {
+    const std::string name = emitterName(i);
+    const Parameter& period = *findParameter("emit_period");
+    if (!(e.period >= period.min && e.period <= period.max)) {
+        fail(name + " period = " + number(e.period) + " is out of range [" +
+                 formatNumber(period.min) + ", " + formatNumber(period.max) + "] s",
+             emitterPath(i, "period"));
+    }
+    if (!isFinite(e.position)) fail(name + " position must be finite", emitterPath(i, "position"));
+    if (!isFinite(e.velocity)) fail(name + " velocity must be finite", emitterPath(i, "velocity"));
+    if (!(e.spread >= 0) || !std::isfinite(e.spread)) {
+        fail(name + " spread must be >= 0 (m/s)", emitterPath(i, "spread"));
+    }
+    if (!(e.radiusMin > 0) || !(e.radiusMin <= e.radiusMax) || !std::isfinite(e.radiusMax)) {
+        fail(name + " radius must be positive with min <= max (m)", emitterPath(i, "radius"));
+    }
+    if (e.massRule == MassRule::Density && (!(e.density > 0) || !std::isfinite(e.density))) {
+        fail(name + " density must be positive (kg/m^3)", emitterPath(i, "density"));
+    }
+    if (e.massRule == MassRule::Fixed && (!(e.mass > 0) || !std::isfinite(e.mass))) {
+        fail(name + " mass must be positive (kg)", emitterPath(i, "mass"));
+    }
+    if (e.max < 0 || e.max > kMaxGeneratedCount) {
+        fail(name + " max " + std::to_string(e.max) + " is out of range [0, " +
+                 std::to_string(kMaxGeneratedCount) + "]",
+             emitterPath(i, "max"));
+    }
+    if (e.emitted < 0 || e.emitted > e.max) {
+        fail(name + " emitted " + std::to_string(e.emitted) +
+                 " is out of range [0, max = " + std::to_string(e.max) + "]",
+             emitterPath(i, "emitted"));
+    }
+    if (const auto k = detail::crossedPlane(world.planes, e.position, e.radiusMax, 0.0)) {
+        fail(name + " at " + text(e.position) + " cannot hold a sphere of radius " +
+                 number(e.radiusMax) + " m: it crosses " +
+                 detail::planeName(*k, world.boxPlaneCount),
+             emitterPath(i, "position"));
+    }
+}
+
 // m: no two spheres of the scene overlap unless their centres are this close.
 double largestDiameter(const Scene& scene) {
     double r = 0.0;
     for (const Sphere& s : scene.spheres) r = std::max(r, s.r);
     for (const Generator& g : scene.generators) r = std::max(r, g.radiusMax);
+    for (const Emitter& e : scene.emitters) r = std::max(r, e.radiusMax);
     return std::max(2.0 * r, 1e-6);
 }
 
@@ -209,10 +262,20 @@ physics::World buildWorld(const Scene& scene) {
         checkRegion(g, i, world);
         detail::generate(g, i, g.seed ? *g.seed : generatorSeed(scene.seed, i), grid, world);
     }
+    for (std::size_t i = 0; i < scene.emitters.size(); ++i) {
+        checkEmitter(scene.emitters[i], i, world);
+    }
     world.seed = scene.seed;
     world.time = scene.time;
     world.stepCount = scene.stepCount;
     return world;
+}
+
+std::size_t builtSphereCount(const Scene& scene) {
+    std::size_t count = scene.spheres.size();
+    for (const Generator& g : scene.generators)
+        count += static_cast<std::size_t>(std::max(g.count, 0));
+    return count;
 }
 
 }  // namespace scenes

@@ -73,6 +73,25 @@ struct Generator {
     std::optional<std::uint64_t> seed;  // else derived from the scene seed (generatorSeed)
 };
 
+// The course's emitter ("rain into the cube"): one sphere every `period` seconds at
+// `position`. Emission k (0-based) is due at time (k + 1) period; it is placed only
+// where it overlaps no sphere and no plane, else it waits for a later step. Its radius
+// and velocity are drawn from the scene seed, the emitter's index and k, so the same
+// scene rains the same way. See emitDue.
+struct Emitter {
+    double period = 0.5;                 // s, T (the "emit_period" parameter for the first one)
+    glm::dvec3 position{0.0, 0.0, 1.5};  // m, centre of every new sphere
+    glm::dvec3 velocity{0.0};            // m/s, mean velocity of a new sphere
+    double spread = 0.0;                 // m/s: each component uniform in mean +- spread
+    double radiusMin = 0.05;             // m; radius uniform in [radiusMin, radiusMax]
+    double radiusMax = 0.05;             // m
+    MassRule massRule = MassRule::Density;
+    double density = 1000.0;  // kg/m^3, with MassRule::Density
+    double mass = 1.0;        // kg, with MassRule::Fixed
+    int max = 100;            // spheres it emits at most, in [0, kMaxGeneratedCount]
+    int emitted = 0;          // already emitted when the scene starts (a saved state), <= max
+};
+
 struct Scene {
     std::string title;
     std::string slide;        // which lecture slide it illustrates, e.g. "Rigid spheres 4/14"
@@ -83,6 +102,7 @@ struct Scene {
     std::uint64_t seed = 1;
     std::vector<Sphere> spheres;
     std::vector<Generator> generators;
+    std::vector<Emitter> emitters;
     // A saved state (a file with "time") resumes its clock; its contacts may
     // overlap a little, so buildWorld only refuses gross overlaps for it.
     bool snapshot = false;
@@ -102,5 +122,21 @@ std::uint64_t generatorSeed(std::uint64_t sceneSeed, std::size_t index);
 // Throws SceneError (with path()) for a sphere outside the box, two spheres
 // overlapping, a region outside the box or too small for its count.
 physics::World buildWorld(const Scene& scene);
+
+// How many spheres buildWorld places: the explicit ones and every generator's count.
+// The spheres after them in a world are the emitted ones, in the order of emission.
+std::size_t builtSphereCount(const Scene& scene);
+
+// For each of scene.emitters, how many spheres it has emitted into `world` built from
+// `scene` (its `emitted` at the start plus its share of the spheres beyond
+// builtSphereCount). Emissions are taken in the order they fall due, (k + 1) period,
+// ties by emitter index; an emission that cannot be placed holds back the later ones.
+std::vector<int> emittedCounts(const Scene& scene, const physics::World& world);
+
+// The emitters' step: call after each time step (physics::step). Adds, at world.time,
+// every emission that is due and can be placed without overlap; one that cannot waits
+// for a later step (so after t seconds an emitter has emitted floor(t / T) spheres, fewer
+// while its spot is taken or once it reaches max). Deterministic. Returns the number added.
+int emitDue(const Scene& scene, physics::World& world);
 
 }  // namespace scenes

@@ -6,6 +6,7 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <utility>
 
 #include "scenes/generate.h"
 #include "scenes/json_locate.h"
@@ -19,13 +20,15 @@ namespace {
 using Json = nlohmann::json;
 using Keys = std::vector<std::string_view>;
 
-const Keys kSceneKeys = {"title", "slide",   "description", "box",  "planes", "parameters",
-                         "seed",  "spheres", "generate",    "time", "steps"};
+const Keys kSceneKeys = {"title", "slide",   "description", "box",      "planes", "parameters",
+                         "seed",  "spheres", "generate",    "emitters", "time",   "steps"};
 const Keys kBoxKeys = {"size", "tilt"};
-const Keys kPlaneKeys = {"point", "normal"};
+const Keys kPlaneKeys = {"point", "normal", "thickness"};
 const Keys kSphereKeys = {"p", "v", "r", "m"};
 const Keys kGeneratorKeys = {"kind", "count",    "region",         "radius", "density",
                              "mass", "velocity", "velocitySpread", "seed"};
+const Keys kEmitterKeys = {"period",  "position", "velocity", "spread", "radius",
+                           "density", "mass",     "max",      "emitted"};
 const Keys kRegionKeys = {"min", "max"};
 const Keys kKinds = {"lattice", "random"};
 constexpr double kMaxTilt = 90.0;                   // degrees
@@ -89,6 +92,7 @@ class SceneReader {
         if (const Json* seed = find(root, "seed")) scene.seed = readSeed(*seed, "/seed");
         scene.spheres = readList(root, "spheres", &SceneReader::readSphere);
         scene.generators = readList(root, "generate", &SceneReader::readGenerator);
+        scene.emitters = readList(root, "emitters", &SceneReader::readEmitter);
         readSavedState(root, scene);
         readParameters(root, scene);
         return scene;
@@ -240,6 +244,9 @@ class SceneReader {
                  where(pointer + "/normal") + " is zero: a plane needs a direction");
         }
         plane.normal = *unit;
+        if (const Json* thickness = find(v, "thickness")) {
+            plane.thickness = nonNegative(*thickness, pointer + "/thickness", "m");
+        }
         return plane;
     }
 
@@ -273,6 +280,39 @@ class SceneReader {
         return g;
     }
 
+    Emitter readEmitter(const Json& v, const std::string& pointer) const {
+        checkKeys(v, pointer, kEmitterKeys);
+        Emitter e;
+        const Parameter& period = *findParameter("emit_period");
+        required(v, pointer, "period");
+        e.period = inRange(v["period"], pointer + "/period", period.min, period.max);
+        e.position = vector3(required(v, pointer, "position"), pointer + "/position");
+        if (const Json* vel = find(v, "velocity")) {
+            e.velocity = vector3(*vel, pointer + "/velocity");
+        }
+        if (const Json* spread = find(v, "spread")) {
+            e.spread = nonNegative(*spread, pointer + "/spread", "m/s");
+        }
+        if (const Json* radius = find(v, "radius")) {
+            const auto [lo, hi] = readRadiusRange(*radius, pointer + "/radius");
+            e.radiusMin = lo;
+            e.radiusMax = hi;
+        }
+        const auto [rule, value] = readMassRule(v, pointer);
+        e.massRule = rule;
+        if (rule == MassRule::Fixed) e.mass = value;
+        if (rule == MassRule::Density && value > 0) e.density = value;
+        if (const Json* max = find(v, "max")) {
+            integerOrNumber(*max, pointer + "/max", true);
+            e.max = static_cast<int>(inRange(*max, pointer + "/max", 0, kMaxGeneratedCount));
+        }
+        if (const Json* emitted = find(v, "emitted")) {
+            integerOrNumber(*emitted, pointer + "/emitted", true);
+            e.emitted = static_cast<int>(inRange(*emitted, pointer + "/emitted", 0, e.max));
+        }
+        return e;
+    }
+
     GeneratorKind readKind(const Json& v, const std::string& pointer) const {
         const std::string kind = string(v, pointer, "kind");
         if (kind == "lattice") return GeneratorKind::Lattice;
@@ -292,33 +332,44 @@ class SceneReader {
     }
 
     // A fixed radius, or [min, max] drawn uniformly, in m.
-    void readRadius(const Json& v, const std::string& pointer, Generator& g) const {
+    std::pair<double, double> readRadiusRange(const Json& v, const std::string& pointer) const {
         if (v.is_number()) {
-            g.radiusMin = g.radiusMax = positive(v, pointer, "m");
-            return;
+            const double r = positive(v, pointer, "m");
+            return {r, r};
         }
         if (!v.is_array() || v.size() != 2) {
             fail(pointer, where(pointer) + " must be a number or [min, max], got " + typeName(v));
         }
-        g.radiusMin = positive(v[0], pointer + "/0", "m");
-        g.radiusMax = positive(v[1], pointer + "/1", "m");
-        if (g.radiusMin > g.radiusMax) {
-            fail(pointer, where(pointer) + " must be [min, max] with min <= max");
-        }
+        const double lo = positive(v[0], pointer + "/0", "m");
+        const double hi = positive(v[1], pointer + "/1", "m");
+        if (lo > hi) fail(pointer, where(pointer) + " must be [min, max] with min <= max");
+        return {lo, hi};
     }
 
-    void readMass(const Json& v, const std::string& pointer, Generator& g) const {
+    void readRadius(const Json& v, const std::string& pointer, Generator& g) const {
+        const auto [lo, hi] = readRadiusRange(v, pointer);
+        g.radiusMin = lo;
+        g.radiusMax = hi;
+    }
+
+    // "density" (kg/m^3) or "mass" (kg), not both: the rule and its value (0: neither given).
+    std::pair<MassRule, double> readMassRule(const Json& v, const std::string& pointer) const {
         const Json* density = find(v, "density");
         const Json* mass = find(v, "mass");
         if (density && mass) {
             fail(pointer + "/mass", where(pointer) + " gives both density and mass: give one",
                  true);
         }
-        if (density) g.density = positive(*density, pointer + "/density", "kg/m^3");
-        if (mass) {
-            g.massRule = MassRule::Fixed;
-            g.mass = positive(*mass, pointer + "/mass", "kg");
-        }
+        if (mass) return {MassRule::Fixed, positive(*mass, pointer + "/mass", "kg")};
+        if (density) return {MassRule::Density, positive(*density, pointer + "/density", "kg/m^3")};
+        return {MassRule::Density, 0.0};
+    }
+
+    void readMass(const Json& v, const std::string& pointer, Generator& g) const {
+        const auto [rule, value] = readMassRule(v, pointer);
+        g.massRule = rule;
+        if (rule == MassRule::Fixed) g.mass = value;
+        if (rule == MassRule::Density && value > 0) g.density = value;
     }
 
     void readSavedState(const Json& root, Scene& scene) const {
@@ -409,17 +460,21 @@ std::string planesText(const physics::World& world) {
     for (std::size_t k = static_cast<std::size_t>(world.boxPlaneCount); k < world.planes.size();
          ++k) {
         out += out.empty() ? "\n    " : ",\n    ";
-        out += "{\"point\": " + vectorText(world.planes[k].point) +
-               ", \"normal\": " + vectorText(world.planes[k].normal) + "}";
+        const physics::Plane& plane = world.planes[k];
+        out +=
+            "{\"point\": " + vectorText(plane.point) + ", \"normal\": " + vectorText(plane.normal);
+        if (plane.thickness > 0) out += ", \"thickness\": " + dump(plane.thickness);
+        out += "}";
     }
     return "[" + out + (out.empty() ? "]" : "\n  ]");
 }
 
-// The Live parameters; count, radius and seed belong to generators and the top level.
+// The Live parameters; count, radius and seed belong to generators and the top level,
+// emit_period to the first emitter.
 std::string parametersText(const Scene& scene) {
     std::string out;
     for (const Parameter& p : parameterTable()) {
-        if (p.applies != Applies::Live) continue;
+        if (p.applies != Applies::Live || p.name == "emit_period") continue;
         const std::string value = formatValue(p, scene);
         out += out.empty() ? "\n    " : ",\n    ";
         out += dump(std::string(p.name)) + ": ";
@@ -441,6 +496,26 @@ std::string spheresText(const physics::World& world) {
         out += "{\"p\": " + vectorText(world.position[i]) +
                ", \"v\": " + vectorText(world.velocity[i]) + ", \"r\": " + dump(world.radius[i]) +
                ", \"m\": " + dump(world.mass[i]) + "}";
+    }
+    return "[" + out + (out.empty() ? "]" : "\n  ]");
+}
+
+// The emitters, each with the count it has emitted into `world` so far.
+std::string emittersText(const Scene& scene, const physics::World& world) {
+    const std::vector<int> counts = emittedCounts(scene, world);
+    std::string out;
+    for (std::size_t i = 0; i < scene.emitters.size(); ++i) {
+        const Emitter& e = scene.emitters[i];
+        out += out.empty() ? "\n    " : ",\n    ";
+        out += "{\"period\": " + dump(e.period) + ", \"position\": " + vectorText(e.position) +
+               ", \"velocity\": " + vectorText(e.velocity) + ", \"spread\": " + dump(e.spread) +
+               ", \"radius\": " +
+               (e.radiusMin == e.radiusMax ? dump(e.radiusMin)
+                                           : dump(Json::array({e.radiusMin, e.radiusMax}))) +
+               (e.massRule == MassRule::Fixed ? ", \"mass\": " + dump(e.mass)
+                                              : ", \"density\": " + dump(e.density)) +
+               ", \"max\": " + std::to_string(e.max) +
+               ", \"emitted\": " + std::to_string(counts[i]) + "}";
     }
     return "[" + out + (out.empty() ? "]" : "\n  ]");
 }
@@ -506,6 +581,7 @@ std::string sceneText(const Scene& scene, const physics::World& world) {
         << "  \"seed\": " << scene.seed << ",\n"
         << "  \"time\": " << dump(world.time) << ",\n"
         << "  \"steps\": " << world.stepCount << ",\n"
+        << "  \"emitters\": " << emittersText(scene, world) << ",\n"
         << "  \"spheres\": " << spheresText(world) << "\n"
         << "}\n";
     return out.str();

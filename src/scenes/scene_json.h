@@ -12,11 +12,18 @@
 //                                                  centre, in [-90, 90]. null or absent:
 //                                                  no box. "size" defaults to [2, 2, 2]
 //   "planes": [{"point": [0, 0, 0.3],              m, required
-//               "normal": [-0.34, 0, 0.94]}],      required, not zero; normalised on load
+//               "normal": [-0.34, 0, 0.94],        required, not zero; normalised on load
+//               "thickness": 0.02}],               m, >= 0, default 0: a half-space (solid
+//                                                  behind the plane); > 0: a thin wall of
+//                                                  that thickness centred on the plane, free
+//                                                  on both sides (a sphere meets the face on
+//                                                  its centre's side, so one whose centre
+//                                                  jumps past the middle in one step tunnels)
 //   "parameters": {"alpha": 1, "method": "position", ...},
 //                                                  keys, ranges and choice names are those
 //                                                  of parameterTable(); count and radius
-//                                                  act on the generators below
+//                                                  act on the generators below, emit_period
+//                                                  on the first emitter
 //   "seed": 7,                                     integer in [0, 2^53]
 //   "spheres": [{"p": [0, 0, 1.5],                 m, required
 //                "v": [0, 0, 0],                   m/s, default 0
@@ -33,6 +40,17 @@
 //                 "velocity": [0, 0, 0],           m/s, mean
 //                 "velocitySpread": 0.2,           m/s: each component uniform in mean +- it
 //                 "seed": 3}],                     default: derived from the scene seed
+//   "emitters": [{"period": 0.1,                   s, required: one sphere every T seconds,
+//                                                  the range of the emit_period parameter
+//                 "position": [0, 0, 1.8],         m, required; the largest sphere must fit
+//                                                  inside the box there
+//                 "velocity": [0, 0, -1],          m/s, mean, default 0
+//                 "spread": 0.5,                   m/s, >= 0: each component uniform in
+//                                                  mean +- spread, drawn from the scene seed
+//                 "radius": [0.04, 0.06],          m: a number or [min, max] (default 0.05)
+//                 "density": 1000,                 kg/m^3 (default 1000), or instead "mass"
+//                 "max": 300,                      spheres at most, default 100
+//                 "emitted": 12}],                 already emitted (saved states), <= max
 //   "time": 1.25,                                  s: saved states only (see below)
 //   "steps": 300                                   solver steps taken: saved states only
 // }
@@ -63,7 +81,7 @@ Scene parseScene(std::string_view text, const std::string& filename);
 
 // The text saveScene writes: the scene's metadata and parameters, and the
 // world's current state as explicit spheres (no generators), with "time" and
-// "steps". Numbers are written as the shortest decimals that read back as the
+// "steps", and the emitters with the count each has emitted so far. Numbers are written as the shortest decimals that read back as the
 // same doubles, so loading the file and building it gives a bit-identical state.
 // Throws SceneError if the state holds a non-finite number.
 std::string sceneText(const Scene& scene, const physics::World& world);

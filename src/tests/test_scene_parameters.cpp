@@ -23,6 +23,7 @@ Scene sceneWithGenerators() {
     scenes::Generator g;
     g.count = 50;
     scene.generators = {g, g};
+    scene.emitters = {scenes::Emitter{}, scenes::Emitter{}};
     return scene;
 }
 
@@ -32,7 +33,8 @@ TEST(ParameterTable, HasTheLectureParametersOnceEach) {
     EXPECT_EQ(names.size(), scenes::parameterTable().size());
     const std::set<std::string> expected = {
         "alpha",  "beta",     "epsilon", "mu",    "h",          "substeps", "passes", "gravity",
-        "method", "response", "split",   "order", "broadphase", "count",    "radius", "seed"};
+        "method", "response", "split",   "order", "broadphase", "emit_period", "count", "radius",
+        "seed"};
     EXPECT_EQ(names, expected);
 }
 
@@ -115,6 +117,9 @@ TEST(ApplySetting, AcceptsGoodValuesAndChangesTheScene) {
     EXPECT_EQ(scene.generators[1].radiusMax, 0.03);
     EXPECT_EQ(applySetting(scene, "seed=42"), "");
     EXPECT_EQ(scene.seed, 42u);
+    EXPECT_EQ(applySetting(scene, "emit_period=0.25"), "");  // the first emitter only
+    EXPECT_EQ(scene.emitters[0].period, 0.25);
+    EXPECT_EQ(scene.emitters[1].period, scenes::Emitter{}.period);
 }
 
 TEST(ApplySetting, RefusesOutOfRangeWithTheRange) {
@@ -158,6 +163,8 @@ TEST(ApplySetting, RestartParametersNeedGeneratedSpheres) {
     Scene scene;
     EXPECT_EQ(applySetting(scene, "count=10"), "scene has no generated spheres");
     EXPECT_EQ(applySetting(scene, "radius=0.1"), "scene has no generated spheres");
+    EXPECT_EQ(applySetting(scene, "emit_period=1"), "scene has no emitter");
+    EXPECT_EQ(applySetting(scene, "emit_period=0"), "emit_period = 0 is out of range [0.01, 60] s");
     EXPECT_EQ(applySetting(scene, "count=-1"), "count = -1 is out of range [0, 1000000]");
     EXPECT_EQ(applySetting(scene, "seed=-3"), "seed = -3 is out of range [0, 9007199254740992]");
 }

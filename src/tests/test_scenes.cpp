@@ -313,18 +313,20 @@ TEST(SceneFile, OmittedKeysTakeTheDefaults) {
 
 // --- the shipped presets ---
 
-TEST(Presets, EightScenesSortedByFileName) {
+TEST(Presets, OnePerLecturePhenomenonInLectureOrder) {
     const std::vector<std::string> expected = {
-        "01_single_bounce", "02_head_on", "03_head_on_unequal", "04_newtons_cradle", "05_column",
-        "06_gas",           "07_pile",    "08_inclined_plane"};
+        "01_bounce_response_only", "02_bounce_projection", "03_head_on", "04_head_on_unequal",
+        "05_billiard",             "06_gas",               "07_inclined_plane",
+        "08_newtons_cradle",       "09_column",            "10_pyramid",
+        "11_pile",                 "12_rain",              "13_tunnelling"};
     EXPECT_EQ(scenes::listPresets(), expected);
-    EXPECT_TRUE(std::filesystem::exists(scenes::presetPath("01_single_bounce")));
-    EXPECT_EQ(scenes::presetPath("02_head_on.json"), scenes::presetPath("02_head_on"));
+    EXPECT_TRUE(std::filesystem::exists(scenes::presetPath("01_bounce_response_only")));
+    EXPECT_EQ(scenes::presetPath("03_head_on.json"), scenes::presetPath("03_head_on"));
     try {
         scenes::presetPath("99_nothing");
         FAIL() << "no error";
     } catch (const scenes::SceneError& e) {
-        EXPECT_TRUE(contains(e.what(), "unknown preset '99_nothing'; presets: 01_single_bounce"));
+        EXPECT_TRUE(contains(e.what(), "unknown preset '99_nothing'; presets: 01_bounce_response_only"));
     }
 }
 
@@ -337,7 +339,7 @@ TEST(Presets, EveryPresetLoadsAndBuildsWithoutOverlapInsideTheBox) {
         EXPECT_FALSE(scene.description.empty());
         ASSERT_TRUE(scene.box);
         const physics::World w = scenes::buildWorld(scene);
-        ASSERT_GT(w.size(), 0u);
+        ASSERT_GT(w.size() + scene.emitters.size(), 0u);  // the rain starts empty
         std::size_t overlaps = 0, outside = 0;
         for (std::size_t i = 0; i < w.size(); ++i) {
             for (std::size_t j = i + 1; j < w.size(); ++j) {
@@ -346,8 +348,8 @@ TEST(Presets, EveryPresetLoadsAndBuildsWithoutOverlapInsideTheBox) {
                 overlaps += gap < -1e-12;
             }
             for (const physics::Plane& plane : w.planes) {
-                outside +=
-                    glm::dot(w.position[i] - plane.point, plane.normal) < w.radius[i] - 1e-12;
+                const physics::Plane face = physics::faceFor(plane, w.position[i]);  // thin walls
+                outside += glm::dot(w.position[i] - face.point, face.normal) < w.radius[i] - 1e-12;
             }
         }
         EXPECT_EQ(overlaps, 0u);
@@ -362,19 +364,19 @@ TEST(Presets, EveryPresetLoadsAndBuildsWithoutOverlapInsideTheBox) {
 
 TEST(Presets, EachShowsItsPhenomenon) {
     auto load = [](const char* name) { return scenes::loadScene(scenes::presetPath(name)); };
-    const Scene bounce = load("01_single_bounce");
+    const Scene bounce = load("02_bounce_projection");
     ASSERT_EQ(bounce.spheres.size(), 1u);
     EXPECT_EQ(bounce.spheres[0].p.z, 1.5);
     EXPECT_EQ(bounce.params.beta, 0.8);
-    const Scene headOn = load("02_head_on");
+    const Scene headOn = load("03_head_on");
     EXPECT_EQ(headOn.params.alpha, 1.0);
     EXPECT_EQ(headOn.params.beta, 1.0);
     EXPECT_EQ(headOn.params.gravity, glm::dvec3(0.0));
     EXPECT_EQ(headOn.spheres[0].m, headOn.spheres[1].m);
-    const Scene unequal = load("03_head_on_unequal");
+    const Scene unequal = load("04_head_on_unequal");
     EXPECT_EQ(unequal.spheres[0].m, 1.0);
     EXPECT_EQ(unequal.spheres[1].m, 3.0);
-    const Scene cradle = load("04_newtons_cradle");
+    const Scene cradle = load("08_newtons_cradle");
     ASSERT_EQ(cradle.spheres.size(), 5u);
     EXPECT_EQ(cradle.spheres[0].v, glm::dvec3(2, 0, 0));
     for (std::size_t i = 1; i < 5; ++i) {
@@ -382,47 +384,15 @@ TEST(Presets, EachShowsItsPhenomenon) {
         EXPECT_EQ(cradle.spheres[i].v, glm::dvec3(0.0));
     }
     EXPECT_EQ(cradle.params.epsilon, 0.0);
-    const Scene column = load("05_column");
+    const Scene column = load("09_column");
     ASSERT_EQ(column.spheres.size(), 10u);
     EXPECT_EQ(column.spheres[0].p.z, column.spheres[0].r);  // on the floor
     EXPECT_EQ(scenes::buildWorld(load("06_gas")).size(), 300u);
     EXPECT_EQ(load("06_gas").params.gravity, glm::dvec3(0.0));
-    EXPECT_EQ(scenes::buildWorld(load("07_pile")).size(), 1000u);
-    const Scene incline = load("08_inclined_plane");
+    EXPECT_EQ(scenes::buildWorld(load("11_pile")).size(), 1000u);
+    const Scene incline = load("07_inclined_plane");
     ASSERT_EQ(incline.planes.size(), 1u);
     EXPECT_NEAR(std::acos(incline.planes[0].normal.z) * 180.0 / 3.14159265358979323846, 20.0, 1e-6);
-}
-
-// Runs a preset for `frames` time steps, after applying "name=value" settings.
-physics::World runPreset(const char* name, int frames,
-                         std::initializer_list<const char*> settings = {}) {
-    Scene scene = scenes::loadScene(scenes::presetPath(name));
-    for (const char* setting : settings) EXPECT_EQ(scenes::applySetting(scene, setting), "");
-    physics::World world = scenes::buildWorld(scene);
-    for (int k = 0; k < frames; ++k) physics::step(world, scene.params);
-    return world;
-}
-
-TEST(PresetPhysics, HeadOnEqualMassesSwapVelocities) {
-    const physics::World w = runPreset("02_head_on", 60);  // they meet at t = 0.8 s
-    EXPECT_NEAR(w.velocity[0].x, 0.0, 1e-12);
-    EXPECT_NEAR(w.velocity[1].x, 1.0, 1e-12);
-}
-
-TEST(PresetPhysics, HeadOnMasses1And3FollowTheClosedForm) {
-    const physics::World w = runPreset("03_head_on_unequal", 60);
-    EXPECT_NEAR(w.velocity[0].x, (1.0 - 3.0) / 4.0, 1e-12);  // ((m1 - m2) v1 + 2 m2 v2) / (m1 + m2)
-    EXPECT_NEAR(w.velocity[1].x, 2.0 * 1.0 / 4.0, 1e-12);
-}
-
-TEST(PresetPhysics, NewtonsCradleNeedsMorePassesInReversedOrder) {
-    const physics::World index = runPreset("04_newtons_cradle", 12);
-    for (std::size_t i = 0; i < 4; ++i) EXPECT_NEAR(index.velocity[i].x, 0.0, 2e-6);
-    EXPECT_NEAR(index.velocity[4].x, 2.0, 2e-6);
-    const physics::World reversed = runPreset("04_newtons_cradle", 12, {"order=reversed"});
-    EXPECT_LT(reversed.velocity[4].x, 1.9);  // the impulse spread over the row
-    const physics::World fixed = runPreset("04_newtons_cradle", 12, {"order=reversed", "passes=4"});
-    EXPECT_NEAR(fixed.velocity[4].x, 2.0, 2e-6);
 }
 
 // --- save and load ---
@@ -435,7 +405,7 @@ physics::World reloaded(const Scene& scene, const physics::World& world, Scene* 
 }
 
 TEST(SaveLoad, RoundTripIsBitIdentical) {
-    const Scene scene = scenes::loadScene(scenes::presetPath("07_pile"));
+    const Scene scene = scenes::loadScene(scenes::presetPath("11_pile"));
     physics::World world = scenes::buildWorld(scene);
     world.velocity[3] = {-0.0, 1.0 / 3.0, 1e-300};  // sign of zero, all 17 digits, tiny numbers
     Scene back;
@@ -458,7 +428,7 @@ TEST(SaveLoad, RoundTripIsBitIdentical) {
 }
 
 TEST(SaveLoad, RoundTripAfterStepping) {
-    for (const char* name : {"07_pile", "08_inclined_plane", "06_gas"}) {
+    for (const char* name : {"11_pile", "07_inclined_plane", "06_gas", "13_tunnelling"}) {
         SCOPED_TRACE(name);
         Scene scene = scenes::loadScene(scenes::presetPath(name));
         scene.params.order = physics::PairOrder::Shuffled;  // uses the seed and the step count
