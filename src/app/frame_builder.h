@@ -8,8 +8,20 @@
 
 namespace app {
 
-// What the view options of the panel (colouring, overlays) ask to draw.
-void buildSnapshot(const Simulation& simulation, const ui::PanelState& view, render::FrameSnapshot& snapshot);
+// The overlays the panel's view state asks for.
+OverlayFlags overlayFlags(const ui::PanelState& view);
+
+// Whether the overlays are drawn over everything (render::RenderStyle::overlayOnTop):
+// in scenes of up to kOverlaysOnTopMaxSpheres spheres, where a contact point or an
+// impulse would otherwise hide inside a sphere; in denser ones they are depth-tested,
+// so that only the front layer shows.
+constexpr std::size_t kOverlaysOnTopMaxSpheres = 50;
+bool overlaysOnTop(const ui::PanelState& view, std::size_t sphereCount);
+
+// What the view options of the panel (colouring, overlays) ask to draw. It also
+// tells the simulation which overlays are shown and which sphere is selected, so
+// that it records contacts and trails from the next step on, and only then.
+void buildSnapshot(Simulation& simulation, const ui::PanelState& view, render::FrameSnapshot& snapshot);
 
 ui::Readouts makeReadouts(const Simulation& simulation, double fps, double renderMs);
 

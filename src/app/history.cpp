@@ -11,10 +11,12 @@ void History::clear() {
     for (auto& series : ordered_) series.clear();
 }
 
-void History::add(double time, const physics::Diagnostics& d) {
+void History::add(double time, const physics::Diagnostics& d, std::uint64_t bounces) {
     const float sample[] = {float(d.kinetic), float(d.potential), float(d.modified),
                             float(glm::length(d.momentum)),
-                            float(d.sphereContacts + d.wallContacts), float(d.maxPenetration)};
+                            float(d.sphereContacts + d.wallContacts), float(d.maxPenetration),
+                            float(bounces)};
+    static_assert(sizeof sample / sizeof sample[0] == static_cast<std::size_t>(Series::Count));
     // Kept in order (oldest first) so the plots read the vectors as they are; at
     // 600 samples the shift costs less than a frame's drawing.
     if (times_.size() == kCapacity) {
@@ -33,6 +35,7 @@ const char* History::name(Series series) {
         case Series::Momentum: return "|momentum| (kg m/s)";
         case Series::Contacts: return "contacts";
         case Series::Penetration: return "deepest penetration / r";
+        case Series::Bounces: return "bounces since restart";
         case Series::Count: break;
     }
     return "";

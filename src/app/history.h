@@ -2,6 +2,7 @@
 // The last few hundred samples of the readouts, for the UI's scrolling plots and
 // for export as CSV.
 #include <array>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -9,14 +10,15 @@
 
 namespace app {
 
-enum class Series { Kinetic, Potential, Modified, Momentum, Contacts, Penetration, Count };
+enum class Series { Kinetic, Potential, Modified, Momentum, Contacts, Penetration, Bounces, Count };
 
 class History {
 public:
     static constexpr int kCapacity = 600;  // samples kept
 
     void clear();
-    void add(double time, const physics::Diagnostics& d);
+    // `bounces`: contacts answered as a bounce since restart (Simulation::bouncesSinceRestart).
+    void add(double time, const physics::Diagnostics& d, std::uint64_t bounces = 0);
     // Oldest first, for ImGui::PlotLines.
     const std::vector<float>& values(Series series) const { return ordered_[static_cast<int>(series)]; }
     std::size_t size() const { return times_.size(); }

@@ -1,6 +1,7 @@
 #include "app/simulation.h"
 
 #include <chrono>
+#include <exception>
 #include <utility>
 
 namespace app {
@@ -18,7 +19,37 @@ void Simulation::restart() {
     lastStats_ = {};
     behind_ = false;
     history_.clear();
+    overlays_.reset();
+    alarms_.clear();
+    restitution_.reset();
+    bounces_ = 0;
+    skipEnergyCheck_ = false;
+    lastStepTime_ = world_.time;
+    updateRecording();
     measureNow();
+}
+
+void Simulation::resetOverlays() {
+    overlays_.reset();
+    restitution_.forgetFlights();
+    skipEnergyCheck_ = true;
+}
+
+void Simulation::setOverlayFlags(const OverlayFlags& flags) {
+    overlayFlags_ = flags;
+    updateRecording();
+}
+
+void Simulation::setSelectedSphere(int index) {
+    selected_ = index;
+    updateRecording();
+}
+
+void Simulation::updateRecording() {
+    const bool measuring = !measuredSpheres(world_, selected_).empty();
+    world_.recordContacts =
+        (overlayFlags_.needsContacts() || measuring) && world_.size() <= kMaxRecordSpheres;
+    if (!world_.recordContacts) world_.contacts.clear();
 }
 
 int Simulation::advance(double realSeconds) {
@@ -27,30 +58,84 @@ int Simulation::advance(double realSeconds) {
     accumulator_ += realSeconds * timeScale;
     int steps = 0;
     while (accumulator_ >= h && steps < kMaxStepsPerFrame) {
-        stepOnce();
+        if (!beforeStep() || !guardedStep()) break;
+        afterStep();
         accumulator_ -= h;
         ++steps;
+        if (paused) break;  // an alarm stopped it
     }
-    behind_ = accumulator_ >= h;
-    if (behind_) accumulator_ = 0.0;
+    behind_ = !paused && accumulator_ >= h;
+    if (behind_ || paused) accumulator_ = 0.0;
     if (steps > 0) measureNow();
     return steps;
 }
 
 void Simulation::singleStep() {
-    stepOnce();
+    if (beforeStep() && guardedStep()) afterStep();
     measureNow();
+}
+
+bool Simulation::guardedStep() {
+    try {
+        stepOnce();
+        return true;
+    } catch (const std::exception&) {
+        // A value that turned NaN within the step's first substeps makes the broad
+        // phase of the next one fail (it cannot size a grid around it): say which.
+        if (alarms_.checkFinite(world_)) throw;
+        paused = true;
+        return false;
+    }
+}
+
+bool Simulation::beforeStep() {
+    updateRecording();  // the sphere count may have changed
+    if (!alarms_.checkFinite(world_)) {
+        paused = true;
+        return false;
+    }
+    // The clock went back (a rewind restored an earlier state): trails and impulses
+    // drawn from the later state would no longer match it.
+    if (world_.time < lastStepTime_) {
+        overlays_.reset();
+        restitution_.forgetFlights();
+    }
+    energyBefore_ = physics::modifiedEnergy(world_, scene_.params);
+    sizeBefore_ = world_.size();
+    return true;
+}
+
+void Simulation::afterStep() {
+    bounces_ += lastStats_.collisions;
+    const double energyAfter = physics::modifiedEnergy(world_, scene_.params);
+    // A sphere added or removed, or energy the app put in, is not the solver's doing.
+    const bool checkEnergy = !skipEnergyCheck_ && world_.size() == sizeBefore_;
+    skipEnergyCheck_ = false;
+    if (!alarms_.checkStep(world_, scene_.params, checkEnergy ? energyBefore_ : energyAfter, energyAfter)) {
+        paused = true;
+        return;
+    }
+    overlays_.afterStep(world_, overlayFlags_, selected_);
+    restitution_.afterStep(world_, scene_.params, selected_);
+    lastStepTime_ = world_.time;
 }
 
 void Simulation::stepOnce() {
     const auto start = std::chrono::steady_clock::now();
     lastStats_ = physics::step(world_, scene_.params);
+    scenes::emitDue(scene_, world_);  // the course's emitter, after the step as in simulate
     lastStepMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
 void Simulation::measureNow() {
+    // The broad phase cannot place a position that is not finite: measure nothing then.
+    if (!alarms_.checkFinite(world_)) {
+        paused = true;
+        return;
+    }
     diagnostics_ = physics::measure(world_, scene_.params);
-    history_.add(world_.time, diagnostics_);
+    alarms_.checkMeasurement(diagnostics_, scene_.params, world_.time);
+    history_.add(world_.time, diagnostics_, bounces_);
 }
 
 }  // namespace app

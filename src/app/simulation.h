@@ -4,7 +4,10 @@
 // both advance it through advance(), so they step exactly alike.
 #include <cstdint>
 
+#include "app/alarms.h"
 #include "app/history.h"
+#include "app/overlays.h"
+#include "app/restitution.h"
 #include "physics/diagnostics.h"
 #include "physics/step.h"
 #include "scenes/scene.h"
@@ -41,11 +44,40 @@ public:
     const History& history() const { return history_; }
     const physics::Diagnostics& diagnostics() const { return diagnostics_; }
 
+    // What the view shows (buildSnapshot sets it every frame): contacts are recorded
+    // (world.recordContacts) only while an overlay or the restitution meter needs
+    // them, trails only while shown.
+    void setOverlayFlags(const OverlayFlags& flags);
+    const OverlayFlags& overlayFlags() const { return overlayFlags_; }
+    // The sphere the overlays and the restitution meter focus on; -1: none.
+    void setSelectedSphere(int index);
+    int selectedSphere() const { return selected_; }
+    const OverlayState& overlays() const { return overlays_; }
+
+    const Alarms& alarms() const { return alarms_; }
+    const RestitutionMeter& restitution() const { return restitution_; }
+    // Contacts answered as a bounce (speed above epsilon), every pass and substep, since restart.
+    std::uint64_t bouncesSinceRestart() const { return bounces_; }
+    // The app itself put energy in (a drag, a throw, an emitted sphere): the next
+    // step's energy check is skipped instead of raising the alarm.
+    void markEnergyInjected() { skipEnergyCheck_ = true; }
+    // The app moved spheres by hand (a rewind, a teleport): the trails and impulses
+    // start afresh and a bounce in progress is not measured. Measured ratios, the
+    // bounce counter and the alarms stay until restart.
+    void resetOverlays();
+
     static constexpr int kMaxStepsPerFrame = 32;
 
 private:
     void stepOnce();
+    // Around every stepOnce(): false from beforeStep() when the world holds a value
+    // that is not finite (then the step must not run); afterStep() feeds the alarms,
+    // the overlays and the restitution meter. Both pause on a non-finite value.
+    bool beforeStep();
+    bool guardedStep();  // stepOnce(); false (paused) when it failed on a value not finite
+    void afterStep();
     void measureNow();
+    void updateRecording();
 
     scenes::Scene scene_;
     physics::World world_;
@@ -55,6 +87,16 @@ private:
     bool behind_ = false;
     History history_;
     physics::Diagnostics diagnostics_;
+    OverlayFlags overlayFlags_;
+    int selected_ = -1;
+    OverlayState overlays_;
+    Alarms alarms_;
+    RestitutionMeter restitution_;
+    std::uint64_t bounces_ = 0;
+    double energyBefore_ = 0.0;   // J, E~ before the running step
+    std::size_t sizeBefore_ = 0;  // spheres before the running step
+    double lastStepTime_ = 0.0;   // s, world time after the last step
+    bool skipEnergyCheck_ = false;
 };
 
 }  // namespace app

@@ -11,6 +11,10 @@ namespace ui {
 namespace {
 
 constexpr double kTimeScaleRange[2] = {0.01, 4.0};
+const ImVec4 kAlarmLit{1.0f, 0.30f, 0.25f, 1.0f};     // red, readable on the dark panel
+const ImVec4 kAlarmDimmed{0.72f, 0.42f, 0.40f, 1.0f};  // fired earlier
+const ImVec4 kHintColor{0.85f, 0.78f, 0.70f, 1.0f};
+const ImVec4 kMeasuredColor{0.55f, 0.85f, 1.0f, 1.0f};
 
 void tooltip(std::string_view text) {
     if (!ImGui::IsItemHovered() || text.empty()) return;
@@ -63,6 +67,54 @@ bool parameterWidget(const scenes::Parameter& p, scenes::Scene& scene) {
     return commit && p.applies == scenes::Applies::Restart;
 }
 
+void wrappedColored(const ImVec4& color, const std::string& text) {
+    ImGui::PushStyleColor(ImGuiCol_Text, color);
+    ImGui::TextWrapped("%s", text.c_str());
+    ImGui::PopStyleColor();
+}
+
+// Invariant alarms, red while recent, dimmed once older; the hint under each.
+void alarmsSection(const Readouts& r) {
+    if (r.alarms.empty()) return;
+    ImGui::Separator();
+    for (const Readouts::Alarm& alarm : r.alarms) {
+        wrappedColored(alarm.lit ? kAlarmLit : kAlarmDimmed, alarm.text);
+        if (!alarm.hint.empty()) {
+            tooltip(alarm.hint);
+            ImGui::Indent();
+            wrappedColored(alarm.lit ? kHintColor : ImGui::GetStyle().Colors[ImGuiCol_TextDisabled], alarm.hint);
+            ImGui::Unindent();
+        }
+    }
+    ImGui::Separator();
+}
+
+// Under the beta slider: its square and the apex ratios measured at floor bounces.
+void measuredRestitution(const Readouts& r) {
+    std::string text = "β² = ";
+    char number[32];
+    std::snprintf(number, sizeof number, "%.3f", r.betaSquared);
+    text += number;
+    if (r.measuredBetaSquared.empty()) {
+        ImGui::TextUnformatted(text.c_str());
+        if (!r.restitutionNote.empty()) {
+            ImGui::SameLine();
+            ImGui::TextDisabled("%s", r.restitutionNote.c_str());
+        }
+    } else {
+        text += "   measured ≈";
+        for (auto it = r.measuredBetaSquared.rbegin(); it != r.measuredBetaSquared.rend(); ++it) {
+            std::snprintf(number, sizeof number, " %.3f", *it);
+            text += number;
+        }
+        ImGui::TextColored(kMeasuredColor, "%s", text.c_str());
+    }
+    tooltip("Measured beta^2: the apex height after a floor bounce over the apex height before it, newest first, "
+            "read from the modified energy of the motion along the normal (exact in free flight). Slide 4: it "
+            "should be beta^2. Position based loses up to h s / H of it; velocity based gains about 2 g h / s. "
+            "Measured for scenes of up to 10 spheres, or the selected sphere.");
+}
+
 void runSection(double& timeScale, const Readouts& r, PanelActions& actions) {
     if (ImGui::Button(r.paused ? "Run (P)" : "Pause (P)")) actions.togglePause = true;
     ImGui::SameLine();
@@ -88,7 +140,9 @@ void sceneSection(scenes::Scene& scene, PanelState& state, const std::vector<std
         ImGui::EndCombo();
     }
     for (const scenes::Parameter& p : scenes::parameterTable()) {
-        if (p.applies == scenes::Applies::Restart && p.get && parameterWidget(p, scene)) actions.restart = true;
+        if (p.applies == scenes::Applies::Restart && p.availableIn(scene) && parameterWidget(p, scene)) {
+            actions.restart = true;
+        }
     }
     ImGui::InputText("file", &state.scenePath);
     if (ImGui::Button("Load")) actions.loadPath = state.scenePath;
@@ -104,11 +158,20 @@ void readoutsBody(const Readouts& r, PanelActions& actions) {
     } else {
         ImGui::TextDisabled("FPS and timings: not measured here");  // capture: equal runs, equal images
     }
+    // The overlays' scales first: they explain what is drawn over the scene.
+    if (!r.legend.empty()) {
+        for (const Readouts::LegendLine& line : r.legend) {
+            wrappedColored(ImVec4(line.color[0], line.color[1], line.color[2], line.color[3]), line.text);
+        }
+        ImGui::Separator();
+    }
     ImGui::Text("contacts %llu sphere + %llu wall", static_cast<unsigned long long>(d.sphereContacts),
                 static_cast<unsigned long long>(d.wallContacts));
     ImGui::Text("last step: %llu bounces, %llu static", static_cast<unsigned long long>(r.stats.collisions),
                 static_cast<unsigned long long>(r.stats.staticContacts));
     tooltip("A bounce is a contact whose relative normal speed is above epsilon; a static contact is at or below it (slide 13).");
+    ImGui::Text("bounces since restart %llu", static_cast<unsigned long long>(r.bouncesSinceRestart));
+    tooltip("Contacts answered as a bounce since the last restart, counted in every pass and substep.");
     ImGui::Text("kinetic %.5g J", d.kinetic);
     ImGui::Text("potential %.5g J", d.potential);
     ImGui::Text("total %.6g J", d.total);
@@ -139,6 +202,21 @@ void viewSection(PanelState& state, PanelActions& actions) {
     ImGui::Checkbox("box", &state.showBox);
     ImGui::SameLine();
     ImGui::Checkbox("floor grid", &state.showGrid);
+    ImGui::TextDisabled("overlays (scales in the readouts)");
+    ImGui::Checkbox("velocity", &state.showVelocity);
+    tooltip("An arrow from each sphere's surface along v: the path of the centre in 0.1 s (1 m/s = 10 cm).");
+    ImGui::SameLine();
+    ImGui::Checkbox("trails", &state.showTrails);
+    tooltip("The last 1.5 s of each centre, fading (the first 200 spheres, or the selected one).");
+    ImGui::Checkbox("contacts", &state.showContacts);
+    tooltip("Every contact of the last step: the point (yellow) and the normal (cyan), u from the other sphere "
+            "or the plane's n (slides 3 and 9).");
+    ImGui::SameLine();
+    ImGui::Checkbox("impulses", &state.showImpulses);
+    tooltip("At each bounce, the impulse m (v after - v before) on each sphere, from the contact point "
+            "(1 kg m/s = 5 cm); it fades over 0.5 s of simulated time.");
+    ImGui::Checkbox("penetration", &state.showPenetration);
+    tooltip("Each overlap now: a red segment along the normal, 10 times the depth d (slide 7: p <- p + d n).");
     if (ImGui::SliderFloat("UI scale", &state.uiScale, 0.75f, 3.0f, "%.2f")) actions.fontChanged = true;
     if (ImGui::Button("Reset view (C)")) actions.resetCamera = true;
     ImGui::SameLine();
@@ -162,17 +240,24 @@ PanelActions drawControlPanel(scenes::Scene& scene, double& timeScale, const Rea
     ImGui::Begin("Rigid spheres", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
     ImGui::PushItemWidth(ImGui::GetFontSize() * 9.5f);
     ImGui::TextWrapped("%s", scene.title.c_str());
-    if (!scene.slide.empty()) ImGui::TextDisabled("%s", scene.slide.c_str());
+    if (!scene.slide.empty()) {  // wrapped: a long slide line must not be cut off
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+        ImGui::TextWrapped("%s", scene.slide.c_str());
+        ImGui::PopStyleColor();
+    }
     if (!scene.description.empty()) ImGui::TextWrapped("%s", scene.description.c_str());
     ImGui::Separator();
     runSection(timeScale, readouts, actions);
+    alarmsSection(readouts);
     if (ImGui::CollapsingHeader("Lecture parameters", ImGuiTreeNodeFlags_DefaultOpen)) {
         for (const scenes::Parameter& p : scenes::parameterTable()) {
-            if (p.applies == scenes::Applies::Live) parameterWidget(p, scene);
+            if (p.applies != scenes::Applies::Live || !p.availableIn(scene)) continue;
+            parameterWidget(p, scene);
+            if (p.name == "beta") measuredRestitution(readouts);
         }
     }
     if (ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) sceneSection(scene, state, presetNames, actions);
-    if (ImGui::CollapsingHeader("View")) viewSection(state, actions);
+    if (ImGui::CollapsingHeader("View and overlays")) viewSection(state, actions);
     if (!state.message.empty()) ImGui::TextWrapped("%s", state.message.c_str());
     ImGui::PopItemWidth();
     ImGui::End();

@@ -3,6 +3,7 @@
 // so the UI, the CLI and the JSON agree), the run controls, the scene and the
 // readouts. It edits the scene's live parameters in place and returns the actions
 // that the app must carry out (restart, step, load a preset, ...).
+#include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
@@ -20,6 +21,15 @@ struct PanelState {
     int colorBy = 2;           // render::ColorBy: 0 id, 1 speed, 2 contact state
     bool showBox = true;
     bool showGrid = true;
+    // Overlays (View section), drawn over the scene through the snapshot's lines and
+    // dots (app/overlays.h), so that they appear in captures too. Off: they cost nothing.
+    bool showVelocity = false;     // velocity arrows
+    bool showContacts = false;     // contact points and normals of the last step
+    bool showImpulses = false;     // impulse arrows at impact, fading over 0.5 s
+    bool showPenetration = false;  // overlap depth as a red segment, exaggerated
+    bool showTrails = false;       // fading trails of the centres
+    bool overlaysOnTop = true;     // seen through spheres in small scenes (app::overlaysOnTop)
+    int selectedSphere = -1;       // a picked sphere, -1 none: overlays and measured beta^2 follow it
     std::string scenePath;     // the load / save field
     std::string message;       // the last action's result (screenshot path, errors)
     int presetIndex = -1;      // into the preset list; -1: a file
@@ -38,6 +48,25 @@ struct Readouts {
     physics::StepStats stats;
     physics::Diagnostics diagnostics;
     std::vector<std::pair<const char*, const std::vector<float>*>> plots;  // name, samples
+
+    std::uint64_t bouncesSinceRestart = 0;  // contacts answered as a bounce, all passes
+    // Invariant alarms (app/alarms.h), most serious first.
+    struct Alarm {
+        std::string text;
+        std::string hint;  // why: shown under it
+        bool lit = false;  // fired recently: bright red; else dimmed
+    };
+    std::vector<Alarm> alarms;
+    // Measured restitution of floor bounces (app/restitution.h), shown by the beta slider.
+    double betaSquared = 0.0;
+    std::vector<double> measuredBetaSquared;  // the last few, oldest first
+    std::string restitutionNote;              // when there is nothing to show, why
+    // One line per shown overlay: its scale, in its colour (rgba 0..1).
+    struct LegendLine {
+        std::string text;
+        float color[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+    };
+    std::vector<LegendLine> legend;
 };
 
 struct PanelActions {

@@ -1,0 +1,73 @@
+#pragma once
+// The measured restitution of floor bounces: the apex ratio of a sphere before and
+// after a bounce, from the modified energy of its motion along the floor's normal,
+//   e = -g_n y + 1/2 (v_n + h g_n / 2)^2   (per kg; y the height above touching),
+// which semi-implicit Euler keeps exactly in free flight, so e / |g_n| is the apex
+// height whichever step it is read at. Slide 4: the ratio should be beta^2.
+//
+// It reads the contact events of each step (world.contacts), so it needs
+// world.recordContacts: Simulation turns it on for scenes of up to
+// kMaxMeasuredSpheres spheres, or for the selected sphere.
+#include <cstddef>
+#include <cstdint>
+#include <deque>
+#include <vector>
+
+#include "physics/params.h"
+#include "physics/world.h"
+
+namespace app {
+
+constexpr std::size_t kMaxMeasuredSpheres = 10;  // scenes up to this size measure every sphere
+constexpr std::size_t kMeasurementsKept = 4;     // the last ones, shown in the panel
+// Bounces slower than this many g h are not measured: one step's travel would be
+// more than 1/10 of the height, and the ratio would say more about h than about beta.
+constexpr double kMinImpactSpeedInGH = 20.0;
+
+struct BounceMeasurement {
+    std::uint32_t sphere = 0;
+    double time = 0.0;          // s, simulated, when the sphere left the floor
+    double heightBefore = 0.0;  // m, apex above touching before the bounce
+    double heightAfter = 0.0;   // m, after
+    double ratio() const { return heightAfter / heightBefore; }  // measured beta^2
+};
+
+// Index of the plane the spheres fall onto (its normal against gravity, within 2.6
+// degrees), or -1 without gravity or without such a plane.
+int floorPlane(const physics::World& world, const physics::Params& params);
+
+// J/kg: the modified energy of sphere i's motion along the floor's normal (above).
+double normalEnergy(const physics::World& world, const physics::Params& params, std::size_t i, int floor);
+
+// The spheres measured: the selected one, or all of a scene of up to kMaxMeasuredSpheres.
+std::vector<std::uint32_t> measuredSpheres(const physics::World& world, int selected);
+
+class RestitutionMeter {
+public:
+    void reset();
+    // Forgets the flights and contacts being followed (the world was edited by hand),
+    // keeps the measurements.
+    void forgetFlights() { tracks_.clear(); }
+    // After every step, with world.contacts of that step.
+    void afterStep(const physics::World& world, const physics::Params& params, int selected);
+
+    const std::deque<BounceMeasurement>& last() const { return last_; }  // oldest first
+    std::uint64_t measuredCount() const { return measured_; }
+
+private:
+    struct Track {
+        bool inContact = false;
+        bool flightKnown = false;  // energyInFlight holds a free-flight value
+        double energyInFlight = 0.0;
+        double energyBefore = 0.0;
+        bool beforeKnown = false;
+        bool floorBounce = false;  // a bounce on the floor during this contact
+        bool otherContact = false;  // anything else touched it: not a clean floor bounce
+    };
+    std::vector<Track> tracks_;  // by sphere index
+    std::deque<BounceMeasurement> last_;
+    std::uint64_t measured_ = 0;
+    int floor_ = -2;  // the floor plane of the last step; -2: not known yet
+};
+
+}  // namespace app
