@@ -21,6 +21,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "app/capture_comparison.h"
 #include "app/frame_builder.h"
 #include "app/scene_source.h"
 #include "app/simulation.h"
@@ -63,6 +64,7 @@ struct CapturePlan {
     glm::ivec2 size{0};       // px
     std::optional<CameraChoice> camera;
     render::ColorBy colorBy = render::ColorBy::ContactState;
+    OverlayFlags overlays;
     platform::HeadlessBackend backend = platform::HeadlessBackend::Auto;
 };
 
@@ -171,12 +173,41 @@ render::ColorBy parseColorBy(const std::string& text) {
     throw UsageError("--color-by " + text + ": expected id, speed or contact");
 }
 
+OverlayFlags parseOverlays(const std::string& text) {
+    OverlayFlags flags;
+    if (text.empty()) return flags;
+    for (const std::string_view part : splitCommas(text)) {
+        const std::string name(part);
+        if (name == "all") {
+            for (const char* each : kOverlayNames) setOverlayByName(flags, each);
+        } else if (!setOverlayByName(flags, name)) {
+            throw UsageError("--overlay " + text + ": unknown overlay '" + name +
+                             "'; expected a comma-separated list of velocity, contacts, impulses, "
+                             "penetration, trails, or all");
+        }
+    }
+    return flags;
+}
+
+// The panel's view options for a capture: the window's defaults, the colouring and the overlays.
+ui::PanelState captureView(render::ColorBy colorBy, const OverlayFlags& overlays) {
+    ui::PanelState view;
+    view.colorBy = static_cast<int>(colorBy);
+    view.showVelocity = overlays.velocity;
+    view.showContacts = overlays.contacts;
+    view.showImpulses = overlays.impulses;
+    view.showPenetration = overlays.penetration;
+    view.showTrails = overlays.trails;
+    return view;
+}
+
 CapturePlan planCapture(const CaptureOptions& options) {
     CapturePlan plan;
     plan.frames = chooseFrames(options);
     plan.size = parseSize(options.size);
     plan.camera = parseCamera(options.camera);
     plan.colorBy = parseColorBy(options.colorBy);
+    plan.overlays = parseOverlays(options.overlay);
     const auto backend = platform::parseHeadlessBackend(options.gl);
     if (!backend) throw UsageError("--gl " + options.gl + ": expected osmesa, egl or auto");
     plan.backend = *backend;
@@ -247,7 +278,7 @@ std::string glText(GLenum name) {
 // (FPS, draw and step ms) are shown as 0 so that equal runs give equal images.
 class UiOverlay {
   public:
-    UiOverlay(glm::ivec2 size, render::ColorBy colorBy, const std::string& scenePath);
+    UiOverlay(glm::ivec2 size, const ui::PanelState& view, const std::string& scenePath);
     ~UiOverlay();
     UiOverlay(const UiOverlay&) = delete;
     UiOverlay& operator=(const UiOverlay&) = delete;
@@ -266,8 +297,8 @@ class UiOverlay {
     float panelPixels_ = 0.0f;
 };
 
-UiOverlay::UiOverlay(glm::ivec2 size, render::ColorBy colorBy, const std::string& scenePath)
-    : context_(ImGui::CreateContext()), presets_(scenes::listPresets()) {
+UiOverlay::UiOverlay(glm::ivec2 size, const ui::PanelState& view, const std::string& scenePath)
+    : context_(ImGui::CreateContext()), panel_(view), presets_(scenes::listPresets()) {
     ImGuiIO& io = ImGui::GetIO();
     io.IniFilename = nullptr;
     io.DisplaySize = ImVec2(float(size.x), float(size.y));
@@ -276,7 +307,6 @@ UiOverlay::UiOverlay(glm::ivec2 size, render::ColorBy colorBy, const std::string
     ui::applyStyle(1.0f);  // the window's look at UI scale 1
     if (const std::string error = renderer_.init(); !error.empty())
         throw std::runtime_error("ImGui: " + error);
-    panel_.colorBy = static_cast<int>(colorBy);
     panel_.scenePath = scenePath;
     for (std::size_t k = 0; k < presets_.size(); ++k) {
         if (scenes::presetPath(presets_[k]) == scenePath) panel_.presetIndex = static_cast<int>(k);
@@ -398,6 +428,7 @@ class Capturer {
     void writeFrame(int index);
     Json manifest() const;
     Json cameraJson() const;
+    Json overlayList() const;
 
     // Declared first: destroyed last, after every GL object below.
     std::unique_ptr<platform::HeadlessContext> context_;
@@ -409,6 +440,7 @@ class Capturer {
     render::Renderer renderer_;
     render::FrameSnapshot snapshot_;
     std::unique_ptr<UiOverlay> ui_;
+    std::unique_ptr<CaptureComparison> compare_;  // --compare: the right half
     glm::ivec4 view_{0};  // x, y, width, height in px (GL's lower-left origin)
     render::Camera camera_;
     Json frames_ = Json::array();
@@ -428,9 +460,12 @@ Capturer::Capturer(const CaptureOptions& options, const CapturePlan& plan,
     }
     if (const std::string error = renderer_.init(); !error.empty())
         throw std::runtime_error("renderer: " + error);
+    // Contacts and trails are recorded from the first step on, as in a window whose
+    // overlays were switched on before the run.
+    simulation_.setOverlayFlags(plan.overlays);
     float panel = 0.0f;
     if (options.withUi) {
-        ui_ = std::make_unique<UiOverlay>(plan.size, plan.colorBy, scenePath_);
+        ui_ = std::make_unique<UiOverlay>(plan.size, captureView(plan.colorBy, plan.overlays), scenePath_);
         // ImGui settles in a few frames (auto-sized windows, scrollbars and wrapped
         // text measure the previous frame), so every captured frame looks the same
         // whichever frames came before it.
@@ -438,6 +473,14 @@ Capturer::Capturer(const CaptureOptions& options, const CapturePlan& plan,
         panel = ui_->panelPixels();
     }
     view_ = viewportRightOf(plan.size, panel);
+    if (!options.compare.empty()) {
+        compare_ = std::make_unique<CaptureComparison>(simulation_, options.compare, view_, plan.size, options.withUi);
+        view_ = compare_->left();
+        if (ui_) {  // the views' labels carry both runs' readouts: fold the window that would hide view B
+            ImGui::SetWindowCollapsed("Readouts", true);
+            for (int frame = 0; frame < kUiWarmUpFrames; ++frame) ui_->layout(simulation_);
+        }
+    }
     glm::vec3 lo, hi;
     sceneBounds(simulation_, lo, hi);
     const float aspect = float(view_.z) / float(view_.w);
@@ -454,10 +497,11 @@ render::Image Capturer::drawFrame() {
     target_.bind();
     glClearColor(ui::kBackdropColor[0], ui::kBackdropColor[1], ui::kBackdropColor[2], 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    ui::PanelState view;  // the panel's view options, as the window's defaults but the colouring
-    view.colorBy = static_cast<int>(plan_.colorBy);
+    const ui::PanelState view = captureView(plan_.colorBy, plan_.overlays);
+    renderer_.style.overlayOnTop = overlaysOnTop(view, simulation_.world().size());
     buildSnapshot(simulation_, view, snapshot_);
     renderer_.draw(snapshot_, camera_, view_.x, view_.y, view_.z, view_.w);
+    if (compare_) compare_->draw(renderer_, camera_, view, simulation_);
     if (ui_) {
         ui_->layout(simulation_);
         target_.bind();
@@ -478,6 +522,11 @@ void Capturer::writeFrame(int index) {
                            {"steps", world.stepCount},
                            {"hash", hashText(physics::stateHash(world))},
                            {"file", name}});
+    if (compare_) {
+        const physics::World& other = compare_->comparison().simulation().world();
+        frames_.back()["compare_hash"] = hashText(physics::stateHash(other));
+        frames_.back()["compare_steps"] = other.stepCount;
+    }
 }
 
 Json Capturer::cameraJson() const {
@@ -488,9 +537,15 @@ Json Capturer::cameraJson() const {
                 {"fov_y_deg", glm::degrees(double(camera_.fovY))}};
 }
 
+Json Capturer::overlayList() const {
+    Json names = Json::array();
+    for (const std::string& name : overlayNames(plan_.overlays)) names.push_back(name);
+    return names;
+}
+
 Json Capturer::manifest() const {
     const scenes::Scene& scene = simulation_.scene();
-    return Json{{"scene", scenePath_.empty() ? options_.scene : scenePath_},
+    Json json{{"scene", scenePath_.empty() ? options_.scene : scenePath_},
                 {"title", scene.title},
                 {"settings", options_.settings},
                 {"parameters", parameterValues(scene)},
@@ -500,6 +555,7 @@ Json Capturer::manifest() const {
                 {"samples", target_.samples()},
                 {"with_ui", options_.withUi},
                 {"color_by", options_.colorBy},
+                {"overlays", overlayList()},
                 {"camera", cameraJson()},
                 {"gl",
                  {{"backend", context_->name()},
@@ -508,6 +564,15 @@ Json Capturer::manifest() const {
                 {"frame_s", kCaptureFrameSeconds},
                 {"time_scale", simulation_.timeScale},
                 {"frames", frames_}};
+    if (compare_) {
+        const Comparison& comparison = compare_->comparison();
+        json["compare"] = Json{{"settings", comparison.overrides()},
+                               {"label_a", comparison.primaryLabel(scene)},
+                               {"label_b", comparison.label()},
+                               {"viewport_b", {compare_->right().x, compare_->right().y, compare_->right().z,
+                                               compare_->right().w}}};
+    }
+    return json;
 }
 
 int Capturer::run() {
@@ -515,7 +580,10 @@ int Capturer::run() {
     int frame = 0;  // frames advanced so far; frame 0 is the initial state
     writer_ = std::make_unique<PngWriter>(std::size_t(4) * plan_.size.x * plan_.size.y);
     for (const int index : plan_.frames) {
-        for (; frame < index; ++frame) simulation_.advance(kCaptureFrameSeconds);
+        for (; frame < index; ++frame) {
+            simulation_.advance(kCaptureFrameSeconds);
+            if (compare_) compare_->advance(simulation_, kCaptureFrameSeconds);
+        }
         writeFrame(index);
     }
     if (!writer_->finish()) return 1;
@@ -539,6 +607,10 @@ int Capturer::run() {
 int runCapture(const CaptureOptions& options) {
     const CapturePlan plan = planCapture(options);
     scenes::Scene scene = loadSceneWithSettings(options.scene, options.settings);
+    if (!options.compare.empty()) {
+        if (const std::string error = checkOverrides(scene, splitOverrides(options.compare)); !error.empty())
+            throw UsageError("--compare " + error);
+    }
     auto context = openContext(plan.backend, plan.size);
     prepareOutFolder(options.out);
     std::printf("GL backend: %s (%s)\n", context->name(), glText(GL_RENDERER).c_str());

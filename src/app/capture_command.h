@@ -20,6 +20,8 @@ struct CaptureOptions {
     std::string camera;  // "azimuth,elevation[,distance]": deg, deg, m; "": fit the box
     std::string colorBy = "contact";  // id | speed | contact
     bool withUi = false;              // draw the panel and readouts as the window does
+    std::vector<std::string> compare;  // "name=value[,name=value]": a second view side by side with these
+    std::string overlay;  // "velocity,contacts,impulses,penetration,trails" (any of them, or all); "": none
     std::string gl = "auto";          // osmesa | egl | auto
     int samples = 0;                  // MSAA samples per pixel; 0: none
 };

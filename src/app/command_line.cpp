@@ -45,6 +45,10 @@ void addCapture(CLI::App& cli, CaptureOptions& o) {
                     "azimuth,elevation[,distance] in degrees, degrees, m (default: the window's view of the box)");
     cap->add_option("--color-by", o.colorBy, "Sphere colours: id, speed or contact")->capture_default_str();
     cap->add_flag("--with-ui", o.withUi, "Draw the control panel and the readouts as the window does");
+    cap->add_option("--compare", o.compare,
+                    "Side by side: a second view with these overrides, name=value[,name=value] (e.g. method=velocity)");
+    cap->add_option("--overlay", o.overlay,
+                    "Overlays, comma-separated: velocity, contacts, impulses, penetration, trails (or all)");
     cap->add_option("--gl", o.gl, "Headless GL: osmesa, egl or auto (OSMesa first, then EGL)")->capture_default_str();
     cap->add_option("--samples", o.samples, "Multisampling: samples per pixel, 0 to 16")->capture_default_str();
 }
@@ -57,6 +61,11 @@ void addWindowOptions(CLI::App& cli, WindowAppOptions& o) {
     cli.add_flag("--paused", o.paused, "Start paused");
     cli.add_option("--width", o.width, "Window width (screen coordinates)")->check(CLI::Range(320, 8192));
     cli.add_option("--height", o.height, "Window height (screen coordinates)")->check(CLI::Range(240, 8192));
+    cli.add_option("--compare", o.compare,
+                   "Side by side: a second view with these overrides, name=value[,name=value] (e.g. method=velocity)");
+    cli.add_option("--select", o.select, "Start with this sphere selected (the inspector open)")
+        ->check(CLI::NonNegativeNumber);
+    cli.add_flag("--explain", o.explain, "With --select: open \"explain this contact\"");
 }
 
 int listPresets() {

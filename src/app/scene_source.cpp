@@ -8,7 +8,7 @@
 
 namespace app {
 
-// A preset matches by its full name ("07_pile"), without its number ("pile"), or by
+// A preset matches by its full name ("11_pile"), without its number ("pile"), or by
 // any part of its name that no other preset shares ("cradle").
 std::string resolveScenePath(const std::string& nameOrPath) {
     if (std::filesystem::is_regular_file(nameOrPath)) return nameOrPath;

@@ -13,7 +13,7 @@ struct UsageError : std::runtime_error {
 };
 
 // `nameOrPath` is a file, or a preset name with or without its number and .json
-// ("pile", "07_pile"). Then every "name=value" of `settings` is applied, in order.
+// ("pile", "11_pile"). Then every "name=value" of `settings` is applied, in order.
 // Throws scenes::SceneError (file:line:col) or UsageError.
 scenes::Scene loadSceneWithSettings(const std::string& nameOrPath,
                                     const std::vector<std::string>& settings);

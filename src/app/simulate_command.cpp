@@ -49,6 +49,7 @@ int runSimulate(const SimulateOptions& options) {
     for (std::int64_t k = 1; k <= options.steps; ++k) {
         const auto start = std::chrono::steady_clock::now();
         physics::step(world, params);
+        scenes::emitDue(scene, world);  // the course's emitter, as the window and capture do
         seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         if (log && k % every == 0) log->write(world.stepCount, world.time, physics::measure(world, params));
     }

@@ -1,5 +1,6 @@
 #include "app/window_app.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <ctime>
@@ -11,8 +12,12 @@
 #include <backends/imgui_impl_glfw.h>
 
 #include "app/frame_builder.h"
+#include "app/interaction_input.h"
+#include "app/interaction_windows.h"
 #include "app/scene_source.h"
+#include "app/session.h"
 #include "app/simulation.h"
+#include "app/view_layout.h"
 #include "platform/window.h"
 #include "render/camera.h"
 #include "render/image_io.h"
@@ -26,6 +31,8 @@
 
 namespace app {
 namespace {
+
+constexpr int kViewGap = 4;  // px between the two views side by side
 
 class WindowApp {
 public:
@@ -45,17 +52,20 @@ private:
     void loadFile(const std::string& path);
     void rebuildFont();
     void resetCamera();
-    glm::ivec4 sceneViewport() const;  // x, y, width, height in framebuffer pixels
+    void fitCamera();
+    ViewLayout layout() const;  // the views: right of the panel, above the timeline bar
     bool saveScreenshot(const std::string& path);
 
     std::unique_ptr<platform::Window> window_;
     Simulation simulation_;
+    Session session_;
     WindowAppOptions options_;
     render::Renderer renderer_;
     render::Camera camera_;
-    render::FrameSnapshot snapshot_;
+    render::FrameSnapshot snapshots_[2];
     ui::ImGuiGlRenderer imguiRenderer_;
     ui::PanelState panel_;
+    InteractionInput input_;
     std::vector<std::string> presets_;
     double fps_ = 0.0, renderMs_ = 0.0;
     bool screenshotRequested_ = false;
@@ -63,11 +73,29 @@ private:
 };
 
 WindowApp::WindowApp(std::unique_ptr<platform::Window> window, scenes::Scene scene, const WindowAppOptions& options)
-    : window_(std::move(window)), simulation_(std::move(scene)), options_(options), presets_(scenes::listPresets()) {
+    : window_(std::move(window)),
+      simulation_(std::move(scene)),
+      session_(simulation_),
+      options_(options),
+      input_(session_),
+      presets_(scenes::listPresets()) {
     simulation_.paused = options.paused;
     panel_.scenePath = resolveScenePath(options.scene);
     for (std::size_t k = 0; k < presets_.size(); ++k) {
         if (scenes::presetPath(presets_[k]) == panel_.scenePath) panel_.presetIndex = static_cast<int>(k);
+    }
+    if (!options.compare.empty()) {
+        if (const std::string error = input_.startComparison(options.compare); !error.empty()) {
+            throw UsageError("--compare " + error);
+        }
+    }
+    if (options.select >= 0) {
+        if (static_cast<std::size_t>(options.select) >= simulation_.world().size()) {
+            throw UsageError("--select " + std::to_string(options.select) + ": the scene has " +
+                             std::to_string(simulation_.world().size()) + " spheres");
+        }
+        session_.select(options.select);
+        if (options.explain) input_.toggleExplainer();
     }
     GLFWwindow* handle = window_->handle();
     glfwSetWindowUserPointer(handle, this);
@@ -94,18 +122,26 @@ void WindowApp::rebuildFont() {
     imguiRenderer_.invalidateFontTexture();
 }
 
-// The scene takes the window right of the panel (ImGui must be inside a frame).
-glm::ivec4 WindowApp::sceneViewport() const {
-    const glm::ivec2 size = window_->framebufferSize();
+// The scene takes the window right of the panel and above the timeline bar, in one
+// view or two side by side (ImGui must be inside a frame).
+ViewLayout WindowApp::layout() const {
     const float panel = ImGui::GetCurrentContext() ? ui::panelWidth(panel_, float(window_->windowSize().x)) : 0.0f;
-    return viewportRightOf(size, panel * window_->framebufferScale().x);
+    const float bar = ImGui::GetCurrentContext() ? timelineBarHeight() : 0.0f;
+    return layoutViews(window_->framebufferSize(), window_->framebufferScale(), panel, bar, session_.runCount(),
+                       kViewGap);
 }
 
 void WindowApp::resetCamera() {
     glm::vec3 lo, hi;
     sceneBounds(simulation_, lo, hi);
-    const glm::ivec4 view = sceneViewport();
-    camera_.reset(lo, hi, view.w > 0 ? float(view.z) / float(view.w) : 1.0f);
+    camera_.reset(lo, hi, layout().aspect());
+}
+
+// The same angles, the box fitted again (the views changed shape).
+void WindowApp::fitCamera() {
+    glm::vec3 lo, hi;
+    sceneBounds(simulation_, lo, hi);
+    camera_.fitBox(lo, hi, layout().aspect());
 }
 
 void WindowApp::onKey(GLFWwindow* w, int key, int, int action, int) {
@@ -123,8 +159,13 @@ void WindowApp::handleKey(int key) {
     const int count = static_cast<int>(presets_.size());
     switch (key) {
         case GLFW_KEY_P: case GLFW_KEY_SPACE: simulation_.paused = !simulation_.paused; break;
-        case GLFW_KEY_O: case GLFW_KEY_N: simulation_.singleStep(); break;
-        case GLFW_KEY_R: simulation_.restart(); break;
+        case GLFW_KEY_O: case GLFW_KEY_N: session_.singleStep(); break;
+        case GLFW_KEY_R: session_.restart(); break;
+        case GLFW_KEY_LEFT: session_.stepBack(); break;
+        case GLFW_KEY_RIGHT: session_.stepForward(); break;
+        case GLFW_KEY_F: input_.shoot(layout(), camera_, true, window_->time()); break;
+        case GLFW_KEY_V: if (input_.toggleCompare(window_->time())) fitCamera(); break;
+        case GLFW_KEY_E: input_.toggleExplainer(); break;
         case GLFW_KEY_RIGHT_BRACKET: loadPreset((panel_.presetIndex + 1) % count); break;
         case GLFW_KEY_LEFT_BRACKET: loadPreset((panel_.presetIndex + count - 1) % count); break;
         case GLFW_KEY_TAB: panel_.visible = !panel_.visible; break;
@@ -135,8 +176,10 @@ void WindowApp::handleKey(int key) {
     }
 }
 
-// Left drag orbits, right drag (or shift + left drag) pans: unless ImGui has the mouse.
+// Clicks, grabs and throws first (InteractionInput); then left drag orbits, right
+// drag (or shift + left drag) pans: unless ImGui has the mouse.
 void WindowApp::handleMouse() {
+    if (input_.handleMouse(layout(), camera_, window_->time())) return;
     const ImGuiIO& io = ImGui::GetIO();
     if (io.WantCaptureMouse) return;
     const glm::vec2 scale = window_->framebufferScale();
@@ -160,6 +203,7 @@ void WindowApp::loadFile(const std::string& path) {
         const double timeScale = simulation_.timeScale;
         simulation_.setScene(scenes::loadScene(path));
         simulation_.timeScale = timeScale;
+        session_.sceneChanged();
         panel_.scenePath = path;
         panel_.presetIndex = -1;
         panel_.message.clear();
@@ -171,8 +215,8 @@ void WindowApp::loadFile(const std::string& path) {
 
 void WindowApp::apply(const ui::PanelActions& a) {
     if (a.togglePause) simulation_.paused = !simulation_.paused;
-    if (a.step) simulation_.singleStep();
-    if (a.restart) simulation_.restart();
+    if (a.step) session_.singleStep();
+    if (a.restart) session_.restart();
     if (a.resetCamera) resetCamera();
     if (a.fontChanged) rebuildFont();
     if (a.screenshot) screenshotRequested_ = true;
@@ -193,18 +237,24 @@ void WindowApp::apply(const ui::PanelActions& a) {
 }
 
 void WindowApp::drawScene() {
-    const glm::ivec4 view = sceneViewport();
     const auto start = std::chrono::steady_clock::now();
-    buildSnapshot(simulation_, panel_, snapshot_);
     renderer_.style.showBox = panel_.showBox;
     renderer_.style.showGrid = panel_.showGrid;
+    renderer_.style.overlayOnTop = panel_.overlaysOnTop;
     renderer_.style.lineScale = window_->contentScale().x;
+    panel_.selectedSphere = session_.selected();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     const glm::ivec2 size = window_->framebufferSize();
     glViewport(0, 0, size.x, size.y);
     glClearColor(ui::kBackdropColor[0], ui::kBackdropColor[1], ui::kBackdropColor[2], 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
-    renderer_.draw(snapshot_, camera_, view.x, view.y, view.z, view.w);
+    const ViewLayout views = layout();
+    for (int k = 0; k < views.count; ++k) {
+        const glm::ivec4& view = views.views[k];
+        buildSnapshot(session_.run(k), panel_, snapshots_[k]);
+        session_.appendSelection(k, camera_, snapshots_[k]);
+        renderer_.draw(snapshots_[k], camera_, view.x, view.y, view.z, view.w);
+    }
     renderMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
@@ -215,16 +265,23 @@ void WindowApp::frame(double dt) {
     ImGui::NewFrame();
     if (!cameraFitted_) resetCamera();
     cameraFitted_ = true;
+    input_.expireMessage(window_->time());
     handleMouse();
-    simulation_.advance(dt);
+    session_.setCatchEveryStep(input_.tools().explainer);
+    session_.advance(dt);
     drawScene();
-    const ui::Readouts readouts = makeReadouts(simulation_, fps_, renderMs_);
+    ui::Readouts readouts = makeReadouts(simulation_, fps_, renderMs_);
+    readouts.diagnostics = session_.diagnostics(0);  // measured again after an edit or a step back
     ui::PanelActions actions =
         ui::drawControlPanel(simulation_.editableScene(), simulation_.timeScale, readouts, panel_, presets_);
     ui::drawReadouts(readouts, actions);
+    if (input_.takeFoldReadouts()) ImGui::SetWindowCollapsed("Readouts", true);  // the views' labels carry them
+    const float panel = ui::panelWidth(panel_, ImGui::GetMainViewport()->WorkSize.x);
+    const ToolActions tools = drawInteractionWindows(session_, layout(), panel, input_.tools());
     ImGui::Render();
     imguiRenderer_.render(ImGui::GetDrawData());
     apply(actions);
+    if (input_.apply(tools, layout(), camera_, window_->time())) fitCamera();
     if (screenshotRequested_) {
         char name[64];
         std::snprintf(name, sizeof name, "spheres_%llu.png", static_cast<unsigned long long>(std::time(nullptr)));
@@ -267,6 +324,12 @@ int WindowApp::run() {
 
 int runWindowApp(const WindowAppOptions& options) {
     scenes::Scene scene = loadSceneWithSettings(options.scene, options.settings);
+    if (!options.compare.empty()) {
+        if (const std::string error = checkOverrides(scene, splitOverrides(options.compare)); !error.empty()) {
+            throw UsageError("--compare " + error);
+        }
+    }
+    if (options.explain && options.select < 0) throw UsageError("--explain needs --select INDEX");
     std::string error;
     platform::WindowOptions windowOptions;
     windowOptions.width = options.width;

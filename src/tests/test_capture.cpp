@@ -30,7 +30,7 @@ using platform::HeadlessBackend;
 // A capture that would succeed, to be broken one option at a time.
 CaptureOptions validOptions(const std::string& out) {
     CaptureOptions options =
-        capture_test::smallCapture("01_single_bounce", out, HeadlessBackend::Auto);
+        capture_test::smallCapture("02_bounce_projection", out, HeadlessBackend::Auto);
     options.frames = 2;
     return options;
 }
@@ -214,13 +214,13 @@ glm::u8vec4 pixelAt(const render::Image& image, const glm::vec3& projected) {
 glm::vec2 sizeOf(const render::Image& image) { return {float(image.width), float(image.height)}; }
 
 TEST_P(CaptureImages, FallingSphereCentreLandsOnAPixelOfItsColour) {
-    CaptureOptions options = small("01_single_bounce");
+    CaptureOptions options = small("02_bounce_projection");
     options.at = "0,20,40";
     options.colorBy = "id";
     const std::string out = capture(options, "sphere_centre");
     const nlohmann::json manifest = capture_test::readManifest(out);
     const render::Camera camera = capture_test::cameraOf(manifest);
-    const scenes::Scene scene = capture_test::presetScene("01_single_bounce");
+    const scenes::Scene scene = capture_test::presetScene("02_bounce_projection");
     for (int frame : {0, 20, 40}) {
         const physics::World world = capture_test::worldAtFrame(scene, frame);
         const render::Image image = capture_test::readFrame(out, frame);
@@ -235,7 +235,7 @@ TEST_P(CaptureImages, FallingSphereCentreLandsOnAPixelOfItsColour) {
 }
 
 TEST_P(CaptureImages, CameraOptionSetsTheAnglesAndTheDistance) {
-    CaptureOptions options = small("01_single_bounce");
+    CaptureOptions options = small("02_bounce_projection");
     options.at = "0";
     options.colorBy = "id";
     options.camera = "-90,0,4";
@@ -255,7 +255,7 @@ TEST_P(CaptureImages, CameraOptionSetsTheAnglesAndTheDistance) {
 }
 
 TEST_P(CaptureImages, FloorIsDrawnBelowTheSpheresAndHiddenByThem) {
-    CaptureOptions options = small("05_column");
+    CaptureOptions options = small("09_column");
     options.at = "0";
     options.colorBy = "id";
     const std::string out = capture(options, "floor");
@@ -286,7 +286,7 @@ int differingPixels(const render::Image& a, const render::Image& b) {
 }
 
 TEST_P(CaptureImages, FramesChangeWhileTheBallFallsAndNotWhenNothingMoves) {
-    CaptureOptions falling = small("01_single_bounce");
+    CaptureOptions falling = small("02_bounce_projection");
     falling.frames = 21;
     falling.every = 10;
     const std::string out = capture(falling, "moving");
@@ -299,7 +299,7 @@ TEST_P(CaptureImages, FramesChangeWhileTheBallFallsAndNotWhenNothingMoves) {
         capture_test::fs::exists(capture_test::fs::path(out) / capture_test::frameName(5)));
 
     // No gravity, nothing moving: the solver steps, the picture stays.
-    CaptureOptions still = small("01_single_bounce");
+    CaptureOptions still = small("02_bounce_projection");
     still.settings = {"gravity=0"};
     still.at = "0,30";
     const std::string stillOut = capture(still, "still");
@@ -310,7 +310,7 @@ TEST_P(CaptureImages, FramesChangeWhileTheBallFallsAndNotWhenNothingMoves) {
 }
 
 TEST_P(CaptureImages, WithUiThePanelFillsTheLeftOfTheFrame) {
-    CaptureOptions options = small("01_single_bounce");
+    CaptureOptions options = small("02_bounce_projection");
     options.size = "640x400";
     options.at = "0";
     options.withUi = true;
@@ -341,13 +341,13 @@ TEST_P(CaptureImages, WithUiThePanelFillsTheLeftOfTheFrame) {
 
 TEST_P(CaptureImages, ManifestHashesEqualAWorldSteppedTheSameWay) {
     const std::vector<std::string> settings = {"beta=0.5", "substeps=3"};
-    CaptureOptions options = small("03_head_on_unequal");
+    CaptureOptions options = small("04_head_on_unequal");
     options.settings = settings;
     options.frames = 61;
     options.every = 20;
     const std::string out = capture(options, "manifest");
     const nlohmann::json manifest = capture_test::readManifest(out);
-    const scenes::Scene scene = capture_test::presetScene("03_head_on_unequal", settings);
+    const scenes::Scene scene = capture_test::presetScene("04_head_on_unequal", settings);
     EXPECT_EQ(manifest.at("title"), scene.title);
     EXPECT_EQ(manifest.at("gl").at("backend"), platform::toString(GetParam()));
     EXPECT_EQ(manifest.at("size"), nlohmann::json({320, 200}));
@@ -375,7 +375,7 @@ TEST_P(CaptureImages, ManifestHashesEqualAWorldSteppedTheSameWay) {
 }
 
 TEST_P(CaptureImages, SameInputsGiveByteIdenticalFiles) {
-    CaptureOptions options = small("04_newtons_cradle");
+    CaptureOptions options = small("08_newtons_cradle");
     options.size = "480x300";
     options.withUi = true;
     options.samples = 4;
@@ -393,7 +393,7 @@ TEST_P(CaptureImages, SameInputsGiveByteIdenticalFiles) {
 }
 
 TEST_P(CaptureImages, AFrameDoesNotDependOnWhichOtherFramesAreWritten) {
-    CaptureOptions every = small("04_newtons_cradle");
+    CaptureOptions every = small("08_newtons_cradle");
     every.size = "480x300";
     every.withUi = true;
     every.frames = 21;

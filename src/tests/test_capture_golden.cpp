@@ -35,13 +35,13 @@ struct GoldenCase {
 // One telling moment of each kind of scene: a bounce, a collision, a chain, a
 // stack, a gas, the pile, the incline.
 const GoldenCase kCases[] = {
-    {"single_bounce_f045", "01_single_bounce", 45},
-    {"head_on_unequal_f050", "03_head_on_unequal", 50},
-    {"newtons_cradle_f012", "04_newtons_cradle", 12},
-    {"column_f060", "05_column", 60},
+    {"single_bounce_f045", "02_bounce_projection", 45},
+    {"head_on_unequal_f050", "04_head_on_unequal", 50},
+    {"newtons_cradle_f012", "08_newtons_cradle", 12},
+    {"column_f060", "09_column", 60},
     {"gas_f030", "06_gas", 30},
-    {"pile_f090", "07_pile", 90},
-    {"inclined_plane_f060", "08_inclined_plane", 60},
+    {"pile_f090", "11_pile", 90},
+    {"inclined_plane_f060", "07_inclined_plane", 60},
 };
 
 void PrintTo(const GoldenCase& golden, std::ostream* out) { *out << golden.name; }

@@ -71,7 +71,7 @@ constexpr int kSceneX0 = 460, kSceneX1 = 940, kSceneY0 = 0, kSceneY1 = 800;
 
 TEST(Window, ShowsThePanelAndTheSpheresInTheBox) {
     if (!haveXvfb()) GTEST_SKIP() << "xvfb-run not found: install the xvfb package to run the window tests";
-    const std::string path = screenshot("window_pile", "--scene 07_pile --frames 40");
+    const std::string path = screenshot("window_pile", "--scene 11_pile --frames 40");
     ASSERT_FALSE(path.empty()) << "spheres did not run or wrote no screenshot under Xvfb";
     const render::Image image = load(path);
     ASSERT_EQ(image.width, 1280);
@@ -86,10 +86,10 @@ TEST(Window, ShowsThePanelAndTheSpheresInTheBox) {
 
 TEST(Window, FramesChangeWhileRunningAndNotWhilePaused) {
     if (!haveXvfb()) GTEST_SKIP() << "xvfb-run not found: install the xvfb package to run the window tests";
-    const std::string early = screenshot("window_run_early", "--scene 07_pile --frames 5");
-    const std::string late = screenshot("window_run_late", "--scene 07_pile --frames 70");
-    const std::string pausedEarly = screenshot("window_paused_early", "--scene 07_pile --paused --frames 5");
-    const std::string pausedLate = screenshot("window_paused_late", "--scene 07_pile --paused --frames 70");
+    const std::string early = screenshot("window_run_early", "--scene 11_pile --frames 5");
+    const std::string late = screenshot("window_run_late", "--scene 11_pile --frames 70");
+    const std::string pausedEarly = screenshot("window_paused_early", "--scene 11_pile --paused --frames 5");
+    const std::string pausedLate = screenshot("window_paused_late", "--scene 11_pile --paused --frames 70");
     ASSERT_FALSE(early.empty() || late.empty() || pausedEarly.empty() || pausedLate.empty());
     const double running = meanDifference(load(early), load(late), kSceneX0, kSceneY0, kSceneX1, kSceneY1);
     const double paused = meanDifference(load(pausedEarly), load(pausedLate), kSceneX0, kSceneY0, kSceneX1, kSceneY1);

@@ -1,0 +1,281 @@
+// Interaction without a window (app/interaction.h, app/session.h): picking the
+// sphere under a pixel, dragging and throwing with the mouse's smoothed velocity,
+// shooting from the camera and its refusals, editing the selected sphere.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <glm/geometric.hpp>
+
+#include "app/interaction.h"
+#include "app/session.h"
+#include "app/view_layout.h"
+#include "app/simulation.h"
+#include "physics/diagnostics.h"
+#include "render/camera.h"
+#include "scenes/scene.h"
+
+namespace {
+
+constexpr glm::vec2 kViewport{800.0f, 600.0f};  // px
+
+// A 2 m box (floor at z = 0) with the given spheres, nothing else.
+physics::World boxWorld(const std::vector<glm::dvec3>& centres, double r = 0.1) {
+    scenes::Scene scene;
+    scenes::Box box;
+    box.size = {2.0, 2.0, 2.0};
+    scene.box = box;
+    for (const glm::dvec3& p : centres) scene.spheres.push_back({p, glm::dvec3(0.0), r, 1.0});
+    return scenes::buildWorld(scene);
+}
+
+render::Camera outsideCamera() {
+    render::Camera camera;
+    camera.target = {0.0f, 0.0f, 1.0f};
+    camera.azimuth = -1.2f;
+    camera.elevation = 0.35f;
+    camera.distance = 5.0f;
+    return camera;
+}
+
+glm::vec2 pixelOf(const render::Camera& camera, const glm::dvec3& p) {
+    const glm::vec3 projected = camera.project(glm::vec3(p), kViewport);
+    return {projected.x, projected.y};
+}
+
+// ---------------------------------------------------------------- picking
+
+TEST(InteractionPicking, ThePixelOfEachCentrePicksThatSphere) {
+    const physics::World world = boxWorld({{0.0, 0.0, 1.0}, {0.6, -0.4, 0.5}, {-0.5, 0.5, 1.5}, {0.3, 0.7, 0.2}});
+    const render::Camera camera = outsideCamera();
+    for (std::size_t i = 0; i < world.size(); ++i) {
+        EXPECT_EQ(app::pickSphere(world, camera, pixelOf(camera, world.position[i]), kViewport), int(i)) << i;
+    }
+}
+
+TEST(InteractionPicking, TheNearestSphereAlongTheRayWinsAndEmptySpacePicksNothing) {
+    const render::Camera camera = outsideCamera();
+    const glm::dvec3 far(0.0, 0.0, 1.0);
+    const glm::dvec3 toEye = glm::normalize(glm::dvec3(camera.position()) - far);
+    const glm::dvec3 near = far + 0.8 * toEye;  // in front of it, on the same line of sight
+    const physics::World world = boxWorld({far, near});
+    EXPECT_EQ(app::pickSphere(world, camera, pixelOf(camera, far), kViewport), 1);
+    // Just outside the far sphere's silhouette, beside the near one: nothing.
+    EXPECT_EQ(app::pickSphere(world, camera, {2.0f, 2.0f}, kViewport), -1);
+    // The ray from inside a sphere meets it where it leaves.
+    const render::Ray inside{glm::vec3(far), glm::vec3(1.0f, 0.0f, 0.0f)};
+    ASSERT_TRUE(app::raySphereDistance(inside, far, 0.1).has_value());
+    EXPECT_NEAR(*app::raySphereDistance(inside, far, 0.1), 0.1, 1e-6);
+}
+
+// ---------------------------------------------------------------- views and the mouse
+
+TEST(InteractionViews, MousePositionsMapToTheirViewAndPixelOnHiDpi) {
+    // A 1280 x 800 window at 2 pixels per unit; the panel takes 400 units, the bar 60.
+    const app::ViewLayout one = app::layoutViews({2560, 1600}, {2.0f, 2.0f}, 400.0f, 60.0f, 1, 4);
+    EXPECT_EQ(one.count, 1);
+    EXPECT_EQ(one.views[0], glm::ivec4(800, 120, 1760, 1480));
+    EXPECT_EQ(one.viewAt({300.0f, 100.0f}), -1);  // over the panel
+    EXPECT_EQ(one.viewAt({500.0f, 100.0f}), 0);
+    EXPECT_EQ(one.viewAt({500.0f, 790.0f}), -1);  // over the timeline bar
+    EXPECT_EQ(one.pixelIn(0, {400.0f, 0.0f}), glm::vec2(0.0f, 0.0f));
+    EXPECT_EQ(one.pixelIn(0, {500.0f, 100.0f}), glm::vec2(200.0f, 200.0f));
+
+    const app::ViewLayout two = app::layoutViews({2560, 1600}, {2.0f, 2.0f}, 400.0f, 60.0f, 2, 4);
+    EXPECT_EQ(two.views[0], glm::ivec4(800, 120, 878, 1480));
+    EXPECT_EQ(two.views[1], glm::ivec4(1682, 120, 878, 1480));
+    EXPECT_EQ(two.viewAt({500.0f, 300.0f}), 0);
+    EXPECT_EQ(two.viewAt({840.0f, 300.0f}), -1);  // the gap
+    EXPECT_EQ(two.viewAt({900.0f, 300.0f}), 1);
+    EXPECT_EQ(two.pixelIn(1, {841.0f, 10.0f}), glm::vec2(0.0f, 20.0f));
+    // Through the middle of either view: the camera's forward direction.
+    const render::Camera camera = outsideCamera();
+    for (int k = 0; k < 2; ++k) {
+        const glm::ivec4& v = two.views[k];
+        const glm::vec2 middle((float(v.x) + 0.5f * float(v.z)) / 2.0f, (1600.0f - float(v.y + v.w) + 0.5f * float(v.w)) / 2.0f);
+        EXPECT_GT(glm::dot(two.ray(camera, k, middle).direction, camera.forward()), 0.99999f) << k;
+    }
+}
+
+// ---------------------------------------------------------------- drag and throw
+
+// The camera's right and up directions (m per m): the drag plane's axes.
+void planeAxes(const render::Camera& camera, glm::dvec3& right, glm::dvec3& up) {
+    const glm::dvec3 f = glm::normalize(glm::dvec3(camera.forward()));
+    right = glm::normalize(glm::cross(f, glm::dvec3(0.0, 0.0, 1.0)));
+    up = glm::cross(right, f);
+}
+
+TEST(InteractionDrag, ASyntheticDragThrowsTheSphereWithTheMouseVelocity) {
+    physics::World world = boxWorld({{0.0, 0.0, 1.0}});
+    const render::Camera camera = outsideCamera();
+    glm::dvec3 right, up;
+    planeAxes(camera, right, up);
+    const glm::dvec3 start = world.position[0];
+    const glm::dvec3 velocity = 1.5 * right + 0.8 * up;  // m/s, in the plane facing the camera
+
+    app::SphereDrag drag;
+    const double t0 = 10.0;  // s, any clock
+    ASSERT_TRUE(drag.begin(world, 0, camera.rayThroughPixel(pixelOf(camera, start), kViewport), camera.forward(), t0));
+    for (int frame = 1; frame <= 20; ++frame) {
+        const double t = frame / 60.0;
+        const glm::dvec3 mouse = start + t * velocity;  // where the mouse points, m
+        const auto centre = drag.move(world, camera.rayThroughPixel(pixelOf(camera, mouse), kViewport), t0 + t);
+        ASSERT_TRUE(centre.has_value());
+        EXPECT_LT(glm::length(*centre - mouse), 1e-4) << frame;  // float pixels: 0.1 mm
+        app::placeSphere(world, 0, *centre, drag.velocity());
+    }
+    const glm::dvec3 thrown = drag.release();
+    EXPECT_LT(glm::length(thrown - velocity), 5e-3 * glm::length(velocity));
+    EXPECT_FALSE(drag.active());
+}
+
+TEST(InteractionDrag, TheThrowUsesOnlyTheLastTenthOfASecond) {
+    app::VelocityTracker tracker;
+    glm::dvec3 p(0.0);
+    double t = 0.0;
+    tracker.add(t, p);
+    for (int k = 0; k < 30; ++k) {  // 0.5 s at 4 m/s along x
+        t += 1.0 / 60.0;
+        p.x += 4.0 / 60.0;
+        tracker.add(t, p);
+    }
+    for (int k = 0; k < 12; ++k) {  // 0.2 s at 1 m/s along y
+        t += 1.0 / 60.0;
+        p.y += 1.0 / 60.0;
+        tracker.add(t, p);
+    }
+    const glm::dvec3 v = tracker.velocity();
+    EXPECT_NEAR(v.x, 0.0, 1e-9);
+    EXPECT_NEAR(v.y, 1.0, 1e-9);
+    tracker.reset();
+    EXPECT_EQ(tracker.velocity(), glm::dvec3(0.0));
+}
+
+TEST(InteractionDrag, ADraggedSphereStaysInsideTheBox) {
+    physics::World world = boxWorld({{0.5, 0.0, 1.0}}, 0.1);
+    const render::Camera camera = outsideCamera();
+    glm::dvec3 right, up;
+    planeAxes(camera, right, up);
+    app::SphereDrag drag;
+    ASSERT_TRUE(drag.begin(world, 0, camera.rayThroughPixel(pixelOf(camera, world.position[0]), kViewport),
+                           camera.forward(), 0.0));
+    const glm::dvec3 far = world.position[0] + 3.0 * right - 3.0 * up;  // beyond a wall and the floor
+    const auto centre = drag.move(world, camera.rayThroughPixel(pixelOf(camera, far), kViewport), 0.1);
+    ASSERT_TRUE(centre.has_value());
+    EXPECT_TRUE(app::insideBox(world, *centre, 0.1));
+    EXPECT_NEAR(centre->z, 0.1, 1e-9);  // resting on the floor
+}
+
+TEST(InteractionDrag, TheSessionThrowsTheSphereInEveryRun) {
+    scenes::Scene scene;
+    scene.box = scenes::Box{};
+    scene.params.gravity = glm::dvec3(0.0);
+    scene.spheres.push_back({{0.0, 0.0, 1.0}, glm::dvec3(0.0), 0.1, 1.0});
+    scene.spheres.push_back({{0.5, 0.5, 0.5}, glm::dvec3(0.0), 0.1, 1.0});
+    app::Simulation simulation(scene);
+    simulation.paused = true;
+    app::Session session(simulation);
+    ASSERT_EQ(session.startComparison({"method=velocity"}), "");
+    const render::Camera camera = outsideCamera();
+    glm::dvec3 right, up;
+    planeAxes(camera, right, up);
+    const glm::dvec3 start = simulation.world().position[0];
+    ASSERT_TRUE(session.beginDrag(0, 0, camera.rayThroughPixel(pixelOf(camera, start), kViewport), camera.forward(), 0.0));
+    EXPECT_EQ(session.selected(), 0);
+    for (int frame = 1; frame <= 12; ++frame) {
+        const double t = frame / 60.0;
+        session.dragTo(camera.rayThroughPixel(pixelOf(camera, start + t * 2.0 * right), kViewport), t);
+    }
+    const glm::dvec3 thrown = session.endDrag();
+    EXPECT_LT(glm::length(thrown - 2.0 * right), 1e-2);
+    for (int k = 0; k < 2; ++k) {
+        EXPECT_EQ(session.run(k).world().velocity[0], thrown) << k;
+        EXPECT_LT(glm::length(session.run(k).world().position[0] - (start + 0.2 * 2.0 * right)), 1e-3) << k;
+    }
+}
+
+// ---------------------------------------------------------------- shooting
+
+TEST(InteractionShoot, FromAnEyeInsideTheBoxTheSphereStartsAtTheEye) {
+    physics::World world = boxWorld({{0.5, 0.5, 0.5}});
+    const render::Ray aim{{0.0f, 0.0f, 1.0f}, glm::normalize(glm::vec3(1.0f, 0.0f, -0.2f))};
+    app::Shot shot;
+    ASSERT_EQ(app::planShot(world, aim, 20.0, 0.05, 0.5, &shot), "");
+    app::addShot(world, shot);
+    ASSERT_EQ(world.size(), 2u);
+    EXPECT_EQ(world.position[1], glm::dvec3(0.0, 0.0, 1.0));
+    EXPECT_LT(glm::length(world.velocity[1] - 20.0 * glm::normalize(glm::dvec3(aim.direction))), 1e-12);
+    EXPECT_EQ(world.radius[1], 0.05);
+    EXPECT_EQ(world.mass[1], 0.5);
+}
+
+TEST(InteractionShoot, RefusesAShotThatWouldOverlapASphere) {
+    physics::World world = boxWorld({{0.0, 0.0, 1.0}, {0.5, 0.5, 0.5}});
+    const render::Ray aim{{0.05f, 0.0f, 1.0f}, {1.0f, 0.0f, 0.0f}};
+    const std::string refusal = app::planShot(world, aim, 10.0, 0.1, 1.0, nullptr);
+    EXPECT_NE(refusal.find("overlap sphere 0"), std::string::npos) << refusal;
+    EXPECT_EQ(refusal.find('\n'), std::string::npos);
+    // The session refuses it in both runs and leaves them as they were, saying why.
+    scenes::Scene scene;
+    scene.box = scenes::Box{};
+    scene.spheres.push_back({{0.0, 0.0, 1.0}, glm::dvec3(0.0), 0.1, 1.0});
+    app::Simulation simulation(scene);
+    app::Session session(simulation);
+    ASSERT_EQ(session.startComparison({"order=reversed"}), "");
+    EXPECT_NE(session.shoot(aim, 10.0).find("cannot shoot"), std::string::npos);
+    EXPECT_EQ(session.run(0).world().size(), 1u);
+    EXPECT_EQ(session.run(1).world().size(), 1u);
+}
+
+TEST(InteractionShoot, FromOutsideTheBoxItStartsWhereTheRayEntersAndMissesAreRefused) {
+    physics::World world = boxWorld({});
+    const render::Camera camera = outsideCamera();
+    const render::Ray aim{camera.position(), camera.forward()};
+    app::Shot shot;
+    ASSERT_EQ(app::planShot(world, aim, 10.0, 0.1, 1.0, &shot), "");
+    EXPECT_TRUE(app::insideBox(world, shot.position, 0.1));
+    // On the line of sight, and touching the near wall's shrunk face (just inside).
+    const glm::dvec3 eye(aim.origin), d = glm::normalize(glm::dvec3(aim.direction));
+    const glm::dvec3 offset = shot.position - eye;
+    EXPECT_LT(glm::length(offset - glm::dot(offset, d) * d), 1e-6);
+    double nearest = 1e9;
+    for (int k = 0; k < world.boxPlaneCount; ++k) {
+        const physics::Plane& plane = world.planes[std::size_t(k)];
+        nearest = std::min(nearest, glm::dot(shot.position - plane.point, plane.normal) - 0.1);
+    }
+    EXPECT_NEAR(nearest, 0.0, 1e-6);
+    const render::Ray away{camera.position(), -camera.forward()};
+    const std::string refusal = app::planShot(world, away, 10.0, 0.1, 1.0, nullptr);
+    EXPECT_NE(refusal.find("misses the box"), std::string::npos) << refusal;
+    EXPECT_NE(app::planShot(world, aim, 10.0, -0.1, 1.0, nullptr), "");  // a negative radius
+}
+
+// ---------------------------------------------------------------- editing
+
+TEST(InteractionEdit, EditsGoIntoEveryRunAndTheReadoutsAreMeasuredAgain) {
+    scenes::Scene scene;
+    scene.box = scenes::Box{};
+    scene.spheres.push_back({{0.0, 0.0, 1.0}, glm::dvec3(0.0), 0.1, 1.0});
+    app::Simulation simulation(scene);
+    simulation.paused = true;
+    app::Session session(simulation);
+    ASSERT_EQ(session.startComparison({"beta=0.5"}), "");
+    session.select(0);
+    const double before = session.diagnostics(0).potential;
+    session.editSelected({{0.2, 0.1, 1.5}, {1.0, 0.0, 0.0}, 0.2, 3.0});
+    for (int k = 0; k < 2; ++k) {
+        const physics::World& world = session.run(k).world();
+        EXPECT_EQ(world.position[0], glm::dvec3(0.2, 0.1, 1.5));
+        EXPECT_EQ(world.velocity[0], glm::dvec3(1.0, 0.0, 0.0));
+        EXPECT_EQ(world.radius[0], 0.2);
+        EXPECT_EQ(world.mass[0], 3.0);
+    }
+    EXPECT_NEAR(session.diagnostics(0).potential, 3.0 * 9.81 * 1.5, 1e-9);
+    EXPECT_NE(session.diagnostics(0).potential, before);
+    // Each edit is kept: stepping back undoes it.
+    session.stepBack();
+    EXPECT_EQ(session.run(0).world().position[0], glm::dvec3(0.0, 0.0, 1.0));
+    EXPECT_EQ(session.run(1).world().mass[0], 1.0);
+}
+
+}  // namespace

@@ -1,0 +1,192 @@
+// Side by side (app/comparison.h): two runs of the same initial state stepping
+// together keep identical hashes when the override changes nothing and differ when
+// it does; `spheres capture --compare` writes frames with the two views.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "app/capture_command.h"
+#include "app/comparison.h"
+#include "app/scene_source.h"
+#include "app/session.h"
+#include "app/simulation.h"
+#include "physics/diagnostics.h"
+#include "test_capture_support.h"
+
+namespace {
+
+constexpr double kFrame = 1.0 / 60.0;  // s
+
+scenes::Scene preset(const std::string& name, const std::vector<std::string>& settings = {}) {
+    return app::loadSceneWithSettings(name, settings);
+}
+
+// Hashes of both runs after each of `frames` frames of 1/60 s.
+std::vector<std::pair<std::uint64_t, std::uint64_t>> runSideBySide(const scenes::Scene& scene,
+                                                                    const std::vector<std::string>& overrides,
+                                                                    int frames) {
+    app::Simulation simulation(scene);
+    app::Session session(simulation);
+    EXPECT_EQ(session.startComparison(overrides), "");
+    std::vector<std::pair<std::uint64_t, std::uint64_t>> hashes;
+    for (int frame = 0; frame < frames; ++frame) {
+        session.advance(kFrame);
+        hashes.emplace_back(physics::stateHash(session.run(0).world()), physics::stateHash(session.run(1).world()));
+        EXPECT_EQ(session.run(0).world().stepCount, session.run(1).world().stepCount) << frame;
+    }
+    return hashes;
+}
+
+TEST(SideBySide, ANoOpOverrideKeepsIdenticalHashes) {
+    // The pile's method is position already; beta is its own value.
+    for (const auto& overrides : {std::vector<std::string>{"method=position"}, std::vector<std::string>{"beta=0.8"}}) {
+        const auto hashes = runSideBySide(preset("pile", {"count=300"}), overrides, 40);
+        for (std::size_t frame = 0; frame < hashes.size(); ++frame) {
+            ASSERT_EQ(hashes[frame].first, hashes[frame].second) << overrides[0] << " frame " << frame;
+        }
+    }
+}
+
+TEST(SideBySide, ARealOverrideMakesThemDifferAndTheyStepTogether) {
+    const auto hashes = runSideBySide(preset("cradle"), {"order=reversed"}, 30);
+    EXPECT_NE(hashes.back().first, hashes.back().second);
+    const auto velocity = runSideBySide(preset("pile", {"count=300"}), {"method=velocity"}, 30);
+    EXPECT_NE(velocity.back().first, velocity.back().second);
+}
+
+TEST(SideBySide, TheSecondRunIsTheSimulateCommandsRunWithTheOverride) {
+    app::Simulation simulation(preset("pile", {"count=300"}));
+    app::Session session(simulation);
+    ASSERT_EQ(session.startComparison({"method=velocity,passes=2"}), "");
+    app::Simulation alone(preset("pile", {"count=300", "method=velocity", "passes=2"}));
+    for (int frame = 0; frame < 30; ++frame) {
+        session.advance(kFrame);
+        alone.advance(kFrame);
+    }
+    EXPECT_EQ(physics::stateHash(session.run(1).world()), physics::stateHash(alone.world()));
+}
+
+TEST(SideBySide, TheSecondRunFollowsThePanelButNotWhereItIsOverridden) {
+    const scenes::Scene scene = preset("03_head_on");
+    app::Simulation simulation(scene);
+    app::Comparison comparison(scene, {"beta=0.5"});
+    simulation.editableScene().params.alpha = 0.3;
+    simulation.editableScene().params.beta = 0.9;
+    simulation.timeScale = 0.25;
+    simulation.paused = true;
+    comparison.follow(simulation);
+    EXPECT_EQ(comparison.simulation().params().alpha, 0.3);
+    EXPECT_EQ(comparison.simulation().params().beta, 0.5);
+    EXPECT_EQ(comparison.simulation().timeScale, 0.25);
+    EXPECT_TRUE(comparison.simulation().paused);
+    EXPECT_EQ(comparison.primaryLabel(simulation.scene()), "beta = 0.9");
+    EXPECT_EQ(comparison.label(), "beta = 0.5");
+}
+
+TEST(SideBySide, OverridesAreSplitCheckedAndLabelled) {
+    EXPECT_EQ(app::splitOverrides({" method=velocity, order=reversed ", "passes=1", ","}),
+              (std::vector<std::string>{"method=velocity", "order=reversed", "passes=1"}));
+    const scenes::Scene scene = preset("pile");
+    EXPECT_EQ(app::checkOverrides(scene, {"method=velocity", "passes=1"}), "");
+    EXPECT_NE(app::checkOverrides(scene, {"bogus=1"}).find("bogus"), std::string::npos);
+    EXPECT_NE(app::checkOverrides(scene, {"beta=2"}).find("beta=2"), std::string::npos);
+    EXPECT_NE(app::checkOverrides(scene, {}), "");
+    EXPECT_EQ(app::overrideLabel(scene, {"method=velocity", "order=reversed"}), "method = position, order = index");
+    app::Simulation simulation(scene);
+    app::Session session(simulation);
+    EXPECT_NE(session.startComparison({"beta=7"}), "");
+    EXPECT_EQ(session.runCount(), 1);
+}
+
+TEST(SideBySide, ViewportsSplitInTwoHalvesWithAGap) {
+    glm::ivec4 left, right;
+    app::splitViewport({400, 60, 880, 740}, 4, left, right);
+    EXPECT_EQ(left, glm::ivec4(400, 60, 438, 740));
+    EXPECT_EQ(right, glm::ivec4(842, 60, 438, 740));
+}
+
+// ---------------------------------------------------------------- capture --compare
+
+class CaptureCompare : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        if (const std::string why = capture_test::unavailableReason(platform::HeadlessBackend::Auto); !why.empty()) {
+            GTEST_SKIP() << "no headless GL here: " << why;
+        }
+    }
+};
+
+bool saturated(glm::u8vec4 p) {
+    return std::max({int(p.x), int(p.y), int(p.z)}) - std::min({int(p.x), int(p.y), int(p.z)}) > 60;
+}
+
+int countSaturated(const render::Image& image, int x0, int x1) {
+    int count = 0;
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = x0; x < x1; ++x) count += saturated(image.pixel(x, y));
+    }
+    return count;
+}
+
+TEST_F(CaptureCompare, WritesFramesWithTwoLabelledViews) {
+    const std::string out = capture_test::freshFolder("compare_cradle");
+    app::CaptureOptions options =
+        capture_test::smallCapture("cradle", out, platform::HeadlessBackend::Auto);
+    options.size = "640x360";
+    options.at = "0,30";
+    options.compare = {"order=reversed"};
+    ASSERT_EQ(app::runCapture(options), 0);
+
+    const nlohmann::json manifest = capture_test::readManifest(out);
+    ASSERT_TRUE(manifest.contains("compare"));
+    EXPECT_EQ(manifest["compare"]["label_a"], "order = index");
+    EXPECT_EQ(manifest["compare"]["label_b"], "order = reversed");
+    const auto& frames = manifest["frames"];
+    ASSERT_EQ(frames.size(), 2u);
+    EXPECT_EQ(frames[0]["hash"], frames[0]["compare_hash"]);  // the same initial state
+    EXPECT_NE(frames[1]["hash"], frames[1]["compare_hash"]);
+    EXPECT_EQ(frames[1]["steps"], frames[1]["compare_steps"]);  // stepping together
+    // The second view's hash is the override's own run, stepped as the window steps.
+    const physics::World reversed = capture_test::worldAtFrame(preset("cradle", {"order=reversed"}), 30);
+    char hash[17];
+    std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(physics::stateHash(reversed)));
+    EXPECT_EQ(frames[1]["compare_hash"], hash);
+
+    // Two views: the halves both hold spheres, the middle columns are the dark gap.
+    const render::Image image = capture_test::readFrame(out, 30);
+    ASSERT_EQ(image.width, 640);
+    const std::vector<int> viewport = manifest["viewport"].get<std::vector<int>>();
+    const std::vector<int> second = manifest["compare"]["viewport_b"].get<std::vector<int>>();
+    EXPECT_EQ(viewport[0], 0);
+    EXPECT_EQ(viewport[2], 318);
+    EXPECT_EQ(second[0], 322);
+    EXPECT_GT(countSaturated(image, 0, viewport[2]), 200);
+    EXPECT_GT(countSaturated(image, second[0], 640), 200);
+    for (int y = 0; y < image.height; y += 7) {
+        const glm::u8vec4 gap = image.pixel(320, y);
+        EXPECT_LT(gap.x + gap.y + gap.z, 3 * 40) << "the gap between the views, row " << y;
+    }
+    // The labels: light text on a dark box at the top left of each view.
+    int light = 0;
+    for (int y = 8; y < 120; ++y) {
+        for (int x = 330; x < 480; ++x) light += capture_test::luminance(image.pixel(x, y)) > 200.0f;
+    }
+    EXPECT_GT(light, 50);
+}
+
+TEST_F(CaptureCompare, RefusesAnUnknownOverrideBeforeWritingAnything) {
+    const std::string out = capture_test::freshFolder("compare_refused");
+    app::CaptureOptions options = capture_test::smallCapture("cradle", out, platform::HeadlessBackend::Auto);
+    options.frames = 2;
+    options.compare = {"ordr=reversed"};
+    try {
+        app::runCapture(options);
+        ADD_FAILURE() << "not refused";
+    } catch (const app::UsageError& e) {
+        EXPECT_NE(std::string(e.what()).find("--compare"), std::string::npos) << e.what();
+    }
+    EXPECT_FALSE(capture_test::fs::exists(out));
+}
+
+}  // namespace

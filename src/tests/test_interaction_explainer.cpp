@@ -1,0 +1,209 @@
+// "Explain this contact" (app/contact_explanation.h): its numbers against hand
+// computations for a head-on pair and for a floor bounce, and against the solver's
+// own recorded responses in every response model and method.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <glm/geometric.hpp>
+#include <string>
+
+#include "app/contact_explanation.h"
+#include "physics/collision_response.h"
+#include "physics/step.h"
+#include "scenes/scene.h"
+
+namespace {
+
+void expectVector(const glm::dvec3& actual, const glm::dvec3& expected, double tolerance = 1e-12) {
+    EXPECT_LT(glm::length(actual - expected), tolerance)
+        << "(" << actual.x << ", " << actual.y << ", " << actual.z << ") vs (" << expected.x << ", " << expected.y
+        << ", " << expected.z << ")";
+}
+
+bool hasLine(const std::vector<app::ExplanationLine>& lines, const std::string& part) {
+    return std::any_of(lines.begin(), lines.end(),
+                       [&](const app::ExplanationLine& line) { return line.text.find(part) != std::string::npos; });
+}
+
+// Sphere 1 (1 kg) at the right moving left at 1 m/s and up y at 0.5 m/s, sphere 2
+// (3 kg) at the left moving right at 2 m/s; they overlap by 2 cm.
+physics::ContactEvent headOn() {
+    physics::ContactEvent e;
+    e.i = 0;
+    e.other = 1;
+    e.pass = 0;
+    e.normal = {1.0, 0.0, 0.0};  // u = (p1 - p2)/|p1 - p2|
+    e.depth = 0.02;
+    e.velocityBefore[0] = {-1.0, 0.5, 0.0};
+    e.velocityBefore[1] = {2.0, 0.0, 0.0};
+    e.massOf[0] = 1.0;
+    e.massOf[1] = 3.0;
+    e.bounce = true;
+    return e;
+}
+
+TEST(ContactExplanation, HeadOnPairMatchesTheHandComputation) {
+    physics::Params params;
+    params.alpha = 0.5;
+    params.beta = 0.8;
+    params.epsilon = 0.1;
+    physics::ContactEvent event = headOn();
+    // By hand: (v2 - v1).u = 2 - (-1) = 3 m/s > epsilon: a bounce.
+    //   j = 2/(1/1 + 1/3) * 3 = 4.5 kg m/s (slide 11)
+    //   v1 <- 0.5 (0, 0.5, 0) + 0.8 ((-1, 0, 0) + 4.5/1 (1, 0, 0)) = (2.8, 0.25, 0)
+    //   v2 <- 0.5 (0, 0, 0) + 0.8 ((2, 0, 0) - 4.5/3 (1, 0, 0)) = (0.4, 0, 0)
+    event.velocityAfter[0] = {2.8, 0.25, 0.0};
+    event.velocityAfter[1] = {0.4, 0.0, 0.0};
+    const app::ContactExplanation e = app::explainContact(event, params);
+    EXPECT_FALSE(e.plane);
+    EXPECT_EQ(e.sphere, 0u);
+    EXPECT_EQ(e.other, 1);
+    EXPECT_DOUBLE_EQ(e.depth, 0.02);
+    EXPECT_DOUBLE_EQ(e.normalSpeed, 3.0);
+    EXPECT_FALSE(e.staticContact);
+    EXPECT_NEAR(e.impulse, 4.5, 1e-12);
+    EXPECT_NEAR(e.before[0].normal, -1.0, 1e-15);
+    expectVector(e.before[0].par, {0.0, 0.5, 0.0});
+    expectVector(e.before[1].perp, {2.0, 0.0, 0.0});
+    expectVector(e.before[1].par, {0.0, 0.0, 0.0});
+    expectVector(e.predicted[0], {2.8, 0.25, 0.0});
+    expectVector(e.predicted[1], {0.4, 0.0, 0.0});
+    EXPECT_LT(e.mismatch, 1e-12);
+    EXPECT_NEAR(e.after[0].normal, 2.8, 1e-15);
+    expectVector(e.after[0].par, {0.0, 0.25, 0.0});
+    // Slide 13: d/2 each by default; by mass, the lighter one moves three quarters.
+    EXPECT_EQ(e.correction, app::PositionCorrection::HalfHalf);
+    EXPECT_DOUBLE_EQ(e.shift[0], 0.01);
+    EXPECT_DOUBLE_EQ(e.shift[1], 0.01);
+    params.split = physics::PositionSplit::MassWeighted;
+    const app::ContactExplanation byMass = app::explainContact(event, params);
+    EXPECT_EQ(byMass.correction, app::PositionCorrection::MassWeighted);
+    EXPECT_NEAR(byMass.shift[0], 0.015, 1e-15);
+    EXPECT_NEAR(byMass.shift[1], 0.005, 1e-15);
+    // The window's lines carry the numbers.
+    const auto lines = app::explanationLines(e, params, 6);
+    EXPECT_TRUE(hasLine(lines, "j = 2/(1/m₁ + 1/m₂) (v₂ − v₁)·u = 2/(1/1 + 1/3) × 3.000 = 4.5 kg m/s"));
+    EXPECT_TRUE(hasLine(lines, "v₁ ← (2.800, 0.250, 0.000),   v₂ ← (0.400, 0.000, 0.000)"));
+    EXPECT_TRUE(hasLine(lines, "3.000 m/s > ε = 0.1 m/s"));
+    EXPECT_TRUE(hasLine(lines, "the solver's result: the same"));
+}
+
+TEST(ContactExplanation, HeadOnPairAgreesWithTheSolverInBothResponseModels) {
+    for (const auto model : {physics::ResponseModel::LectureAttenuation, physics::ResponseModel::MomentumConserving}) {
+        physics::Params params;
+        params.alpha = 0.7;
+        params.beta = 0.6;
+        params.response = model;
+        physics::ContactEvent event = headOn();
+        glm::dvec3 v1 = event.velocityBefore[0], v2 = event.velocityBefore[1];
+        physics::respondToSphere(v1, v2, 1.0, 3.0, event.normal, params);
+        event.velocityAfter[0] = v1;
+        event.velocityAfter[1] = v2;
+        const app::ContactExplanation e = app::explainContact(event, params);
+        EXPECT_LT(e.mismatch, 1e-12) << int(model);
+    }
+}
+
+TEST(ContactExplanation, ElasticEqualMassesSwapTheirNormalSpeeds) {
+    physics::Params params;
+    params.alpha = params.beta = 1.0;
+    physics::ContactEvent event = headOn();
+    event.massOf[1] = 1.0;
+    const app::ContactExplanation e = app::explainContact(event, params);
+    EXPECT_NEAR(e.impulse, 3.0, 1e-12);  // 2/(1 + 1) * 3
+    expectVector(e.predicted[0], {2.0, 0.5, 0.0});   // v1par + v2perp
+    expectVector(e.predicted[1], {-1.0, 0.0, 0.0});  // v2par + v1perp
+}
+
+TEST(ContactExplanation, FloorBounceMatchesTheHandComputation) {
+    physics::Params params;
+    params.alpha = 0.9;
+    params.beta = 0.5;
+    params.epsilon = 0.1;
+    physics::ContactEvent event;
+    event.i = 4;
+    event.other = -1;  // plane 0: the floor
+    event.normal = {0.0, 0.0, 1.0};
+    event.depth = 0.004;
+    event.velocityBefore[0] = {0.3, 0.0, -2.0};
+    event.massOf[0] = 2.0;
+    event.bounce = true;
+    // By hand (slide 4): v.n = -2, v_perp = (0, 0, -2), v_par = (0.3, 0, 0);
+    // v <- 0.9 (0.3, 0, 0) - 0.5 (0, 0, -2) = (0.27, 0, 1).
+    event.velocityAfter[0] = {0.27, 0.0, 1.0};
+    const app::ContactExplanation e = app::explainContact(event, params);
+    EXPECT_TRUE(e.plane);
+    EXPECT_EQ(e.other, 0);
+    EXPECT_EQ(app::planeName(e.other, 6), "floor");
+    EXPECT_DOUBLE_EQ(e.normalSpeed, -2.0);
+    EXPECT_FALSE(e.staticContact);
+    expectVector(e.before[0].perp, {0.0, 0.0, -2.0});
+    expectVector(e.before[0].par, {0.3, 0.0, 0.0});
+    expectVector(e.predicted[0], {0.27, 0.0, 1.0});
+    EXPECT_LT(e.mismatch, 1e-12);
+    EXPECT_NEAR(e.after[0].normal, 1.0, 1e-15);
+    EXPECT_EQ(e.correction, app::PositionCorrection::Projection);
+    EXPECT_DOUBLE_EQ(e.shift[0], 0.004);  // slide 8: p <- p + d n
+    const auto lines = app::explanationLines(e, params, 6);
+    EXPECT_TRUE(hasLine(lines, "Sphere #4 and the floor"));
+    EXPECT_TRUE(hasLine(lines, "v ← 0.9 × (0.300, 0.000, 0.000) − 0.5 × -2.000 n = (0.270, 0.000, 1.000)"));
+    EXPECT_TRUE(hasLine(lines, "d = r − (p − a)·n = 0.004 m"));
+    // Velocity based: no projection.
+    params.method = physics::Method::VelocityBased;
+    EXPECT_EQ(app::explainContact(event, params).correction, app::PositionCorrection::None);
+}
+
+TEST(ContactExplanation, SlowFloorContactIsStaticWithFriction) {
+    physics::Params params;
+    params.epsilon = 0.1;
+    params.mu = 0.5;
+    physics::ContactEvent event;
+    event.other = -1;
+    event.normal = {0.0, 0.0, 1.0};
+    event.velocityBefore[0] = {0.3, 0.0, -0.05};
+    event.massOf[0] = 1.0;
+    glm::dvec3 v = event.velocityBefore[0];
+    physics::respondToPlane(v, event.normal, params);
+    event.velocityAfter[0] = v;
+    const app::ContactExplanation e = app::explainContact(event, params);
+    EXPECT_TRUE(e.staticContact);
+    expectVector(e.predicted[0], {0.15, 0.0, 0.0});  // mu (v - (v.n) n) = 0.5 (0.3, 0, 0)
+    EXPECT_LT(e.mismatch, 1e-15);
+}
+
+// Every response the solver records in a busy scene is explained exactly.
+TEST(ContactExplanation, AgreesWithEveryRecordedResponseOfARealStep) {
+    for (const auto method : {physics::Method::PositionBased, physics::Method::VelocityBased}) {
+        for (const auto model : {physics::ResponseModel::LectureAttenuation, physics::ResponseModel::MomentumConserving}) {
+            scenes::Scene scene;
+            scene.box = scenes::Box{};
+            scene.params.method = method;
+            scene.params.response = model;
+            scene.params.alpha = 0.8;
+            scene.params.beta = 0.7;
+            scenes::Generator generator;
+            generator.count = 200;
+            generator.regionMin = {-1.0, -1.0, 0.0};
+            generator.regionMax = {1.0, 1.0, 1.0};
+            generator.velocitySpread = 2.0;
+            scene.generators.push_back(generator);
+            physics::World world = scenes::buildWorld(scene);
+            world.recordContacts = true;
+            std::size_t explained = 0, bounces = 0;
+            for (int s = 0; s < 60; ++s) {
+                physics::step(world, scene.params);
+                for (const physics::ContactEvent& event : world.contacts) {
+                    const app::ContactExplanation e = app::explainContact(event, scene.params);
+                    ASSERT_LT(e.mismatch, 1e-9) << "step " << s << " sphere " << event.i << " other " << event.other;
+                    EXPECT_EQ(!e.staticContact, event.bounce);
+                    ++explained;
+                    bounces += event.bounce;
+                }
+            }
+            EXPECT_GT(explained, 100u);
+            EXPECT_GT(bounces, 10u);
+        }
+    }
+}
+
+}  // namespace

@@ -1,0 +1,94 @@
+// The real window under Xvfb with the interaction features started from the
+// command line: two views side by side (--compare), the selected sphere's
+// inspector and explainer (--select, --explain), and refused input.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include "render/image_io.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+bool haveXvfb() { return std::system("command -v xvfb-run >/dev/null 2>&1") == 0; }
+
+std::string screenshot(const std::string& name, const std::string& arguments) {
+    const fs::path out = fs::path(SPHERES_TEST_OUTPUT_DIR) / (name + ".png");
+    fs::remove(out);
+    const std::string command = "xvfb-run -a -s '-screen 0 1280x800x24' '" SPHERES_EXECUTABLE "' " + arguments +
+                                " --screenshot '" + out.string() + "' >/dev/null 2>&1";
+    return std::system(command.c_str()) == 0 && fs::exists(out) ? out.string() : "";
+}
+
+render::Image load(const std::string& path) {
+    render::Image image;
+    EXPECT_TRUE(render::readPng(path, &image)) << path;
+    return image;
+}
+
+bool saturated(glm::u8vec4 p) {
+    return std::max({int(p.x), int(p.y), int(p.z)}) - std::min({int(p.x), int(p.y), int(p.z)}) > 60;
+}
+
+bool dark(glm::u8vec4 p) { return p.x + p.y + p.z < 3 * 45; }
+bool notSky(glm::u8vec4 p) { return p.x + p.y + p.z < 3 * 110; }  // the sky is a light grey-blue
+
+template <class Test>
+double fraction(const render::Image& image, int x0, int y0, int x1, int y1, Test test) {
+    int hits = 0, total = 0;
+    for (int y = y0; y < y1; ++y) {
+        for (int x = x0; x < x1; ++x) {
+            hits += test(image.pixel(x, y)) ? 1 : 0;
+            ++total;
+        }
+    }
+    return total ? double(hits) / total : 0.0;
+}
+
+// The scene right of the panel (425 px at UI scale 1 on a 1280 px window) is split
+// into two views with a 4 px gap in the middle.
+constexpr int kSceneX0 = 425, kGapX = 425 + (855 - 4) / 2;
+
+TEST(WindowInteraction, CompareShowsTwoViewsSideBySide) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run not found";
+    const std::string path = screenshot("window_compare", "--scene 11_pile --compare method=velocity --frames 30");
+    ASSERT_FALSE(path.empty());
+    const render::Image image = load(path);
+    // The gap: dark from top to bottom of the views (above the timeline bar).
+    EXPECT_GT(fraction(image, kGapX + 1, 200, kGapX + 3, 700, dark), 0.95);
+    // Spheres on both sides of it.
+    EXPECT_GT(fraction(image, kSceneX0, 400, kGapX, 720, saturated), 0.08);
+    EXPECT_GT(fraction(image, kGapX + 4, 400, 1280, 720, saturated), 0.08);
+}
+
+TEST(WindowInteraction, SelectOpensTheInspectorAndTheExplainer) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run not found";
+    const std::string plain = screenshot("window_unselected", "--scene 03_head_on --paused --frames 5");
+    const std::string selected = screenshot("window_selected", "--scene 03_head_on --paused --frames 5 --select 0 --explain");
+    ASSERT_FALSE(plain.empty() || selected.empty());
+    // The inspector: a dark window with blue fields at the top left of the scene, over the sky.
+    EXPECT_LT(fraction(load(plain), kSceneX0 + 20, 20, kSceneX0 + 300, 180, notSky), 0.05);
+    EXPECT_GT(fraction(load(selected), kSceneX0 + 20, 20, kSceneX0 + 300, 180, notSky), 0.8);
+    // The explainer: at the bottom left of the scene, above the timeline bar.
+    EXPECT_LT(fraction(load(plain), kSceneX0 + 20, 670, kSceneX0 + 400, 700, notSky), 0.3);
+    EXPECT_GT(fraction(load(selected), kSceneX0 + 20, 670, kSceneX0 + 400, 700, notSky), 0.8);
+}
+
+TEST(WindowInteraction, RefusedOptionsExitWithCodeTwo) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run not found";
+    for (const char* arguments : {"--scene 03_head_on --compare bogus=1 --frames 1",
+                                  "--scene 03_head_on --select 99 --frames 1", "--scene 03_head_on --explain --frames 1"}) {
+        const std::string command = "xvfb-run -a -s '-screen 0 1280x800x24' '" SPHERES_EXECUTABLE "' " +
+                                    std::string(arguments) + " >/dev/null 2>&1";
+        const int status = std::system(command.c_str());
+        ASSERT_TRUE(WIFEXITED(status)) << arguments;
+        EXPECT_EQ(WEXITSTATUS(status), 2) << arguments;
+    }
+}
+
+}  // namespace
