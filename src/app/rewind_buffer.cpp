@@ -26,6 +26,7 @@ void saveState(const physics::World& world, int keepContactsOf, WorldState& stat
             }
         }
     }
+    state.emitted = world.emitted;
     state.time = world.time;
     state.stepCount = world.stepCount;
 }
@@ -37,6 +38,7 @@ void restoreState(const WorldState& state, physics::World& world) {
     world.mass = state.mass;
     world.contactState = state.contactState;
     world.contacts = state.contacts;
+    world.emitted = state.emitted;
     world.time = state.time;
     world.stepCount = state.stepCount;
     world.workspace.cached = false;  // a fresh build gives the same pairs as the cache would

@@ -22,6 +22,7 @@ struct WorldState {
     std::vector<double> mass;          // kg
     std::vector<physics::ContactState> contactState;
     std::vector<physics::ContactEvent> contacts;  // of the kept sphere only (see push)
+    std::vector<int> emitted;          // per emitter of the scene
     double time = 0.0;                 // s
     std::uint64_t stepCount = 0;
 

@@ -85,6 +85,10 @@ struct World {
     double time = 0.0;                 // s, simulated
     std::uint64_t stepCount = 0;       // solver steps taken
     std::uint64_t seed = 1;            // drives the shuffled pair order
+    // Spheres placed so far by each emitter of the scene (scenes::emitDue). The solver
+    // never reads it; it travels with the state (rewind, save) so that spheres added in
+    // other ways (shot, thrown) are never mistaken for emissions.
+    std::vector<int> emitted;
 
     bool recordContacts = false;        // fill `contacts` (costs time: off unless shown)
     std::vector<ContactEvent> contacts;  // every response of the last step(), all substeps

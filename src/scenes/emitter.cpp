@@ -80,27 +80,16 @@ bool isClear(const physics::World& world, const glm::dvec3& p, double r) {
 }  // namespace
 
 std::vector<int> emittedCounts(const Scene& scene, const physics::World& world) {
-    std::vector<int> counts;
+    if (world.emitted.size() == scene.emitters.size()) return world.emitted;
+    std::vector<int> counts;  // a world not built from this scene: start from the file's counts
     for (const Emitter& e : scene.emitters) counts.push_back(std::clamp(e.emitted, 0, e.max));
-    const std::size_t built = builtSphereCount(scene);
-    std::size_t later = world.size() > built ? world.size() - built : 0;
-    if (counts.size() == 1) {  // the common case, without walking the schedule
-        const auto room = static_cast<std::size_t>(scene.emitters[0].max - counts[0]);
-        counts[0] += static_cast<int>(std::min(later, room));
-        return counts;
-    }
-    while (later > 0) {
-        const int e = nextEmitter(scene.emitters, counts);
-        if (e < 0) break;
-        ++counts[static_cast<std::size_t>(e)];
-        --later;
-    }
     return counts;
 }
 
 int emitDue(const Scene& scene, physics::World& world) {
     if (scene.emitters.empty()) return 0;
-    std::vector<int> counts = emittedCounts(scene, world);
+    world.emitted = emittedCounts(scene, world);
+    std::vector<int>& counts = world.emitted;
     int added = 0;
     // Each emitter places at most one sphere per call: a second one at the same spot
     // would overlap the first.

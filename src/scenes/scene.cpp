@@ -266,6 +266,7 @@ physics::World buildWorld(const Scene& scene) {
         checkEmitter(scene.emitters[i], i, world);
     }
     world.seed = scene.seed;
+    for (const Emitter& e : scene.emitters) world.emitted.push_back(std::clamp(e.emitted, 0, e.max));
     world.time = scene.time;
     world.stepCount = scene.stepCount;
     return world;

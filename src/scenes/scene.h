@@ -128,9 +128,9 @@ physics::World buildWorld(const Scene& scene);
 std::size_t builtSphereCount(const Scene& scene);
 
 // For each of scene.emitters, how many spheres it has emitted into `world` built from
-// `scene` (its `emitted` at the start plus its share of the spheres beyond
-// builtSphereCount). Emissions are taken in the order they fall due, (k + 1) period,
-// ties by emitter index; an emission that cannot be placed holds back the later ones.
+// `scene`: world.emitted, which buildWorld starts at each emitter's `emitted` and emitDue
+// advances. Emissions are taken in the order they fall due, (k + 1) period, ties by
+// emitter index; an emission that cannot be placed holds back the later ones.
 std::vector<int> emittedCounts(const Scene& scene, const physics::World& world);
 
 // The emitters' step: call after each time step (physics::step). Adds, at world.time,

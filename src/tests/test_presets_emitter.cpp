@@ -150,6 +150,21 @@ TEST(Emitters, EmitOneSphereEveryPeriodUpToMax) {
     EXPECT_EQ(scenes::emittedCounts(scene, w), std::vector<int>{5});
 }
 
+// A sphere added another way (shot from the camera, thrown) is not an emission: the
+// emitter keeps its own count and schedule.
+TEST(Emitters, SpheresAddedOtherwiseAreNotCountedAsEmissions) {
+    const Scene scene = shooter(0.25, 5);
+    physics::World w = scenes::buildWorld(scene);
+    stepAndEmit(scene, w, 15);  // t = 0.25 s: the first emission
+    ASSERT_EQ(scenes::emittedCounts(scene, w), std::vector<int>{1});
+    w.addSphere({0.5, 0.5, 1.5}, {0, 0, 0}, 0.05, 1.0);  // a shot
+    w.addSphere({0.5, -0.5, 1.5}, {0, 0, 0}, 0.05, 1.0);
+    EXPECT_EQ(scenes::emittedCounts(scene, w), std::vector<int>{1});
+    stepAndEmit(scene, w, 45);  // t = 1 s: emissions 2, 3 and 4 still come, on time
+    EXPECT_EQ(scenes::emittedCounts(scene, w), std::vector<int>{4});
+    EXPECT_EQ(w.size(), 6u);
+}
+
 TEST(Emitters, WaitWhileTheSpotIsTakenThenCatchUp) {
     Scene scene = shooter(0.1, 10);
     scene.spheres.push_back({{-0.8, 0.0, 1.05}, {0.0, 0.0, 0.0}, 0.05, 1.0});  // on the spot
