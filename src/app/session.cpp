@@ -1,5 +1,7 @@
 #include "app/session.h"
 
+#include <chrono>
+
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -55,10 +57,16 @@ int Session::advance(double realSeconds) {
     const bool slice = catchEveryStep_ && selected_ >= 0 && !primary_.paused && scale > 0.0;
     const double piece = slice ? 0.5 * primary_.params().timeStep / scale : realSeconds;  // s
     int steps = 0, otherSteps = 0;
-    for (double left = realSeconds; left > 0.0 && steps < Simulation::kMaxStepsPerFrame;) {
+    const auto start = std::chrono::steady_clock::now();
+    auto withinBudget = [&] {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() <=
+               primary_.wallBudget;
+    };
+    for (double left = realSeconds; left > 0.0 && steps < Simulation::kMaxStepsPerFrame && withinBudget();) {
         const double seconds = std::min(piece, left);
         left = slice ? left - seconds : 0.0;
         const int ran = primary_.advance(seconds);
+        if (comparison_) comparison_->simulation().wallBudget = primary_.wallBudget;
         otherSteps += comparison_ ? comparison_->simulation().advance(seconds) : 0;
         steps += ran;
         if (ran > 0) noteContacts();

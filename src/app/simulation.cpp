@@ -56,6 +56,7 @@ int Simulation::advance(double realSeconds) {
     if (paused) return 0;
     const double h = scene_.params.timeStep;
     accumulator_ += realSeconds * timeScale;
+    const auto start = std::chrono::steady_clock::now();
     int steps = 0;
     while (accumulator_ >= h && steps < kMaxStepsPerFrame) {
         if (!beforeStep() || !guardedStep()) break;
@@ -63,6 +64,7 @@ int Simulation::advance(double realSeconds) {
         accumulator_ -= h;
         ++steps;
         if (paused) break;  // an alarm stopped it
+        if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > wallBudget) break;
     }
     behind_ = !paused && accumulator_ >= h;
     if (behind_ || paused) accumulator_ = 0.0;

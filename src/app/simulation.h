@@ -3,6 +3,7 @@
 // world built from it, and the fixed-step clock. The window and the capture mode
 // both advance it through advance(), so they step exactly alike.
 #include <cstdint>
+#include <limits>
 
 #include "app/alarms.h"
 #include "app/history.h"
@@ -23,8 +24,9 @@ public:
     void setScene(scenes::Scene scene);
 
     // Real seconds since the last frame: scaled by timeScale, accumulated, and spent
-    // in whole steps of h. At most kMaxStepsPerFrame run per call; time beyond that
-    // is dropped (the "spiral of death" guard) and behindRealTime() says so.
+    // in whole steps of h. At most kMaxStepsPerFrame run per call, and no more once
+    // wallBudget is spent; time beyond that is dropped (the "spiral of death" guard)
+    // and behindRealTime() says so.
     // Returns the number of steps run. Does nothing while paused.
     int advance(double realSeconds);
     void singleStep();  // one step of h, paused or not
@@ -37,6 +39,10 @@ public:
 
     bool paused = false;
     double timeScale = 1.0;  // simulated seconds per real second
+    // s of wall time one advance() may spend stepping, after its first step; the
+    // window sets it so a slow scene runs in slow motion instead of freezing the frame.
+    // Unlimited by default: capture and tests step exactly as many steps as time asks.
+    double wallBudget = std::numeric_limits<double>::infinity();
 
     const physics::StepStats& lastStepStats() const { return lastStats_; }
     double lastStepMilliseconds() const { return lastStepMs_; }  // ms of wall time, one step

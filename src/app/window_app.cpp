@@ -33,6 +33,9 @@ namespace app {
 namespace {
 
 constexpr int kViewGap = 4;  // px between the two views side by side
+// s of wall time a frame may spend stepping: beyond it a heavy scene runs in slow
+// motion ("behind real time") and the window stays responsive.
+constexpr double kStepBudgetSeconds = 1.0 / 30.0;
 
 class WindowApp {
 public:
@@ -68,6 +71,7 @@ private:
     InteractionInput input_;
     std::vector<std::string> presets_;
     double fps_ = 0.0, renderMs_ = 0.0;
+    double frameSeconds_ = 0.0;  // s, a running average of the real frame time
     bool screenshotRequested_ = false;
     bool cameraFitted_ = false;  // fitted in the first frame, once the panel's width is known
 };
@@ -80,6 +84,7 @@ WindowApp::WindowApp(std::unique_ptr<platform::Window> window, scenes::Scene sce
       input_(session_),
       presets_(scenes::listPresets()) {
     simulation_.paused = options.paused;
+    simulation_.wallBudget = kStepBudgetSeconds;
     panel_.scenePath = resolveScenePath(options.scene);
     for (std::size_t k = 0; k < presets_.size(); ++k) {
         if (scenes::presetPath(presets_[k]) == panel_.scenePath) panel_.presetIndex = static_cast<int>(k);
@@ -306,8 +311,10 @@ int WindowApp::run() {
     for (int frames = 0; !window_->shouldClose(); ++frames) {
         const double now = window_->time();
         const double dt = std::min(now - last, 0.25);  // s; a stall (dragging the window) is not simulated
+        // Averaged in time, not in rate, so one near-instant first frame cannot inflate it.
+        frameSeconds_ = frames == 0 ? 0.0 : (frames == 1 ? now - last : 0.9 * frameSeconds_ + 0.1 * (now - last));
+        fps_ = frameSeconds_ > 0.0 ? 1.0 / frameSeconds_ : 0.0;
         last = now;
-        fps_ = dt > 0.0 ? 0.9 * fps_ + 0.1 / dt : fps_;
         const bool lastFrame = options_.frames > 0 && frames + 1 >= options_.frames;
         frame(dt);
         if (lastFrame && !options_.screenshot.empty() && !saveScreenshot(options_.screenshot)) {
