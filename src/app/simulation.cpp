@@ -54,11 +54,14 @@ void Simulation::updateRecording() {
 
 int Simulation::advance(double realSeconds) {
     if (paused) return 0;
+    // A step is due when the accumulator holds h up to rounding: without the slack,
+    // frames of exactly h would now and then run no step and then two.
     const double h = scene_.params.timeStep;
+    const double due = h * (1.0 - 1e-9);
     accumulator_ += realSeconds * timeScale;
     const auto start = std::chrono::steady_clock::now();
     int steps = 0;
-    while (accumulator_ >= h && steps < kMaxStepsPerFrame) {
+    while (accumulator_ >= due && steps < kMaxStepsPerFrame) {
         if (!beforeStep() || !guardedStep()) break;
         afterStep();
         accumulator_ -= h;
@@ -66,7 +69,7 @@ int Simulation::advance(double realSeconds) {
         if (paused) break;  // an alarm stopped it
         if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > wallBudget) break;
     }
-    behind_ = !paused && accumulator_ >= h;
+    behind_ = !paused && accumulator_ >= due;
     if (behind_ || paused) accumulator_ = 0.0;
     if (steps > 0) measureNow();
     return steps;
