@@ -1,0 +1,206 @@
+// What a machine without a GPU can show: the time to draw N spheres headless
+// (OSMesa's llvmpipe, or EGL), 1280x720, Renderer::draw + glFinish, median of several
+// frames after a warm-up, with and without MSAA. The spheres are the pile preset's
+// lattice as generated (radius 5 cm x (1000/N)^(1/3), the volume of the pile), seen
+// by the default camera fitted to the box, coloured by id. Also prints the time to
+// copy the world into a FrameSnapshot (the demo does it every frame) and how much of
+// the image the spheres cover.
+//   usage: spheres_bench_render --help
+#include <glad/gl.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "bench/bench_common.h"
+#include "platform/headless_context.h"
+#include "render/camera.h"
+#include "render/frame_snapshot.h"
+#include "render/image_io.h"
+#include "render/offscreen_target.h"
+#include "render/renderer.h"
+
+namespace {
+
+constexpr int kWidth = 1280;  // px
+constexpr int kHeight = 720;  // px
+
+const char* const kUsage =
+    "usage: spheres_bench_render [options]\n"
+    "Times drawing N spheres headless at 1280x720 (draw + glFinish); prints a markdown table.\n"
+    "  --backend B    auto (OSMesa, else EGL), osmesa or egl (default auto)\n"
+    "  --n LIST       sphere counts (default 1k,10k,100k,1M)\n"
+    "  --samples LIST MSAA samples per pixel, 0 for none (default 0,4: the window's 4)\n"
+    "  --frames F     timed frames per row, after 2 untimed ones (default 7)\n"
+    "  --quick        --n 1k,10k,100k --frames 3\n"
+    "  --save DIR     also write each drawn frame as DIR/render_<N>_<samples>.png\n";
+
+[[noreturn]] void usageError(const std::string& why) {
+    std::fprintf(stderr, "spheres_bench_render: %s\n%s", why.c_str(), kUsage);
+    std::exit(2);
+}
+
+struct Options {
+    platform::HeadlessBackend backend = platform::HeadlessBackend::Auto;
+    std::vector<int> counts{1000, 10000, 100000, 1000000};
+    std::vector<int> samples{0, 4};
+    int frames = 7;
+    std::string saveDirectory;  // empty: write no images
+};
+
+Options parseOptions(int argc, char** argv) {
+    Options o;
+    for (int k = 1; k < argc; ++k) {
+        const std::string option = argv[k];
+        if (option == "--help" || option == "-h") {
+            std::fputs(kUsage, stdout);
+            std::exit(0);
+        }
+        if (option == "--quick") {
+            o.counts = {1000, 10000, 100000};
+            o.frames = 3;
+            continue;
+        }
+        if (k + 1 >= argc) usageError(option + ": missing value (or unknown option)");
+        const std::string value = argv[++k];
+        if (option == "--backend") {
+            const auto backend = platform::parseHeadlessBackend(value);
+            if (!backend) usageError("--backend " + value + ": expected auto, osmesa or egl");
+            o.backend = *backend;
+        } else if (option == "--n") {
+            if (!bench::parseCounts(value, o.counts)) usageError("--n: expected e.g. 1k,10k");
+            for (int count : o.counts) {
+                if (count > scenes::kMaxGeneratedCount) usageError("--n: at most 1M spheres");
+            }
+        } else if (option == "--samples") {
+            o.samples.clear();
+            std::size_t start = 0;
+            while (start <= value.size()) {
+                const std::size_t comma = std::min(value.find(',', start), value.size());
+                const std::string part = value.substr(start, comma - start);
+                char* end = nullptr;
+                const long n = std::strtol(part.c_str(), &end, 10);
+                if (part.empty() || *end != '\0' || n < 0 || n > 16)
+                    usageError("--samples: expected numbers from 0 to 16, e.g. 0,4");
+                o.samples.push_back(int(n));
+                start = comma + 1;
+            }
+        } else if (option == "--save") {
+            o.saveDirectory = value;
+        } else if (option == "--frames") {
+            o.frames = std::atoi(value.c_str());
+            if (o.frames < 1 || o.frames > 1000) usageError("--frames: from 1 to 1000");
+        } else {
+            usageError("unknown option " + option);
+        }
+    }
+    return o;
+}
+
+const char* glText(GLenum name) {
+    const auto* text = reinterpret_cast<const char*>(glGetString(name));
+    return text ? text : "?";
+}
+
+// The fraction of pixels that differ between two images of the same size: with
+// and without the spheres, a check that they were drawn and how much they cover.
+double coverage(const render::Image& with, const render::Image& without) {
+    long differ = 0;
+    for (std::size_t k = 0; k + 3 < with.rgba.size() && k + 3 < without.rgba.size(); k += 4) {
+        if (!std::equal(&with.rgba[k], &with.rgba[k] + 3, &without.rgba[k])) ++differ;
+    }
+    return double(differ) / (double(with.width) * with.height);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const Options o = parseOptions(argc, argv);
+    std::string error;
+    const auto context = platform::createHeadless(o.backend, &error);
+    if (!context) {
+        std::fprintf(stderr, "spheres_bench_render: no headless GL context: %s\n", error.c_str());
+        return 2;
+    }
+    render::Renderer renderer;
+    if (const std::string why = renderer.init(); !why.empty()) {
+        std::fprintf(stderr, "spheres_bench_render: renderer: %s\n", why.c_str());
+        return 2;
+    }
+    const char* threads = std::getenv("LP_NUM_THREADS");
+    std::printf("Machine: %s, %u hardware threads; load average (1, 5, 15 min) at start: %s\n",
+                bench::cpuModel().c_str(), std::thread::hardware_concurrency(),
+                bench::loadAverage().c_str());
+    std::printf("GL: %s backend, %s, %s%s%s\n\n", context->name(), glText(GL_RENDERER),
+                glText(GL_VERSION), threads ? ", LP_NUM_THREADS=" : "", threads ? threads : "");
+    std::printf(
+        "| N | MSAA | ms per frame (draw + glFinish) | frames per second | "
+        "snapshot ms | covered |\n|---:|---:|---:|---:|---:|---:|\n");
+    std::fflush(stdout);
+
+    render::OffscreenTarget target;
+    for (int count : o.counts) {
+        const auto built = std::chrono::steady_clock::now();
+        const scenes::Scene scene = bench::pileOf(count);
+        const physics::World world = scenes::buildWorld(scene);
+        std::fprintf(stderr, "N=%d: pile built in %.1f s\n", count, bench::secondsSince(built));
+
+        render::FrameSnapshot snapshot;
+        std::vector<double> snapshotSeconds;
+        for (int k = 0; k < 5; ++k) {
+            const auto start = std::chrono::steady_clock::now();
+            render::snapshotSpheres(world, render::ColorBy::Id, snapshot);
+            snapshotSeconds.push_back(bench::secondsSince(start));
+        }
+        render::snapshotPlanes(world, snapshot);
+        render::FrameSnapshot emptyBox;  // the same box without its spheres
+        render::snapshotPlanes(world, emptyBox);
+        const glm::vec3 half(0.5f * glm::vec3(scene.box->size));
+        render::Camera camera;
+        camera.reset(glm::vec3(-half.x, -half.y, 0.0f), glm::vec3(half.x, half.y, 2.0f * half.z),
+                     float(kWidth) / float(kHeight));
+
+        for (int samples : o.samples) {
+            if (const std::string why = target.resize(kWidth, kHeight, samples); !why.empty()) {
+                std::fprintf(stderr, "spheres_bench_render: %d samples: %s\n", samples,
+                             why.c_str());
+                return 2;
+            }
+            std::vector<double> frames;
+            for (int frame = 0; frame < 2 + o.frames; ++frame) {
+                target.bind();
+                const auto start = std::chrono::steady_clock::now();
+                renderer.draw(snapshot, camera, 0, 0, kWidth, kHeight);
+                glFinish();
+                if (frame >= 2) frames.push_back(bench::secondsSince(start));
+            }
+            if (const GLenum glError = glGetError(); glError != GL_NO_ERROR) {
+                std::fprintf(stderr, "spheres_bench_render: GL error 0x%x\n", glError);
+                return 2;
+            }
+            const double seconds = bench::median(frames);
+            const render::Image drawn = target.read();
+            if (!o.saveDirectory.empty()) {
+                const std::string path = o.saveDirectory + "/render_" + std::to_string(count) +
+                                         "_" + std::to_string(samples) + ".png";
+                if (!render::writePng(path, drawn.width, drawn.height, drawn.rgba))
+                    std::fprintf(stderr, "spheres_bench_render: cannot write %s\n", path.c_str());
+            }
+            target.bind();
+            renderer.draw(emptyBox, camera, 0, 0, kWidth, kHeight);
+            const render::Image empty = target.read();
+            std::printf("| %s | %s | %.1f | %.1f | %.2f | %.0f %% |\n",
+                        bench::grouped(count).c_str(),
+                        samples > 0 ? (std::to_string(samples) + "×").c_str() : "off",
+                        1e3 * seconds, 1.0 / seconds, 1e3 * bench::median(snapshotSeconds),
+                        100.0 * coverage(drawn, empty));
+            std::fflush(stdout);
+        }
+    }
+    std::printf("\nLoad average (1, 5, 15 min) at the end: %s\n", bench::loadAverage().c_str());
+    return 0;
+}
