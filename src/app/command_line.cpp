@@ -18,12 +18,28 @@ namespace {
 
 constexpr int kBadInput = 2;
 
+// A whole number at least `least`, with a message a person can read (CLI11's own
+// range check prints the largest double in full).
+CLI::Validator wholeNumberFrom(long long least) {
+    return CLI::Validator(
+        [least](std::string& text) -> std::string {
+            try {
+                std::size_t used = 0;
+                const long long value = std::stoll(text, &used);
+                if (used == text.size() && value >= least) return {};
+            } catch (const std::exception&) {
+            }
+            return "must be a whole number, " + std::to_string(least) + " or more (got " + text + ")";
+        },
+        "INT>=" + std::to_string(least));
+}
+
 void addSimulate(CLI::App& cli, SimulateOptions& o) {
     CLI::App* sim = cli.add_subcommand("simulate", "Run a scene without any window or GL and print a summary");
     sim->add_option("--scene", o.scene, "Scene file or preset name (see `spheres presets`)")->required();
-    sim->add_option("--steps", o.steps, "Time steps of h to run")->check(CLI::NonNegativeNumber);
+    sim->add_option("--steps", o.steps, "Time steps of h to run")->required()->check(wholeNumberFrom(0));
     sim->add_option("--set", o.settings, "Override a parameter: name=value (repeatable)");
-    sim->add_option("--every", o.every, "Write diagnostics every K steps")->check(CLI::PositiveNumber);
+    sim->add_option("--every", o.every, "Write diagnostics every K steps")->check(wholeNumberFrom(1));
     sim->add_option("--out", o.out, "Diagnostics file: .csv or .jsonl");
     sim->add_option("--state", o.state, "Final state of every sphere (id, p, v, r, m): .csv");
     sim->add_option("--save", o.save, "Save the final state and parameters as a scene .json");
@@ -56,7 +72,7 @@ void addCapture(CLI::App& cli, CaptureOptions& o) {
 void addWindowOptions(CLI::App& cli, WindowAppOptions& o) {
     cli.add_option("--scene", o.scene, "Scene file or preset name (see `spheres presets`)");
     cli.add_option("--set", o.settings, "Override a parameter: name=value (repeatable)");
-    cli.add_option("--frames", o.frames, "Run this many frames, then exit")->check(CLI::PositiveNumber);
+    cli.add_option("--frames", o.frames, "Run this many frames, then exit")->check(wholeNumberFrom(1));
     cli.add_option("--screenshot", o.screenshot, "Write the last frame to this PNG file");
     cli.add_flag("--paused", o.paused, "Start paused");
     cli.add_option("--width", o.width, "Window width (screen coordinates)")->check(CLI::Range(320, 8192));
@@ -64,7 +80,7 @@ void addWindowOptions(CLI::App& cli, WindowAppOptions& o) {
     cli.add_option("--compare", o.compare,
                    "Side by side: a second view with these overrides, name=value[,name=value] (e.g. method=velocity)");
     cli.add_option("--select", o.select, "Start with this sphere selected (the inspector open)")
-        ->check(CLI::NonNegativeNumber);
+        ->check(wholeNumberFrom(0));
     cli.add_flag("--explain", o.explain, "With --select: open \"explain this contact\"");
 }
 

@@ -1,6 +1,7 @@
 #include "app/scene_source.h"
 
 #include <filesystem>
+#include <fstream>
 
 #include "scenes/parameters.h"
 #include "scenes/presets.h"
@@ -10,8 +11,17 @@ namespace app {
 
 // A preset matches by its full name ("11_pile"), without its number ("pile"), or by
 // any part of its name that no other preset shares ("cradle").
+void checkWritable(const std::string& flag, const std::string& path) {
+    if (path.empty()) return;
+    std::ofstream probe(path, std::ios::app);
+    if (!probe) throw UsageError(flag + " " + path + ": cannot open the file for writing");
+}
+
 std::string resolveScenePath(const std::string& nameOrPath) {
     if (std::filesystem::is_regular_file(nameOrPath)) return nameOrPath;
+    if (std::filesystem::is_directory(nameOrPath)) {
+        throw UsageError("--scene " + nameOrPath + ": is a folder, not a scene file");
+    }
     std::vector<std::string> partial;
     for (const std::string& stem : scenes::listPresets()) {
         const std::size_t underscore = stem.find('_');

@@ -12,6 +12,10 @@ struct UsageError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
+// Throws UsageError "FLAG PATH: cannot open the file for writing" unless `path` is
+// empty or can be written: output files are checked before any work starts.
+void checkWritable(const std::string& flag, const std::string& path);
+
 // `nameOrPath` is a file, or a preset name with or without its number and .json
 // ("pile", "11_pile"). Then every "name=value" of `settings` is applied, in order.
 // Throws scenes::SceneError (file:line:col) or UsageError.

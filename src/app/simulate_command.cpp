@@ -25,12 +25,6 @@ void writeState(const std::string& path, const physics::World& world) {
     }
 }
 
-void checkWritable(const std::string& flag, const std::string& path) {
-    if (path.empty()) return;
-    std::ofstream probe(path, std::ios::app);
-    if (!probe) throw UsageError(flag + " " + path + ": cannot open the file for writing");
-}
-
 }  // namespace
 
 int runSimulate(const SimulateOptions& options) {
@@ -44,14 +38,14 @@ int runSimulate(const SimulateOptions& options) {
 
     physics::World world = scenes::buildWorld(scene);
     const physics::Params& params = scene.params;
-    if (log) log->write(world.stepCount, world.time, physics::measure(world, params));
+    if (log) log->write(0, world.time, physics::measure(world, params));
     double seconds = 0.0;
     for (std::int64_t k = 1; k <= options.steps; ++k) {
         const auto start = std::chrono::steady_clock::now();
         physics::step(world, params);
         scenes::emitDue(scene, world);  // the course's emitter, as the window and capture do
         seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        if (log && k % every == 0) log->write(world.stepCount, world.time, physics::measure(world, params));
+        if (log && k % every == 0) log->write(static_cast<std::uint64_t>(k), world.time, physics::measure(world, params));
     }
 
     const double sphereSteps = static_cast<double>(options.steps) * params.substeps *

@@ -331,6 +331,7 @@ int WindowApp::run() {
 
 int runWindowApp(const WindowAppOptions& options) {
     scenes::Scene scene = loadSceneWithSettings(options.scene, options.settings);
+    checkWritable("--screenshot", options.screenshot);
     if (!options.compare.empty()) {
         if (const std::string error = checkOverrides(scene, splitOverrides(options.compare)); !error.empty()) {
             throw UsageError("--compare " + error);

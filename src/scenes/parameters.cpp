@@ -152,8 +152,9 @@ std::vector<Parameter> makeTable() {
         real("mu", "\u03bc  static-contact friction", "", 0.0, 1.0, kDefaults.mu,
              "Slide 13: friction v \u2190 \u03bc v on both spheres of a static contact. A damping "
              "factor applied each time a static contact is handled (once per pass), not Coulomb's "
-             "friction coefficient: 1 keeps the "
-             "velocity, 0 stops it.",
+             "friction coefficient: 1 keeps the velocity, 0 stops it. With the momentum-conserving "
+             "response, a static sphere-sphere contact damps the relative tangential velocity "
+             "instead (equal and opposite impulses), so momentum stays exact.",
              param<&Params::mu>()),
         real("h", "h  time step", "s", 1e-4, 0.1, kDefaults.timeStep,
              "Slide 2: v \u2190 v + h g, p \u2190 p + h v. One step of the fixed-step loop, run as "

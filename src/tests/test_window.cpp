@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <string>
+#include <utility>
 
 #include "render/image_io.h"
 
@@ -111,4 +112,32 @@ TEST(Window, WithoutADisplayExitsWithCodeTwoAndSaysHowToRunHeadless) {
     std::fclose(file);
     EXPECT_NE(std::string(line).find("cannot open a window"), std::string::npos) << line;
     EXPECT_NE(std::string(line).find("spheres capture"), std::string::npos) << line;
+}
+
+// Bad input on the command line: one line naming the problem, exit code 2, before any work.
+TEST(CommandLine, BadInputExitsWithCodeTwoAndOneLineNamingIt) {
+    const std::pair<std::string, std::string> cases[] = {
+        {"simulate --scene pile --steps -1", "--steps"},
+        {"simulate --scene pile --steps 5 --every 0 --out x.csv", "--every"},
+        {"simulate --scene pile", "--steps"},
+        {"simulate --scene /tmp --steps 1", "folder"},
+        {"simulate --scene pile --steps 1 --set alpha=2", "alpha"},
+        {"simulate --scene pile --steps 1 --out /nonexistent/x.csv", "/nonexistent/x.csv"},
+        {"--scene pile --frames 1 --screenshot /nonexistent/x.png", "--screenshot"},
+    };
+    for (const auto& [arguments, named] : cases) {
+        const fs::path log = fs::path(SPHERES_TEST_OUTPUT_DIR) / "bad_input.txt";
+        const std::string command = "cd '" SPHERES_TEST_OUTPUT_DIR "' && '" SPHERES_EXECUTABLE "' " + arguments +
+                                    " >/dev/null 2>'" + log.string() + "'";
+        const int status = std::system(command.c_str());
+        ASSERT_TRUE(WIFEXITED(status)) << arguments;
+        EXPECT_EQ(WEXITSTATUS(status), 2) << arguments;
+        std::FILE* file = std::fopen(log.c_str(), "r");
+        ASSERT_NE(file, nullptr);
+        char first[1024] = {}, second[1024] = {};
+        ASSERT_NE(std::fgets(first, sizeof first, file), nullptr) << arguments;
+        EXPECT_EQ(std::fgets(second, sizeof second, file), nullptr) << arguments << ": more than one line";
+        std::fclose(file);
+        EXPECT_NE(std::string(first).find(named), std::string::npos) << arguments << ": " << first;
+    }
 }
