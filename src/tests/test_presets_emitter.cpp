@@ -2,6 +2,8 @@
 // emit_period parameter, scenes::emitDue) and thin walls ("thickness" on a plane).
 #include <gtest/gtest.h>
 
+#include "scene_error_checks.h"
+
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <string>
@@ -15,27 +17,6 @@
 namespace {
 
 using scenes::Scene;
-
-bool contains(const std::string& text, const std::string& part) {
-    return text.find(part) != std::string::npos;
-}
-
-std::string errorOf(const std::string& text) {
-    try {
-        scenes::parseScene(text, "bad.json");
-    } catch (const scenes::SceneError& e) {
-        return e.what();
-    }
-    return "";
-}
-
-void expectError(const std::string& text, const std::string& location,
-                 std::initializer_list<const char*> words) {
-    const std::string message = errorOf(text);
-    SCOPED_TRACE(message);
-    EXPECT_EQ(message.rfind("bad.json:" + location + ": ", 0), 0u);
-    for (const char* word : words) EXPECT_TRUE(contains(message, word)) << word;
-}
 
 void stepAndEmit(const Scene& scene, physics::World& world, int steps) {
     for (int k = 0; k < steps; ++k) {
