@@ -1,55 +1,167 @@
 // The solver's speed on the pile preset (the shipped preset with "pile" in its name)
-// at N = 1k, 10k, 100k: the grid broad phase against the lecture's O(N^2) loop (up
-// to 10k). The radius shrinks as N^(-1/3) so that the pile keeps its volume. Prints
-// ms per solver step and ns per sphere-step, once the pile has landed (3 s of
-// warm-up; the O(N^2) loop is timed while it falls, which changes nothing for it).
-//   usage: spheres_bench_solver [max N] [passes K]
-#include <chrono>
+// from N = 1k to 1M, on one thread and on more, and the log-log slope of time
+// against N. The radius shrinks as N^(-1/3) so that the pile keeps its volume.
+//
+// For each N the pile falls and lands first (--warm-up simulated seconds, on the
+// most threads asked for); then every thread count runs the same number of steps
+// from that same state, interleaved (1, 2, 1, 2, ...), and a row gives the median.
+// The "hash" column is the state hash after the timed steps of the first
+// repetition: equal for every thread count, or the row says DIFFERENT (and the
+// program exits with 1), since threads must never change the result.
+//   usage: spheres_bench_solver --help
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
+#include <map>
 #include <string>
+#include <vector>
 
 #include "bench/bench_common.h"
+#include "physics/diagnostics.h"
 #include "physics/step.h"
 
 namespace {
 
-scenes::Scene pileOf(int count, int passes, const char* broadPhase) {
+struct Options {
+    std::vector<int> counts{1000, 4000, 16000, 64000, 100000, 256000, 1000000};
+    std::vector<int> threads{1, 2};
+    int passes = 4;
+    std::string order = "slabs";
+    double warmUp = 1.5;  // s simulated before timing: the pile has landed
+    double block = 0.5;   // s of wall time per timed repetition (at least one step)
+    int repetitions = 3;
+};
+
+const char* const kUsage =
+    "usage: spheres_bench_solver [options]\n"
+    "Times our solver on the pile, N = 1k to 1M, on 1 and 2 threads; prints a markdown table.\n"
+    "  --quick        N = 1k,4k,16k,64k,100k, 2 repetitions\n"
+    "  --n LIST       sphere counts (default 1k,4k,16k,64k,100k,256k,1M)\n"
+    "  --threads LIST thread counts (default 1,2)\n"
+    "  --k K          passes (default 4)\n"
+    "  --order NAME   pair order: index, reversed, shuffled or slabs (default slabs,\n"
+    "                 the only one whose pair passes run on several threads)\n"
+    "  --warm-up S    simulated seconds before timing (default 1.5)\n"
+    "  --reps R       timed repetitions (default 3)\n";
+
+[[noreturn]] void usageError(const std::string& why) {
+    std::fprintf(stderr, "spheres_bench_solver: %s\n%s", why.c_str(), kUsage);
+    std::exit(2);
+}
+
+std::vector<int> countsFrom(const std::string& option, const char* text) {
+    std::vector<int> counts;
+    if (!bench::parseCounts(text, counts)) usageError(option + " " + text + ": expected numbers such as 1k,64k,1M");
+    return counts;
+}
+
+Options parseOptions(int argc, char** argv) {
+    Options o;
+    for (int k = 1; k < argc; ++k) {
+        const std::string option = argv[k];
+        if (option == "--help" || option == "-h") {
+            std::fputs(kUsage, stdout);
+            std::exit(0);
+        }
+        if (option == "--quick") {
+            o.counts = {1000, 4000, 16000, 64000, 100000};
+            o.repetitions = 2;
+            continue;
+        }
+        if (k + 1 >= argc) usageError(option + ": expected a value after it");
+        const char* value = argv[++k];
+        if (option == "--n") o.counts = countsFrom(option, value);
+        else if (option == "--threads") o.threads = countsFrom(option, value);
+        else if (option == "--k") o.passes = countsFrom(option, value).front();
+        else if (option == "--order") o.order = value;
+        else if (option == "--warm-up") o.warmUp = std::atof(value);
+        else if (option == "--reps") o.repetitions = countsFrom(option, value).front();
+        else usageError("unknown option " + option);
+    }
+    return o;
+}
+
+scenes::Scene pileOf(int count, const Options& options, int threads) {
     scenes::Scene scene = bench::pileOf(count);
-    bench::set(scene, "passes=" + std::to_string(passes));
-    bench::set(scene, std::string("broadphase=") + broadPhase);
+    bench::set(scene, "passes=" + std::to_string(options.passes));
+    bench::set(scene, "order=" + options.order);
+    bench::set(scene, "threads=" + std::to_string(threads));
     return scene;
 }
 
-void measure(int count, int passes, const char* broadPhase, int warmup, int timed) {
-    const scenes::Scene scene = pileOf(count, passes, broadPhase);
-    physics::World world = scenes::buildWorld(scene);
-    for (int k = 0; k < warmup; ++k) physics::step(world, scene.params);
-    const auto start = std::chrono::steady_clock::now();
-    physics::StepStats stats;
-    for (int k = 0; k < timed; ++k) stats += physics::step(world, scene.params);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const double solverSteps = double(timed) * scene.params.substeps;
-    std::printf("%-9s %8d %3d %12.3f %14.1f %9.0f %%\n", broadPhase, count, passes, 1e3 * seconds / solverSteps,
-                1e9 * seconds / (solverSteps * count), 100.0 * double(stats.broadPhaseBuilds) / solverSteps);
-    std::fflush(stdout);
+struct Run {
+    std::vector<double> seconds;  // per repetition
+    std::uint64_t builds = 0;
+    std::uint64_t hash = 0;       // after the first repetition
+};
+
+struct Row {
+    int count = 0;
+    double solverSteps = 0.0;
+    std::map<int, Run> byThreads;
+};
+
+Row measure(int count, const Options& options) {
+    const int mostThreads = *std::max_element(options.threads.begin(), options.threads.end());
+    scenes::Scene scene = pileOf(count, options, mostThreads);
+    physics::World start = scenes::buildWorld(scene);
+    const auto warmUpStart = std::chrono::steady_clock::now();
+    const int warmUpSteps = int(std::lround(options.warmUp / scene.params.timeStep));
+    for (int k = 0; k < warmUpSteps; ++k) physics::step(start, scene.params);
+    const double perStep = bench::secondsSince(warmUpStart) / std::max(1, warmUpSteps);
+    const int steps = std::max(1, int(options.block / std::max(perStep, 1e-9)));
+
+    Row row;
+    row.count = count;
+    row.solverSteps = double(steps) * scene.params.substeps;
+    for (int rep = 0; rep < options.repetitions; ++rep) {
+        for (int threads : options.threads) {
+            const scenes::Scene timed = pileOf(count, options, threads);
+            physics::World world = start;
+            physics::StepStats stats;
+            const auto begin = std::chrono::steady_clock::now();
+            for (int k = 0; k < steps; ++k) stats += physics::step(world, timed.params);
+            Run& run = row.byThreads[threads];
+            run.seconds.push_back(bench::secondsSince(begin));
+            run.builds = stats.broadPhaseBuilds;
+            if (rep == 0) run.hash = physics::stateHash(world);
+        }
+    }
+    return row;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-    const int maxCount = argc > 1 ? std::atoi(argv[1]) : 100000;
-    const int passes = argc > 2 ? std::atoi(argv[2]) : 4;
-    std::printf("pile (%s), one thread, h/substeps per solver step\n",
-                bench::presetContaining("pile").c_str());
-    std::printf("%-9s %8s %3s %12s %14s %10s\n", "broad", "N", "K", "ms/step", "ns/sphere-step", "rebuilds");
-    for (int count : {1000, 10000, 100000}) {
-        if (count > maxCount) break;
-        measure(count, passes, "grid", 180, count >= 100000 ? 10 : 30);
+    const Options options = parseOptions(argc, argv);
+    std::printf("Pile (%s), K = %d, order %s, %s; load average %s at the start\n\n",
+                bench::presetContaining("pile").c_str(), options.passes, options.order.c_str(),
+                bench::cpuModel().c_str(), bench::loadAverage().c_str());
+    std::printf("| N | threads | ms per solver step | ns per sphere-step | × one thread | rebuilds | hash |\n");
+    std::printf("|---:|---:|---:|---:|---:|---:|---|\n");
+    std::map<int, std::vector<double>> counts, times;  // by threads
+    bool same = true;
+    for (int count : options.counts) {
+        const Row row = measure(count, options);
+        const double baseline = bench::median(row.byThreads.begin()->second.seconds);
+        const std::uint64_t firstHash = row.byThreads.begin()->second.hash;
+        for (const auto& [threads, run] : row.byThreads) {
+            const double seconds = bench::median(run.seconds);
+            const bool equal = run.hash == firstHash;
+            same = same && equal;
+            std::printf("| %s | %d | %.3f | %.0f | %.2f | %.0f %% | %016llx%s |\n", bench::grouped(count).c_str(),
+                        threads, 1e3 * seconds / row.solverSteps, 1e9 * seconds / (row.solverSteps * count),
+                        baseline / seconds, 100.0 * double(run.builds) / row.solverSteps,
+                        static_cast<unsigned long long>(run.hash), equal ? "" : " DIFFERENT");
+            counts[threads].push_back(count);
+            times[threads].push_back(seconds / row.solverSteps);
+        }
+        std::fflush(stdout);
     }
-    for (int count : {1000, 10000}) {
-        if (count > maxCount) break;
-        measure(count, passes, "allpairs", 2, count >= 10000 ? 1 : 10);
+    std::printf("\nlog-log slope of time per step against N:");
+    for (const auto& [threads, t] : times) {
+        std::printf(" %.3f (%d thread%s)", bench::logLogSlope(counts[threads], t), threads, threads > 1 ? "s" : "");
     }
-    return 0;
+    std::printf("\n%s\n", same ? "every thread count reached the same state" : "THREADS CHANGED THE RESULT");
+    return same ? 0 : 1;
 }

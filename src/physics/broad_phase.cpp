@@ -6,6 +6,8 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include "physics/thread_team.h"
+
 namespace physics {
 namespace {
 
@@ -72,17 +74,13 @@ void sortByCell(const World& world, const GridShape& grid, Workspace& ws) {
     for (std::size_t c = cellCount; c > 0; --c) ws.cellStart[c] = ws.cellStart[c - 1];
     ws.cellStart[0] = 0;
     ws.cellOrdered.resize(n);
+    ws.slotOfSphere.resize(n);
     for (std::size_t k = 0; k < n; ++k) {
         const std::uint32_t i = ws.sphereByCell[k];
         ws.cellOrdered[k] = glm::dvec4(world.position[i], world.radius[i]);
+        ws.slotOfSphere[i] = static_cast<std::uint32_t>(k);
     }
 }
-
-// The 13 neighbour cells "after" a cell (z, then y, then x): with the cell itself,
-// every pair of neighbouring cells is visited exactly once.
-constexpr int kForward[13][3] = {{1, 0, 0},  {-1, 1, 0}, {0, 1, 0},  {1, 1, 0},  {-1, -1, 1},
-                                 {0, -1, 1}, {1, -1, 1}, {-1, 0, 1}, {0, 0, 1},  {1, 0, 1},
-                                 {-1, 1, 1}, {0, 1, 1},  {1, 1, 1}};
 
 bool withinReach(const glm::dvec4& a, const glm::dvec4& b, double margin) {
     const double reach = a.w + b.w + margin;
@@ -90,57 +88,32 @@ bool withinReach(const glm::dvec4& a, const glm::dvec4& b, double margin) {
     return glm::dot(delta, delta) <= reach * reach;
 }
 
-// Tests the spheres at cell-ordered positions [a0, a1) against [b0, b1).
-std::uint64_t testRange(Workspace& ws, std::uint32_t a0, std::uint32_t a1, std::uint32_t b0,
-                        std::uint32_t b1, bool sameCell, double margin) {
+// Appends the pairs (i, j > i) within reach of sphere i, sorted by j, and returns
+// the distance tests made. The 27 cells around i's are 9 runs of 3 cells along x,
+// each one contiguous range of the cell-sorted spheres.
+std::uint64_t pairsOf(std::uint32_t i, const GridShape& grid, double margin, const Workspace& ws,
+                      std::vector<SpherePair>& out) {
+    const std::size_t first = out.size();
+    const glm::dvec4 sphere = ws.cellOrdered[ws.slotOfSphere[i]];
+    const glm::ivec3 c = grid.cellOf(glm::dvec3(sphere));
+    const int x0 = std::max(c.x - 1, 0), x1 = std::min(c.x + 1, grid.dims.x - 1);
     std::uint64_t tests = 0;
-    for (std::uint32_t a = a0; a < a1; ++a) {
-        for (std::uint32_t b = sameCell ? a + 1 : b0; b < b1; ++b) {
-            ++tests;
-            if (!withinReach(ws.cellOrdered[a], ws.cellOrdered[b], margin)) continue;
-            const std::uint32_t i = ws.sphereByCell[a], j = ws.sphereByCell[b];
-            ws.unorderedPairs.push_back({std::min(i, j), std::max(i, j)});
-        }
-    }
-    return tests;
-}
-
-std::uint64_t scanCells(const GridShape& grid, double margin, Workspace& ws) {
-    std::uint64_t tests = 0;
-    for (int z = 0; z < grid.dims.z; ++z) {
-        for (int y = 0; y < grid.dims.y; ++y) {
-            for (int x = 0; x < grid.dims.x; ++x) {
-                const std::uint32_t c = grid.linear({x, y, z});
-                const std::uint32_t a0 = ws.cellStart[c], a1 = ws.cellStart[c + 1];
-                if (a0 == a1) continue;
-                tests += testRange(ws, a0, a1, a0, a1, true, margin);
-                for (const auto& d : kForward) {
-                    const glm::ivec3 n(x + d[0], y + d[1], z + d[2]);
-                    if (glm::any(glm::lessThan(n, glm::ivec3(0))) ||
-                        glm::any(glm::greaterThanEqual(n, grid.dims))) continue;
-                    const std::uint32_t cn = grid.linear(n);
-                    tests += testRange(ws, a0, a1, ws.cellStart[cn], ws.cellStart[cn + 1], false, margin);
-                }
+    for (int z = std::max(c.z - 1, 0); z <= std::min(c.z + 1, grid.dims.z - 1); ++z) {
+        for (int y = std::max(c.y - 1, 0); y <= std::min(c.y + 1, grid.dims.y - 1); ++y) {
+            const std::uint32_t end = ws.cellStart[grid.linear({x1, y, z}) + 1];
+            for (std::uint32_t k = ws.cellStart[grid.linear({x0, y, z})]; k < end; ++k) {
+                const std::uint32_t j = ws.sphereByCell[k];
+                if (j <= i) continue;
+                ++tests;
+                if (withinReach(sphere, ws.cellOrdered[k], margin)) out.push_back({i, j});
             }
         }
     }
-    return tests;
-}
-
-// Puts the pairs in the lecture's loop order (i, then j) with a counting sort by i
-// and a short sort of each i's few partners.
-void orderByIndex(std::size_t sphereCount, Workspace& ws) {
-    ws.pairStart.assign(sphereCount + 1, 0);
-    for (const SpherePair& p : ws.unorderedPairs) ++ws.pairStart[p.i + 1];
-    for (std::size_t i = 0; i < sphereCount; ++i) ws.pairStart[i + 1] += ws.pairStart[i];
-    ws.pairs.resize(ws.unorderedPairs.size());
-    for (const SpherePair& p : ws.unorderedPairs) ws.pairs[ws.pairStart[p.i]++] = p;
-    auto begin = ws.pairs.begin();
-    for (std::size_t i = 0; i < sphereCount; ++i) {  // pairStart[i] now ends sphere i's run
-        const auto end = ws.pairs.begin() + ws.pairStart[i];
-        std::sort(begin, end, [](const SpherePair& a, const SpherePair& b) { return a.j < b.j; });
-        begin = end;
+    // A handful of partners: insertion sort by j.
+    for (std::size_t a = first + 1; a < out.size(); ++a) {
+        for (std::size_t b = a; b > first && out[b].j < out[b - 1].j; --b) std::swap(out[b], out[b - 1]);
     }
+    return tests;
 }
 
 }  // namespace
@@ -170,20 +143,37 @@ std::uint64_t findPairsAllPairs(const World& world, double margin, std::vector<S
     return tests;
 }
 
-std::uint64_t findPairsGrid(const World& world, double margin, Workspace& workspace) {
+std::uint64_t findPairsGrid(const World& world, double margin, Workspace& workspace, int threads) {
     workspace.pairs.clear();
-    if (world.size() < 2) return 0;
+    const auto n = static_cast<std::uint32_t>(world.size());
+    if (n < 2) return 0;
     const GridShape grid = chooseGrid(world, margin);
     sortByCell(world, grid, workspace);
-    workspace.unorderedPairs.clear();
-    const std::uint64_t tests = scanCells(grid, margin, workspace);
-    orderByIndex(world.size(), workspace);
-    return tests;
+    // Each task finds the pairs of one range of first spheres i, in index order, so
+    // that their concatenation is in index order whatever the number of tasks.
+    const int tasks = threads > 1 ? 4 * threads : 1;
+    workspace.taskPairs.resize(std::size_t(tasks));
+    std::vector<std::uint64_t> tests(std::size_t(tasks), 0);
+    runTasks(threads, tasks, [&](int t) {
+        std::vector<SpherePair>& out = workspace.taskPairs[std::size_t(t)];
+        out.clear();
+        const std::uint32_t begin = std::uint32_t(std::uint64_t(n) * t / tasks);
+        const std::uint32_t end = std::uint32_t(std::uint64_t(n) * (t + 1) / tasks);
+        for (std::uint32_t i = begin; i < end; ++i) tests[std::size_t(t)] += pairsOf(i, grid, margin, workspace, out);
+    });
+    std::uint64_t total = 0;
+    for (int t = 0; t < tasks; ++t) {
+        const std::vector<SpherePair>& part = workspace.taskPairs[std::size_t(t)];
+        workspace.pairs.insert(workspace.pairs.end(), part.begin(), part.end());
+        total += tests[std::size_t(t)];
+    }
+    return total;
 }
 
-std::uint64_t findPairs(BroadPhase kind, const World& world, double margin, Workspace& workspace) {
+std::uint64_t findPairs(BroadPhase kind, const World& world, double margin, Workspace& workspace,
+                        int threads) {
     if (kind == BroadPhase::AllPairs) return findPairsAllPairs(world, margin, workspace.pairs);
-    return findPairsGrid(world, margin, workspace);
+    return findPairsGrid(world, margin, workspace, threads);
 }
 
 }  // namespace physics

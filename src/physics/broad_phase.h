@@ -10,15 +10,18 @@
 
 namespace physics {
 
-// Fills workspace.pairs; returns the number of distance tests made.
-std::uint64_t findPairs(BroadPhase kind, const World& world, double margin, Workspace& workspace);
+// Fills workspace.pairs; returns the number of distance tests made. The grid
+// spreads its work over `threads` threads; the result does not depend on them.
+std::uint64_t findPairs(BroadPhase kind, const World& world, double margin, Workspace& workspace,
+                        int threads = 1);
 
 // The lecture's loop over every pair: the reference, O(N^2).
 std::uint64_t findPairsAllPairs(const World& world, double margin, std::vector<SpherePair>& pairs);
 
 // A uniform grid of cells at least one largest diameter (+ margin) wide, rebuilt
-// by a counting sort of sphere indices by cell: O(N) for bounded density.
-std::uint64_t findPairsGrid(const World& world, double margin, Workspace& workspace);
+// by a counting sort of sphere indices by cell: O(N) for bounded density. Each
+// sphere looks for partners of higher index in the 27 cells around its own.
+std::uint64_t findPairsGrid(const World& world, double margin, Workspace& workspace, int threads = 1);
 
 double maxRadius(const World& world);  // m, 0 for an empty world
 

@@ -22,7 +22,11 @@ enum class ResponseModel {
 enum class PositionSplit { HalfHalf, MassWeighted };
 
 // The order in which sphere pairs are visited in each pass (slide 14: order matters).
-enum class PairOrder { Index, Reversed, Shuffled };
+// Slabs: the spheres' x range is cut into slabs at least one contact wide; the pairs of
+// the even slabs come first, then those of the odd ones, index order within a slab.
+// Two even (or two odd) slabs never share a sphere, so their pairs can be handled on
+// different threads with the result of one thread: the order parallel solvers use.
+enum class PairOrder { Index, Reversed, Shuffled, Slabs };
 
 // Where candidate pairs come from: a uniform grid, or the lecture's O(N^2) loop.
 enum class BroadPhase { Grid, AllPairs };
@@ -41,6 +45,9 @@ struct Params {
     PositionSplit split = PositionSplit::HalfHalf;
     PairOrder order = PairOrder::Index;
     BroadPhase broadPhase = BroadPhase::Grid;
+    // Threads the solver may use. Any count gives the same result, bit for bit: the
+    // pair passes run in parallel only in the slab order, everything else always can.
+    int threads = 1;
 
     // s: the step every formula of the lecture uses (its h).
     double solverStep() const { return timeStep / substeps; }

@@ -11,33 +11,37 @@ namespace {
 
 void particlesVelocityAndPosition(World& world, const Params& params, StepStats& stats,
                                   int pass) {
-    for (const SpherePair& pair : world.workspace.visitOrder) {
-        SphereContact contact;
-        if (!touching(world, pair, contact)) continue;
-        respondToContact(world, pair, contact, params, stats, pass);
-        separateSpheres(world.position[pair.i], world.position[pair.j], world.mass[pair.i],
-                        world.mass[pair.j], contact.u, contact.depth, params.split);
-    }
+    forEachPairGroup(world, params, stats, [&](const SpherePair* first, const SpherePair* last, StepStats& s) {
+        for (const SpherePair* pair = first; pair != last; ++pair) {
+            SphereContact contact;
+            if (!touching(world, *pair, contact)) continue;
+            respondToContact(world, *pair, contact, params, s, pass);
+            separateSpheres(world.position[pair->i], world.position[pair->j], world.mass[pair->i],
+                            world.mass[pair->j], contact.u, contact.depth, params.split);
+        }
+    });
 }
 
 void wallsVelocityAndPosition(World& world, const Params& params, StepStats& stats,
                               int pass) {
-    for (std::uint32_t i = 0; i < world.size(); ++i) {
-        for (std::size_t k = 0; k < world.planes.size(); ++k) {
-            const Plane face = faceFor(world.planes[k], world.position[i]);
-            if (!touching(world, i, face)) continue;
-            respondToContact(world, i, k, face, params, stats, pass);
-            projectOnPlane(world.position[i], world.radius[i], face);
+    forEachSphereRange(world, params, stats, [&](std::uint32_t first, std::uint32_t last, StepStats& s) {
+        for (std::uint32_t i = first; i < last; ++i) {
+            for (std::size_t k = 0; k < world.planes.size(); ++k) {
+                const Plane face = faceFor(world.planes[k], world.position[i]);
+                if (!touching(world, i, face)) continue;
+                respondToContact(world, i, k, face, params, s, pass);
+                projectOnPlane(world.position[i], world.radius[i], face);
+            }
         }
-    }
+    });
 }
 
 }  // namespace
 
 StepStats stepPositionBased(World& world, const Params& params, double h) {
     StepStats stats;
-    integrateVelocity(world, params.gravity, h);  // A
-    integratePosition(world, h);
+    integrateVelocity(world, params, h);  // A
+    integratePosition(world, params, h);
     findOrderedPairs(world, params, stats);
     for (int pass = 0; pass < params.passes; ++pass) {
         particlesVelocityAndPosition(world, params, stats, pass);  // B

@@ -11,8 +11,8 @@ namespace physics {
 
 StepStats stepResponseOnly(World& world, const Params& params, double h) {
     StepStats stats;
-    integrateVelocity(world, params.gravity, h);  // A
-    integratePosition(world, h);
+    integrateVelocity(world, params, h);  // A
+    integratePosition(world, params, h);
     findOrderedPairs(world, params, stats);
     for (int pass = 0; pass < params.passes; ++pass) {
         respondToAllContacts(world, params, stats, pass);  // B

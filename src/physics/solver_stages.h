@@ -1,16 +1,70 @@
 #pragma once
 // The stages the two methods are made of (second deck, "Summary with multiple
 // particles"). Internal to the physics library.
+#include <algorithm>
 #include <cstdint>
+#include <utility>
+#include <vector>
 
 #include "physics/collision_response.h"
 #include "physics/step.h"
+#include "physics/thread_team.h"
 
 namespace physics {
 
+// The threads a stage may use: one while contacts are logged (the log is in pass order).
+inline int threadsFor(const World& world, const Params& params) {
+    return world.recordContacts ? 1 : std::max(1, params.threads);
+}
+
+// [0, n) cut into `tasks` ranges of nearly equal size: range t is [begin, end).
+struct Range {
+    std::uint32_t begin, end;
+};
+inline Range rangeOf(std::size_t n, int t, int tasks) {
+    return {std::uint32_t(n * std::size_t(t) / std::size_t(tasks)),
+            std::uint32_t(n * std::size_t(t + 1) / std::size_t(tasks))};
+}
+
+// visit(begin, end, stats) on ranges of sphere indices that together cover every
+// sphere once, in parallel: for stages where each sphere changes only itself.
+template <class Visit>
+void forEachSphereRange(World& world, const Params& params, StepStats& stats, const Visit& visit) {
+    const int threads = threadsFor(world, params);
+    if (threads == 1) {
+        visit(std::uint32_t(0), std::uint32_t(world.size()), stats);
+        return;
+    }
+    std::vector<StepStats> taskStats(static_cast<std::size_t>(threads));
+    runTasks(threads, threads, [&](int t) {
+        const Range range = rangeOf(world.size(), t, threads);
+        visit(range.begin, range.end, taskStats[std::size_t(t)]);
+    });
+    for (const StepStats& s : taskStats) stats += s;
+}
+
+// visit(first, last, stats) on the groups of candidate pairs, in pass order: the
+// groups before workspace.firstOddGroup, in parallel, then the others. Groups
+// handled at the same time share no sphere, so the result is that of one thread.
+template <class Visit>
+void forEachPairGroup(World& world, const Params& params, StepStats& stats, const Visit& visit) {
+    const Workspace& ws = world.workspace;
+    const SpherePair* pairs = ws.visitOrder.data();
+    const int threads = threadsFor(world, params);
+    const std::size_t groups = ws.groupStart.size() - 1;
+    std::vector<StepStats> groupStats(threads == 1 ? 0 : groups);
+    for (const auto& [first, last] : {std::pair{std::size_t(0), ws.firstOddGroup}, std::pair{ws.firstOddGroup, groups}}) {
+        runTasks(threads, int(last - first), [&](int t) {
+            const std::size_t g = first + std::size_t(t);
+            visit(pairs + ws.groupStart[g], pairs + ws.groupStart[g + 1], threads == 1 ? stats : groupStats[g]);
+        });
+    }
+    for (const StepStats& s : groupStats) stats += s;
+}
+
 // Field forces, semi-implicit Euler (slide 2): v <- v + h g, then p <- p + h v.
-void integrateVelocity(World& world, const glm::dvec3& gravity, double h);
-void integratePosition(World& world, double h);
+void integrateVelocity(World& world, const Params& params, double h);
+void integratePosition(World& world, const Params& params, double h);
 
 // Fills world.workspace.pairs with the candidate pairs in the order the passes
 // visit them (index, reversed, or shuffled with the world's seed and step count).

@@ -1,6 +1,7 @@
 #include "physics/step.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <utility>
 
@@ -9,6 +10,7 @@
 #include "physics/broad_phase.h"
 #include "physics/random.h"
 #include "physics/solver_stages.h"
+#include "physics/thread_team.h"
 
 namespace physics {
 namespace {
@@ -36,17 +38,40 @@ Extent extentOf(const World& world) {
     return e;
 }
 
-bool cachedPairsStillReach(const World& world, const Extent& extent, double margin) {
-    const Workspace& ws = world.workspace;
+bool cachedPairsStillReach(World& world, const Extent& extent, double margin, int threads) {
+    Workspace& ws = world.workspace;
     if (!ws.cached || ws.positionsAtBuild.size() != world.size() || ws.radiusSumAtBuild != extent.radiusSum) {
         return false;
     }
-    double maxMoveSquared = 0.0;  // m^2
-    for (std::size_t i = 0; i < world.size(); ++i) {
-        const glm::dvec3 move = world.position[i] - ws.positionsAtBuild[i];
-        maxMoveSquared = std::max(maxMoveSquared, glm::dot(move, move));
-    }
+    ws.taskMove.assign(std::size_t(threads), 0.0);
+    runTasks(threads, threads, [&](int t) {
+        const Range range = rangeOf(world.size(), t, threads);
+        double maxMoveSquared = 0.0;  // m^2
+        for (std::uint32_t i = range.begin; i < range.end; ++i) {
+            const glm::dvec3 move = world.position[i] - ws.positionsAtBuild[i];
+            maxMoveSquared = std::max(maxMoveSquared, glm::dot(move, move));
+        }
+        ws.taskMove[std::size_t(t)] = maxMoveSquared;
+    });
+    const double maxMoveSquared = *std::max_element(ws.taskMove.begin(), ws.taskMove.end());
     return 2.0 * std::sqrt(maxMoveSquared) <= ws.reachAtBuild - margin;
+}
+
+// visitOrder <- the cached pairs within `margin` of touching, in index order.
+void keepPairsWithinReach(World& world, double margin, int threads) {
+    Workspace& ws = world.workspace;
+    const int tasks = threads > 1 ? 4 * threads : 1;
+    ws.taskPairs.resize(std::size_t(tasks));
+    runTasks(threads, tasks, [&](int t) {
+        const Range range = rangeOf(ws.pairs.size(), t, tasks);
+        std::vector<SpherePair>& kept = ws.taskPairs[std::size_t(t)];
+        kept.clear();
+        for (std::uint32_t k = range.begin; k < range.end; ++k) {
+            if (withinReach(world, ws.pairs[k], margin)) kept.push_back(ws.pairs[k]);
+        }
+    });
+    ws.visitOrder.clear();
+    for (const std::vector<SpherePair>& kept : ws.taskPairs) ws.visitOrder.insert(ws.visitOrder.end(), kept.begin(), kept.end());
 }
 
 void reorder(std::vector<SpherePair>& pairs, PairOrder order, std::uint64_t seed,
@@ -55,6 +80,61 @@ void reorder(std::vector<SpherePair>& pairs, PairOrder order, std::uint64_t seed
     if (order != PairOrder::Shuffled) return;
     Random random(seed ^ (stepCount * 0x9E3779B97F4A7C15ull));
     for (std::size_t k = pairs.size(); k > 1; --k) std::swap(pairs[k - 1], pairs[random.below(k)]);
+}
+
+// The slab order: at most this many slabs along x, each at least one contact wide.
+constexpr int kSlabCount = 16;
+
+// Which slab each sphere's centre lies in now (non-finite centres: slab 0).
+void assignSlabs(World& world, const Extent& extent, double margin) {
+    double lo = INFINITY, hi = -INFINITY;  // m
+    for (const glm::dvec3& p : world.position) {
+        if (!std::isfinite(p.x)) continue;
+        lo = std::min(lo, p.x);
+        hi = std::max(hi, p.x);
+    }
+    // A pair within reach lies less than 2 r_max + margin apart in x: in one slab or
+    // two neighbours (1 % to spare for rounding).
+    const double width = std::max(1.01 * (2.0 * extent.maxRadius + margin), (hi - lo) / kSlabCount);  // m
+    std::vector<std::uint32_t>& slab = world.workspace.slabOfSphere;
+    slab.resize(world.size());
+    for (std::size_t i = 0; i < world.size(); ++i) {
+        const double x = world.position[i].x;
+        const double s = std::isfinite(x) && width > 0.0 ? std::floor((x - lo) / width) : 0.0;
+        slab[i] = std::uint32_t(std::clamp(s, 0.0, double(kSlabCount - 1)));
+    }
+}
+
+// A pair belongs to the lower of its spheres' slabs; the even slabs' groups come
+// first (0, 2, 4, ...), then the odd ones'. A stable counting sort keeps index
+// order within each group.
+void groupBySlab(World& world, const Extent& extent, double margin) {
+    assignSlabs(world, extent, margin);
+    Workspace& ws = world.workspace;
+    const auto groupOf = [&](const SpherePair& pair) {
+        const std::uint32_t s = std::min(ws.slabOfSphere[pair.i], ws.slabOfSphere[pair.j]);
+        return s % 2 == 0 ? s / 2 : kSlabCount / 2 + s / 2;
+    };
+    ws.groupStart.assign(kSlabCount + 1, 0);
+    for (const SpherePair& pair : ws.visitOrder) ++ws.groupStart[groupOf(pair) + 1];
+    for (int g = 0; g < kSlabCount; ++g) ws.groupStart[std::size_t(g) + 1] += ws.groupStart[std::size_t(g)];
+    std::array<std::uint32_t, kSlabCount> next{};
+    std::copy(ws.groupStart.begin(), ws.groupStart.end() - 1, next.begin());
+    ws.grouped.resize(ws.visitOrder.size());
+    for (const SpherePair& pair : ws.visitOrder) ws.grouped[next[groupOf(pair)]++] = pair;
+    ws.visitOrder.swap(ws.grouped);
+    ws.firstOddGroup = kSlabCount / 2;
+}
+
+void groupOrdered(World& world, const Params& params, const Extent& extent, double margin) {
+    Workspace& ws = world.workspace;
+    if (params.order == PairOrder::Slabs) {
+        groupBySlab(world, extent, margin);
+        return;
+    }
+    reorder(ws.visitOrder, params.order, world.seed, world.stepCount);
+    ws.groupStart.assign({0, std::uint32_t(ws.visitOrder.size())});
+    ws.firstOddGroup = 1;
 }
 
 }  // namespace
@@ -70,36 +150,40 @@ StepStats& StepStats::operator+=(const StepStats& o) {
     return *this;
 }
 
-void integrateVelocity(World& world, const glm::dvec3& gravity, double h) {
-    for (glm::dvec3& v : world.velocity) v += h * gravity;
+void integrateVelocity(World& world, const Params& params, double h) {
+    StepStats none;
+    forEachSphereRange(world, params, none, [&](std::uint32_t begin, std::uint32_t end, StepStats&) {
+        for (std::uint32_t i = begin; i < end; ++i) world.velocity[i] += h * params.gravity;
+    });
 }
 
-void integratePosition(World& world, double h) {
-    for (std::size_t i = 0; i < world.size(); ++i) world.position[i] += h * world.velocity[i];
+void integratePosition(World& world, const Params& params, double h) {
+    StepStats none;
+    forEachSphereRange(world, params, none, [&](std::uint32_t begin, std::uint32_t end, StepStats&) {
+        for (std::uint32_t i = begin; i < end; ++i) world.position[i] += h * world.velocity[i];
+    });
 }
 
 void findOrderedPairs(World& world, const Params& params, StepStats& stats) {
     Workspace& ws = world.workspace;
+    const int threads = std::max(1, params.threads);
     const Extent extent = extentOf(world);
     const double margin = kMarginFraction * extent.maxRadius;
     if (params.broadPhase == BroadPhase::AllPairs) {  // the lecture's loop, every step
         ws.cached = false;
         stats.pairTests += findPairs(params.broadPhase, world, margin, ws);
         ++stats.broadPhaseBuilds;
-    } else if (!cachedPairsStillReach(world, extent, margin)) {
+    } else if (!cachedPairsStillReach(world, extent, margin, threads)) {
         ws.reachAtBuild = kSkinFraction * extent.maxRadius;
-        stats.pairTests += findPairs(params.broadPhase, world, ws.reachAtBuild, ws);
+        stats.pairTests += findPairs(params.broadPhase, world, ws.reachAtBuild, ws, threads);
         ws.positionsAtBuild = world.position;
         ws.radiusSumAtBuild = extent.radiusSum;
         ws.cached = true;
         ++stats.broadPhaseBuilds;
     }
-    ws.visitOrder.clear();
-    for (const SpherePair& pair : ws.pairs) {
-        if (withinReach(world, pair, margin)) ws.visitOrder.push_back(pair);
-    }
+    keepPairsWithinReach(world, margin, threads);
     stats.candidatePairs += ws.visitOrder.size();
-    reorder(ws.visitOrder, params.order, world.seed, world.stepCount);
+    groupOrdered(world, params, extent, margin);
 }
 
 bool touching(const World& world, const SpherePair& pair, SphereContact& contact) {
@@ -172,16 +256,20 @@ void respondToContact(World& world, std::uint32_t i, std::size_t planeIndex, con
 }
 
 void respondToAllContacts(World& world, const Params& params, StepStats& stats, int pass) {
-    for (const SpherePair& pair : world.workspace.visitOrder) {
-        SphereContact contact;
-        if (touching(world, pair, contact)) respondToContact(world, pair, contact, params, stats, pass);
-    }
-    for (std::uint32_t i = 0; i < world.size(); ++i) {
-        for (std::size_t k = 0; k < world.planes.size(); ++k) {
-            const Plane face = faceFor(world.planes[k], world.position[i]);
-            if (touching(world, i, face)) respondToContact(world, i, k, face, params, stats, pass);
+    forEachPairGroup(world, params, stats, [&](const SpherePair* begin, const SpherePair* end, StepStats& s) {
+        for (const SpherePair* pair = begin; pair != end; ++pair) {
+            SphereContact contact;
+            if (touching(world, *pair, contact)) respondToContact(world, *pair, contact, params, s, pass);
         }
-    }
+    });
+    forEachSphereRange(world, params, stats, [&](std::uint32_t begin, std::uint32_t end, StepStats& s) {
+        for (std::uint32_t i = begin; i < end; ++i) {
+            for (std::size_t k = 0; k < world.planes.size(); ++k) {
+                const Plane face = faceFor(world.planes[k], world.position[i]);
+                if (touching(world, i, face)) respondToContact(world, i, k, face, params, s, pass);
+            }
+        }
+    });
 }
 
 namespace {

@@ -12,32 +12,37 @@
 namespace physics {
 namespace {
 
-void cancelPenetratingVelocity(World& world) {
-    for (const SpherePair& pair : world.workspace.visitOrder) {
-        SphereContact contact;
-        if (!touching(world, pair, contact)) continue;
-        cancelApproachBetween(world.velocity[pair.i], world.velocity[pair.j], world.mass[pair.i],
-                              world.mass[pair.j], contact.u);
-    }
-    for (std::uint32_t i = 0; i < world.size(); ++i) {
-        for (const Plane& plane : world.planes) {
-            const Plane face = faceFor(plane, world.position[i]);
-            if (touching(world, i, face)) cancelApproachToPlane(world.velocity[i], face.normal);
+void cancelPenetratingVelocity(World& world, const Params& params) {
+    StepStats none;
+    forEachPairGroup(world, params, none, [&](const SpherePair* first, const SpherePair* last, StepStats&) {
+        for (const SpherePair* pair = first; pair != last; ++pair) {
+            SphereContact contact;
+            if (!touching(world, *pair, contact)) continue;
+            cancelApproachBetween(world.velocity[pair->i], world.velocity[pair->j], world.mass[pair->i],
+                                  world.mass[pair->j], contact.u);
         }
-    }
+    });
+    forEachSphereRange(world, params, none, [&](std::uint32_t first, std::uint32_t last, StepStats&) {
+        for (std::uint32_t i = first; i < last; ++i) {
+            for (const Plane& plane : world.planes) {
+                const Plane face = faceFor(plane, world.position[i]);
+                if (touching(world, i, face)) cancelApproachToPlane(world.velocity[i], face.normal);
+            }
+        }
+    });
 }
 
 }  // namespace
 
 StepStats stepVelocityBased(World& world, const Params& params, double h) {
     StepStats stats;
-    integrateVelocity(world, params.gravity, h);  // A
+    integrateVelocity(world, params, h);  // A
     findOrderedPairs(world, params, stats);
     for (int pass = 0; pass < params.passes; ++pass) {
         respondToAllContacts(world, params, stats, pass);  // B
     }
-    cancelPenetratingVelocity(world);  // C
-    integratePosition(world, h);  // D
+    cancelPenetratingVelocity(world, params);  // C
+    integratePosition(world, params, h);  // D
     return stats;
 }
 

@@ -70,8 +70,16 @@ struct Workspace {
     std::vector<std::uint32_t> cellStart;   // counting-sort offsets, one per cell + 1
     std::vector<std::uint32_t> sphereByCell;
     std::vector<glm::dvec4> cellOrdered;         // centre (m) and radius (m), in sphereByCell order
-    std::vector<SpherePair> unorderedPairs;      // as the grid finds them
-    std::vector<std::uint32_t> pairStart;        // counting sort of pairs by i
+    std::vector<std::uint32_t> slotOfSphere;     // where each sphere sits in cellOrdered
+    std::vector<std::vector<SpherePair>> taskPairs;  // what each parallel task found
+    // visitOrder is cut into groups of pairs, [groupStart[g], groupStart[g + 1]): the
+    // groups before firstOddGroup share no sphere with each other, nor do those after
+    // it (slab order; otherwise a single group).
+    std::vector<std::uint32_t> groupStart;
+    std::size_t firstOddGroup = 1;
+    std::vector<std::uint32_t> slabOfSphere;
+    std::vector<SpherePair> grouped;  // visitOrder being sorted into groups
+    std::vector<double> taskMove;  // m^2: the largest squared displacement each task saw
 };
 
 struct World {

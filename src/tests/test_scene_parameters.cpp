@@ -34,7 +34,7 @@ TEST(ParameterTable, HasTheLectureParametersOnceEach) {
     const std::set<std::string> expected = {
         "alpha",  "beta",     "epsilon", "mu",    "h",          "substeps", "passes", "gravity",
         "method", "response", "split",   "order", "broadphase", "emit_period", "count", "radius",
-        "seed"};
+        "seed",   "threads"};
     EXPECT_EQ(names, expected);
 }
 
@@ -155,7 +155,7 @@ TEST(ApplySetting, RefusesValuesThatAreNotNumbersOrChoices) {
     EXPECT_EQ(applySetting(scene, "method=fast"),
               "method = 'fast' is not a choice; choices: position, velocity, response-only");
     EXPECT_EQ(applySetting(scene, "order=2"),
-              "order = '2' is not a choice; choices: index, reversed, shuffled");
+              "order = '2' is not a choice; choices: index, reversed, shuffled, slabs");
     EXPECT_EQ(scene.params.alpha, physics::Params{}.alpha);
 }
 
