@@ -90,29 +90,40 @@ bool withinReach(const glm::dvec4& a, const glm::dvec4& b, double margin) {
 
 // Appends the pairs (i, j > i) within reach of sphere i, sorted by j, and returns
 // the distance tests made. The 27 cells around i's are 9 runs of 3 cells along x,
-// each one contiguous range of the cell-sorted spheres.
+// each one contiguous range of the cell-sorted spheres. The tests are written
+// without branches (about half the candidates have j < i, a few are in reach:
+// branches on either would be mispredicted), into `partners`, which only grows.
 std::uint64_t pairsOf(std::uint32_t i, const GridShape& grid, double margin, const Workspace& ws,
-                      std::vector<SpherePair>& out) {
-    const std::size_t first = out.size();
+                      std::vector<std::uint32_t>& partners, std::vector<SpherePair>& out) {
     const glm::dvec4 sphere = ws.cellOrdered[ws.slotOfSphere[i]];
     const glm::ivec3 c = grid.cellOf(glm::dvec3(sphere));
     const int x0 = std::max(c.x - 1, 0), x1 = std::min(c.x + 1, grid.dims.x - 1);
-    std::uint64_t tests = 0;
+    std::uint32_t runStart[9], runEnd[9];
+    int runs = 0;
+    std::size_t candidates = 0;
     for (int z = std::max(c.z - 1, 0); z <= std::min(c.z + 1, grid.dims.z - 1); ++z) {
         for (int y = std::max(c.y - 1, 0); y <= std::min(c.y + 1, grid.dims.y - 1); ++y) {
-            const std::uint32_t end = ws.cellStart[grid.linear({x1, y, z}) + 1];
-            for (std::uint32_t k = ws.cellStart[grid.linear({x0, y, z})]; k < end; ++k) {
-                const std::uint32_t j = ws.sphereByCell[k];
-                if (j <= i) continue;
-                ++tests;
-                if (withinReach(sphere, ws.cellOrdered[k], margin)) out.push_back({i, j});
-            }
+            runStart[runs] = ws.cellStart[grid.linear({x0, y, z})];
+            runEnd[runs] = ws.cellStart[grid.linear({x1, y, z}) + 1];
+            candidates += runEnd[runs] - runStart[runs];
+            ++runs;
         }
     }
-    // A handful of partners: insertion sort by j.
-    for (std::size_t a = first + 1; a < out.size(); ++a) {
-        for (std::size_t b = a; b > first && out[b].j < out[b - 1].j; --b) std::swap(out[b], out[b - 1]);
+    if (partners.size() < candidates) partners.resize(candidates);
+    std::uint32_t* found = partners.data();
+    std::size_t count = 0;
+    std::uint64_t tests = 0;
+    for (int run = 0; run < runs; ++run) {
+        for (std::uint32_t k = runStart[run]; k < runEnd[run]; ++k) {
+            const std::uint32_t j = ws.sphereByCell[k];
+            const bool after = j > i;
+            tests += after;
+            found[count] = j;
+            count += after & withinReach(sphere, ws.cellOrdered[k], margin);
+        }
     }
+    std::sort(found, found + count);
+    for (std::size_t k = 0; k < count; ++k) out.push_back({i, found[k]});
     return tests;
 }
 
@@ -153,13 +164,16 @@ std::uint64_t findPairsGrid(const World& world, double margin, Workspace& worksp
     // that their concatenation is in index order whatever the number of tasks.
     const int tasks = threads > 1 ? 4 * threads : 1;
     workspace.taskPairs.resize(std::size_t(tasks));
+    workspace.taskPartners.resize(std::size_t(tasks));
     std::vector<std::uint64_t> tests(std::size_t(tasks), 0);
     runTasks(threads, tasks, [&](int t) {
         std::vector<SpherePair>& out = workspace.taskPairs[std::size_t(t)];
         out.clear();
         const std::uint32_t begin = std::uint32_t(std::uint64_t(n) * t / tasks);
         const std::uint32_t end = std::uint32_t(std::uint64_t(n) * (t + 1) / tasks);
-        for (std::uint32_t i = begin; i < end; ++i) tests[std::size_t(t)] += pairsOf(i, grid, margin, workspace, out);
+        for (std::uint32_t i = begin; i < end; ++i) {
+            tests[std::size_t(t)] += pairsOf(i, grid, margin, workspace, workspace.taskPartners[std::size_t(t)], out);
+        }
     });
     std::uint64_t total = 0;
     for (int t = 0; t < tasks; ++t) {

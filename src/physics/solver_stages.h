@@ -2,9 +2,12 @@
 // The stages the two methods are made of (second deck, "Summary with multiple
 // particles"). Internal to the physics library.
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <utility>
 #include <vector>
+
+#include <glm/geometric.hpp>
 
 #include "physics/collision_response.h"
 #include "physics/step.h"
@@ -75,10 +78,23 @@ struct SphereContact {
     glm::dvec3 u{0.0, 0.0, 1.0};  // (p1 - p2) / |p1 - p2|, from 2 to 1
     double depth = 0.0;           // m, d = r1 + r2 - |p1 - p2| (>= 0 when touching)
 };
-bool touching(const World& world, const SpherePair& pair, SphereContact& contact);
+// (Inline, as the next one: they run for every candidate in every pass.)
+inline bool touching(const World& world, const SpherePair& pair, SphereContact& contact) {
+    const glm::dvec3 delta = world.position[pair.i] - world.position[pair.j];
+    const double reach = world.radius[pair.i] + world.radius[pair.j];
+    const double distanceSquared = glm::dot(delta, delta);
+    if (distanceSquared > reach * reach) return false;
+    const double distance = std::sqrt(distanceSquared);
+    // Coincident centres have no direction: push them apart along z.
+    contact.u = distance > 0.0 ? delta / distance : glm::dvec3(0.0, 0.0, 1.0);
+    contact.depth = reach - distance;
+    return true;
+}
 
 // Slide 3: the sphere touches the plane when (p - a).n <= r.
-bool touching(const World& world, std::uint32_t i, const Plane& plane);
+inline bool touching(const World& world, std::uint32_t i, const Plane& plane) {
+    return glm::dot(world.position[i] - plane.point, plane.normal) <= world.radius[i];
+}
 
 // The velocity response to one contact (collision_response.h), recorded in the
 // spheres' contact state, counted in the stats (contacts on pass 0 only) and, when

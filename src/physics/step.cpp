@@ -23,6 +23,16 @@ constexpr double kMarginFraction = 0.1;
 // step then keeps exactly the pairs within the margin, so the cache never changes
 // the result: the next state is a function of this one, as with a fresh build.
 constexpr double kSkinFraction = 0.3;
+// A jittering pile moves some sphere that far at every step, and a list built with
+// the skin would serve once only, costing more tests: after two such builds the grid
+// builds with the margin alone, and tries the skin again every kSkinRetry builds.
+constexpr int kSkinRetry = 16;
+
+// m: how far beyond touching the next build reaches.
+double buildReach(const Workspace& ws, double margin, double skin) {
+    const bool skinUseless = ws.buildsNotReused >= 2 && ws.buildsNotReused % kSkinRetry != 0;
+    return skinUseless ? margin : skin;
+}
 
 struct Extent {
     double maxRadius = 0.0;  // m
@@ -173,8 +183,12 @@ void findOrderedPairs(World& world, const Params& params, StepStats& stats) {
         ws.cached = false;
         stats.pairTests += findPairs(params.broadPhase, world, margin, ws);
         ++stats.broadPhaseBuilds;
-    } else if (!cachedPairsStillReach(world, extent, margin, threads)) {
-        ws.reachAtBuild = kSkinFraction * extent.maxRadius;
+    } else if (cachedPairsStillReach(world, extent, margin, threads)) {
+        ws.reusedSinceBuild = true;
+    } else {
+        ws.buildsNotReused = ws.cached && !ws.reusedSinceBuild ? ws.buildsNotReused + 1 : 0;
+        ws.reusedSinceBuild = false;
+        ws.reachAtBuild = buildReach(ws, margin, kSkinFraction * extent.maxRadius);
         stats.pairTests += findPairs(params.broadPhase, world, ws.reachAtBuild, ws, threads);
         ws.positionsAtBuild = world.position;
         ws.radiusSumAtBuild = extent.radiusSum;
@@ -184,22 +198,6 @@ void findOrderedPairs(World& world, const Params& params, StepStats& stats) {
     keepPairsWithinReach(world, margin, threads);
     stats.candidatePairs += ws.visitOrder.size();
     groupOrdered(world, params, extent, margin);
-}
-
-bool touching(const World& world, const SpherePair& pair, SphereContact& contact) {
-    const glm::dvec3 delta = world.position[pair.i] - world.position[pair.j];
-    const double reach = world.radius[pair.i] + world.radius[pair.j];
-    const double distanceSquared = glm::dot(delta, delta);
-    if (distanceSquared > reach * reach) return false;
-    const double distance = std::sqrt(distanceSquared);
-    // Coincident centres have no direction: push them apart along z.
-    contact.u = distance > 0.0 ? delta / distance : glm::dvec3(0.0, 0.0, 1.0);
-    contact.depth = reach - distance;
-    return true;
-}
-
-bool touching(const World& world, std::uint32_t i, const Plane& plane) {
-    return glm::dot(world.position[i] - plane.point, plane.normal) <= world.radius[i];
 }
 
 namespace {

@@ -66,12 +66,15 @@ struct Workspace {
     double radiusSumAtBuild = -1.0;            // m, changes when spheres or radii change
     double reachAtBuild = 0.0;                 // m, beyond touching
     bool cached = false;                       // false: rebuild at the next solver step
+    bool reusedSinceBuild = false;             // the pairs served more than one step
+    int buildsNotReused = 0;                   // consecutive builds that served one step
     std::vector<std::uint32_t> cellOfSphere;
     std::vector<std::uint32_t> cellStart;   // counting-sort offsets, one per cell + 1
     std::vector<std::uint32_t> sphereByCell;
     std::vector<glm::dvec4> cellOrdered;         // centre (m) and radius (m), in sphereByCell order
     std::vector<std::uint32_t> slotOfSphere;     // where each sphere sits in cellOrdered
     std::vector<std::vector<SpherePair>> taskPairs;  // what each parallel task found
+    std::vector<std::vector<std::uint32_t>> taskPartners;  // each task's scratch
     // visitOrder is cut into groups of pairs, [groupStart[g], groupStart[g + 1]): the
     // groups before firstOddGroup share no sphere with each other, nor do those after
     // it (slab order; otherwise a single group).
