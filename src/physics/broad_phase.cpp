@@ -163,21 +163,20 @@ std::uint64_t findPairsGrid(const World& world, double margin, Workspace& worksp
     // Each task finds the pairs of one range of first spheres i, in index order, so
     // that their concatenation is in index order whatever the number of tasks.
     const int tasks = threads > 1 ? 4 * threads : 1;
-    workspace.taskPairs.resize(std::size_t(tasks));
-    workspace.taskPartners.resize(std::size_t(tasks));
+    workspace.tasks.resize(std::size_t(tasks));
     std::vector<std::uint64_t> tests(std::size_t(tasks), 0);
     runTasks(threads, tasks, [&](int t) {
-        std::vector<SpherePair>& out = workspace.taskPairs[std::size_t(t)];
-        out.clear();
+        TaskScratch& scratch = workspace.tasks[std::size_t(t)];
+        scratch.pairs.clear();
         const std::uint32_t begin = std::uint32_t(std::uint64_t(n) * t / tasks);
         const std::uint32_t end = std::uint32_t(std::uint64_t(n) * (t + 1) / tasks);
-        for (std::uint32_t i = begin; i < end; ++i) {
-            tests[std::size_t(t)] += pairsOf(i, grid, margin, workspace, workspace.taskPartners[std::size_t(t)], out);
-        }
+        std::uint64_t made = 0;
+        for (std::uint32_t i = begin; i < end; ++i) made += pairsOf(i, grid, margin, workspace, scratch.partners, scratch.pairs);
+        tests[std::size_t(t)] = made;
     });
     std::uint64_t total = 0;
     for (int t = 0; t < tasks; ++t) {
-        const std::vector<SpherePair>& part = workspace.taskPairs[std::size_t(t)];
+        const std::vector<SpherePair>& part = workspace.tasks[std::size_t(t)].pairs;
         workspace.pairs.insert(workspace.pairs.end(), part.begin(), part.end());
         total += tests[std::size_t(t)];
     }

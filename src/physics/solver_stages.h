@@ -41,7 +41,9 @@ void forEachSphereRange(World& world, const Params& params, StepStats& stats, co
     std::vector<StepStats> taskStats(static_cast<std::size_t>(threads));
     runTasks(threads, threads, [&](int t) {
         const Range range = rangeOf(world.size(), t, threads);
-        visit(range.begin, range.end, taskStats[std::size_t(t)]);
+        StepStats local;  // neighbours in taskStats share cache lines: count apart
+        visit(range.begin, range.end, local);
+        taskStats[std::size_t(t)] = local;
     });
     for (const StepStats& s : taskStats) stats += s;
 }
@@ -59,7 +61,13 @@ void forEachPairGroup(World& world, const Params& params, StepStats& stats, cons
     for (const auto& [first, last] : {std::pair{std::size_t(0), ws.firstOddGroup}, std::pair{ws.firstOddGroup, groups}}) {
         runTasks(threads, int(last - first), [&](int t) {
             const std::size_t g = first + std::size_t(t);
-            visit(pairs + ws.groupStart[g], pairs + ws.groupStart[g + 1], threads == 1 ? stats : groupStats[g]);
+            if (threads == 1) {
+                visit(pairs + ws.groupStart[g], pairs + ws.groupStart[g + 1], stats);
+                return;
+            }
+            StepStats local;  // neighbours in groupStats share cache lines: count apart
+            visit(pairs + ws.groupStart[g], pairs + ws.groupStart[g + 1], local);
+            groupStats[g] = local;
         });
     }
     for (const StepStats& s : groupStats) stats += s;

@@ -71,17 +71,17 @@ bool cachedPairsStillReach(World& world, const Extent& extent, double margin, in
 void keepPairsWithinReach(World& world, double margin, int threads) {
     Workspace& ws = world.workspace;
     const int tasks = threads > 1 ? 4 * threads : 1;
-    ws.taskPairs.resize(std::size_t(tasks));
+    ws.tasks.resize(std::size_t(tasks));
     runTasks(threads, tasks, [&](int t) {
         const Range range = rangeOf(ws.pairs.size(), t, tasks);
-        std::vector<SpherePair>& kept = ws.taskPairs[std::size_t(t)];
+        std::vector<SpherePair>& kept = ws.tasks[std::size_t(t)].pairs;
         kept.clear();
         for (std::uint32_t k = range.begin; k < range.end; ++k) {
             if (withinReach(world, ws.pairs[k], margin)) kept.push_back(ws.pairs[k]);
         }
     });
     ws.visitOrder.clear();
-    for (const std::vector<SpherePair>& kept : ws.taskPairs) ws.visitOrder.insert(ws.visitOrder.end(), kept.begin(), kept.end());
+    for (const TaskScratch& task : ws.tasks) ws.visitOrder.insert(ws.visitOrder.end(), task.pairs.begin(), task.pairs.end());
 }
 
 void reorder(std::vector<SpherePair>& pairs, PairOrder order, std::uint64_t seed,
@@ -183,19 +183,28 @@ void findOrderedPairs(World& world, const Params& params, StepStats& stats) {
         ws.cached = false;
         stats.pairTests += findPairs(params.broadPhase, world, margin, ws);
         ++stats.broadPhaseBuilds;
+        ws.visitOrder.swap(ws.pairs);  // the pairs are not kept
     } else if (cachedPairsStillReach(world, extent, margin, threads)) {
         ws.reusedSinceBuild = true;
+        keepPairsWithinReach(world, margin, threads);
     } else {
-        ws.buildsNotReused = ws.cached && !ws.reusedSinceBuild ? ws.buildsNotReused + 1 : 0;
+        ws.buildsNotReused = ws.built && !ws.reusedSinceBuild ? ws.buildsNotReused + 1 : 0;
         ws.reusedSinceBuild = false;
+        ws.built = true;
         ws.reachAtBuild = buildReach(ws, margin, kSkinFraction * extent.maxRadius);
         stats.pairTests += findPairs(params.broadPhase, world, ws.reachAtBuild, ws, threads);
-        ws.positionsAtBuild = world.position;
-        ws.radiusSumAtBuild = extent.radiusSum;
-        ws.cached = true;
         ++stats.broadPhaseBuilds;
+        // Without a skin the list serves this step only, and holds exactly the pairs
+        // within the margin (the same test, on the same numbers): nothing to keep.
+        ws.cached = ws.reachAtBuild > margin;
+        if (ws.cached) {
+            ws.positionsAtBuild = world.position;
+            ws.radiusSumAtBuild = extent.radiusSum;
+            keepPairsWithinReach(world, margin, threads);
+        } else {
+            ws.visitOrder.swap(ws.pairs);  // the pairs are not kept
+        }
     }
-    keepPairsWithinReach(world, margin, threads);
     stats.candidatePairs += ws.visitOrder.size();
     groupOrdered(world, params, extent, margin);
 }

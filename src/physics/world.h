@@ -56,6 +56,13 @@ struct SpherePair {
     std::uint32_t i, j;  // i < j
 };
 
+// What one parallel task of the broad phase writes. A cache line of its own, so that
+// two threads appending to their vectors never write to the same line.
+struct alignas(64) TaskScratch {
+    std::vector<SpherePair> pairs;        // the pairs this task found or kept
+    std::vector<std::uint32_t> partners;  // candidates of one sphere, only grows
+};
+
 // Scratch memory reused from step to step, so a step allocates nothing once warm.
 struct Workspace {
     std::vector<SpherePair> pairs;          // candidate pairs (i, j), in index order
@@ -66,6 +73,7 @@ struct Workspace {
     double radiusSumAtBuild = -1.0;            // m, changes when spheres or radii change
     double reachAtBuild = 0.0;                 // m, beyond touching
     bool cached = false;                       // false: rebuild at the next solver step
+    bool built = false;                        // the grid has built pairs before
     bool reusedSinceBuild = false;             // the pairs served more than one step
     int buildsNotReused = 0;                   // consecutive builds that served one step
     std::vector<std::uint32_t> cellOfSphere;
@@ -73,8 +81,7 @@ struct Workspace {
     std::vector<std::uint32_t> sphereByCell;
     std::vector<glm::dvec4> cellOrdered;         // centre (m) and radius (m), in sphereByCell order
     std::vector<std::uint32_t> slotOfSphere;     // where each sphere sits in cellOrdered
-    std::vector<std::vector<SpherePair>> taskPairs;  // what each parallel task found
-    std::vector<std::vector<std::uint32_t>> taskPartners;  // each task's scratch
+    std::vector<TaskScratch> tasks;              // one per parallel task
     // visitOrder is cut into groups of pairs, [groupStart[g], groupStart[g + 1]): the
     // groups before firstOddGroup share no sphere with each other, nor do those after
     // it (slab order; otherwise a single group).
