@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include "physics/broad_phase.h"
+#include "physics/solver_stages.h"
 
 namespace physics {
 namespace {
@@ -25,9 +26,9 @@ void addEnergies(const World& world, const Params& params, Diagnostics& d) {
     d.total = d.kinetic + d.potential;
 }
 
-void addSphereContacts(const World& world, Diagnostics& d) {
+void addSphereContacts(const World& world, const Params& params, Diagnostics& d) {
     Workspace workspace;
-    findPairsGrid(world, 0.0, workspace);
+    findPairsGrid(world, 0.0, workspace, solverThreads(world, params));
     for (const SpherePair& pair : workspace.pairs) {
         const double reach = world.radius[pair.i] + world.radius[pair.j];
         const double depth = reach - glm::distance(world.position[pair.i], world.position[pair.j]);
@@ -75,7 +76,7 @@ std::uint64_t stateHash(const World& world) {
 Diagnostics measure(const World& world, const Params& params) {
     Diagnostics d;
     addEnergies(world, params, d);
-    addSphereContacts(world, d);
+    addSphereContacts(world, params, d);
     addWallContacts(world, d);
     d.hash = stateHash(world);
     return d;

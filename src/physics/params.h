@@ -45,9 +45,10 @@ struct Params {
     PositionSplit split = PositionSplit::HalfHalf;
     PairOrder order = PairOrder::Index;
     BroadPhase broadPhase = BroadPhase::Grid;
-    // Threads the solver may use. Any count gives the same result, bit for bit: the
-    // pair passes run in parallel only in the slab order, everything else always can.
-    int threads = 1;
+    // Threads the solver may use, 0: one per core (at most 8). Any count gives the
+    // same result, bit for bit: the pair passes run in parallel only in the slab
+    // order, everything else always can. Small worlds (under 4096 spheres) use one.
+    int threads = 0;
 
     // s: the step every formula of the lecture uses (its h).
     double solverStep() const { return timeStep / substeps; }

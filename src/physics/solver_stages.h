@@ -15,9 +15,12 @@
 
 namespace physics {
 
+// The threads the solver uses for this world (params.threads resolved).
+int solverThreads(const World& world, const Params& params);
+
 // The threads a stage may use: one while contacts are logged (the log is in pass order).
 inline int threadsFor(const World& world, const Params& params) {
-    return world.recordContacts ? 1 : std::max(1, params.threads);
+    return world.recordContacts ? 1 : solverThreads(world, params);
 }
 
 // [0, n) cut into `tasks` ranges of nearly equal size: range t is [begin, end).

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <thread>
 #include <utility>
 
 #include <glm/geometric.hpp>
@@ -27,6 +28,11 @@ constexpr double kSkinFraction = 0.3;
 // the skin would serve once only, costing more tests: after two such builds the grid
 // builds with the margin alone, and tries the skin again every kSkinRetry builds.
 constexpr int kSkinRetry = 16;
+
+// Below this many spheres a step takes microseconds: handing out its stages to
+// other threads would cost more than it saves.
+constexpr std::size_t kParallelMinSpheres = 4096;
+constexpr int kMostAutomaticThreads = 8;
 
 // m: how far beyond touching the next build reaches.
 double buildReach(const Workspace& ws, double margin, double skin) {
@@ -149,6 +155,13 @@ void groupOrdered(World& world, const Params& params, const Extent& extent, doub
 
 }  // namespace
 
+int solverThreads(const World& world, const Params& params) {
+    if (world.size() < kParallelMinSpheres) return 1;
+    if (params.threads > 0) return params.threads;
+    static const int cores = int(std::thread::hardware_concurrency());
+    return std::clamp(cores, 1, kMostAutomaticThreads);
+}
+
 StepStats& StepStats::operator+=(const StepStats& o) {
     pairTests += o.pairTests;
     broadPhaseBuilds += o.broadPhaseBuilds;
@@ -176,7 +189,7 @@ void integratePosition(World& world, const Params& params, double h) {
 
 void findOrderedPairs(World& world, const Params& params, StepStats& stats) {
     Workspace& ws = world.workspace;
-    const int threads = std::max(1, params.threads);
+    const int threads = solverThreads(world, params);
     const Extent extent = extentOf(world);
     const double margin = kMarginFraction * extent.maxRadius;
     if (params.broadPhase == BroadPhase::AllPairs) {  // the lecture's loop, every step

@@ -199,10 +199,11 @@ std::vector<Parameter> makeTable() {
                "first, then the odd ones. Slabs of one kind share no sphere, so several threads "
                "can handle them at once: the order a parallel solver needs.",
                param<&Params::order>()),
-        integer("threads", "solver threads", 1, 64, kDefaults.threads,
-                "Threads the solver uses. The result is the same, bit for bit, for any count. "
-                "In the slab order every stage runs in parallel; in the other orders the "
-                "pair passes stay on one thread (their order is sequential).",
+        integer("threads", "solver threads", 0, 64, kDefaults.threads,
+                "Threads the solver uses; 0: one per core (at most 8). The result is the same, "
+                "bit for bit, for any count. In the slab order every stage runs in parallel; in "
+                "the other orders the pair passes stay on one thread (their order is sequential). "
+                "Scenes under 4096 spheres use one thread.",
                 param<&Params::threads>()),
         choice("broadphase", "broad phase", {"grid", "allpairs"},
                static_cast<double>(kDefaults.broadPhase),

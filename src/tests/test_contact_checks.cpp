@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "physics/broad_phase.h"
 #include "physics/diagnostics.h"
@@ -135,12 +136,12 @@ TEST(ContactChecks, GridFindsExactlyThePairsOfTheAllPairsLoop) {
     for (std::uint64_t seed = 1; seed <= 6; ++seed) {
         const double extent = 0.5 * static_cast<double>(seed);  // from dense to sparse
         const physics::World world = scattered(500 * seed, extent, seed);
-        for (double margin : {0.0, 0.004}) {
+        for (const auto& [margin, threads] : {std::pair{0.0, 1}, std::pair{0.004, 1}, std::pair{0.004, 3}}) {
             physics::Workspace grid;
             std::vector<physics::SpherePair> reference;
-            physics::findPairsGrid(world, margin, grid);
+            physics::findPairsGrid(world, margin, grid, threads);
             physics::findPairsAllPairs(world, margin, reference);
-            ASSERT_EQ(grid.pairs.size(), reference.size()) << "seed " << seed;
+            ASSERT_EQ(grid.pairs.size(), reference.size()) << "seed " << seed << ", threads " << threads;
             EXPECT_GT(reference.size(), 0u);
             for (std::size_t k = 0; k < reference.size(); ++k) {
                 ASSERT_EQ(grid.pairs[k].i, reference[k].i);
