@@ -6,7 +6,7 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
-#include "physics/thread_team.h"
+#include "physics/solver_stages.h"
 
 namespace physics {
 namespace {
@@ -168,10 +168,9 @@ std::uint64_t findPairsGrid(const World& world, double margin, Workspace& worksp
     runTasks(threads, tasks, [&](int t) {
         TaskScratch& scratch = workspace.tasks[std::size_t(t)];
         scratch.pairs.clear();
-        const std::uint32_t begin = std::uint32_t(std::uint64_t(n) * t / tasks);
-        const std::uint32_t end = std::uint32_t(std::uint64_t(n) * (t + 1) / tasks);
+        const Range range = rangeOf(n, t, tasks);
         std::uint64_t made = 0;
-        for (std::uint32_t i = begin; i < end; ++i) made += pairsOf(i, grid, margin, workspace, scratch.partners, scratch.pairs);
+        for (std::uint32_t i = range.begin; i < range.end; ++i) made += pairsOf(i, grid, margin, workspace, scratch.partners, scratch.pairs);
         tests[std::size_t(t)] = made;
     });
     std::uint64_t total = 0;
