@@ -22,14 +22,13 @@ enum class ResponseModel {
 enum class PositionSplit { HalfHalf, MassWeighted };
 
 // The order in which sphere pairs are visited in each pass (slide 14: order matters).
-// Slabs: the spheres' x range is cut into slabs at least one contact wide; the pairs of
-// the even slabs come first, then those of the odd ones, index order within a slab.
-// Two even (or two odd) slabs never share a sphere, so their pairs can be handled on
-// different threads with the result of one thread: the order parallel solvers use.
-enum class PairOrder { Index, Reversed, Shuffled, Slabs };
+enum class PairOrder { Index, Reversed, Shuffled };
 
 // Where candidate pairs come from: a uniform grid, or the lecture's O(N^2) loop.
 enum class BroadPhase { Grid, AllPairs };
+
+// The most threads the solver takes, whatever Params::threads asks.
+constexpr int kMostSolverThreads = 64;
 
 struct Params {
     double alpha = 1.0;     // tangential attenuation ("friction" in slide 4), in [0, 1]
@@ -46,8 +45,9 @@ struct Params {
     PairOrder order = PairOrder::Index;
     BroadPhase broadPhase = BroadPhase::Grid;
     // Threads the solver may use, 0: one per core (at most 8). Any count gives the
-    // same result, bit for bit: the pair passes run in parallel only in the slab
-    // order, everything else always can. Small worlds (under 4096 spheres) use one.
+    // same result, bit for bit, in every order: a thread waits before a pair until
+    // the pair that met one of its spheres before is done. Small worlds (under 4096
+    // spheres) use one.
     int threads = 0;
 
     // s: the step every formula of the lecture uses (its h).

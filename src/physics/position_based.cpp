@@ -11,7 +11,7 @@ namespace {
 
 void particlesVelocityAndPosition(World& world, const Params& params, StepStats& stats,
                                   int pass) {
-    forEachPairGroup(world, params, stats, [&](const SpherePair* first, const SpherePair* last, StepStats& s) {
+    forEachPairInPassOrder(world, params, stats, [&](const SpherePair* first, const SpherePair* last, StepStats& s) {
         for (const SpherePair* pair = first; pair != last; ++pair) {
             SphereContact contact;
             if (!touching(world, *pair, contact)) continue;
@@ -24,15 +24,11 @@ void particlesVelocityAndPosition(World& world, const Params& params, StepStats&
 
 void wallsVelocityAndPosition(World& world, const Params& params, StepStats& stats,
                               int pass) {
-    forEachSphereRange(world, params, stats, [&](std::uint32_t first, std::uint32_t last, StepStats& s) {
-        for (std::uint32_t i = first; i < last; ++i) {
-            for (std::size_t k = 0; k < world.planes.size(); ++k) {
-                const Plane face = faceFor(world.planes[k], world.position[i]);
-                if (!touching(world, i, face)) continue;
-                respondToContact(world, i, k, face, params, s, pass);
-                projectOnPlane(world.position[i], world.radius[i], face);
-            }
-        }
+    forEachSphere(world, params, stats, [&](std::uint32_t i, StepStats& s) {
+        forEachTouchedPlane(world, i, [&](std::size_t k, const Plane& face) {
+            respondToContact(world, i, k, face, params, s, pass);
+            projectOnPlane(world.position[i], world.radius[i], face);
+        });
     });
 }
 

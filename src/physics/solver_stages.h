@@ -2,6 +2,7 @@
 // The stages the two methods are made of (second deck, "Summary with multiple
 // particles"). Internal to the physics library.
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <utility>
@@ -32,56 +33,79 @@ inline Range rangeOf(std::size_t n, int t, int tasks) {
             std::uint32_t(n * std::size_t(t + 1) / std::size_t(tasks))};
 }
 
-// visit(begin, end, stats) on ranges of sphere indices that together cover every
-// sphere once, in parallel: for stages where each sphere changes only itself.
+// visit(i, stats) on every sphere i once, in parallel (ranges of indices): for stages
+// where each sphere changes only itself.
 template <class Visit>
-void forEachSphereRange(World& world, const Params& params, StepStats& stats, const Visit& visit) {
+void forEachSphere(World& world, const Params& params, StepStats& stats, const Visit& visit) {
     const int threads = threadsFor(world, params);
     if (threads == 1) {
-        visit(std::uint32_t(0), std::uint32_t(world.size()), stats);
+        for (std::uint32_t i = 0; i < world.size(); ++i) visit(i, stats);
         return;
     }
     std::vector<StepStats> taskStats(static_cast<std::size_t>(threads));
     runTasks(threads, threads, [&](int t) {
-        const Range range = rangeOf(world.size(), t, threads);
         StepStats local;  // neighbours in taskStats share cache lines: count apart
-        visit(range.begin, range.end, local);
+        const Range range = rangeOf(world.size(), t, threads);
+        for (std::uint32_t i = range.begin; i < range.end; ++i) visit(i, local);
         taskStats[std::size_t(t)] = local;
     });
     for (const StepStats& s : taskStats) stats += s;
 }
 
-// visit(first, last, stats) on the groups of candidate pairs, in pass order: the
-// groups before workspace.firstOddGroup, in parallel, then the others. Groups
-// handled at the same time share no sphere, so the result is that of one thread.
+// A thread tells the others how far it got after at most this many pairs.
+constexpr std::uint32_t kLongestRun = 32;
+
+// How many pairs one thread has done, on a cache line of its own.
+struct alignas(64) PairProgress {
+    std::atomic<std::uint32_t> done{0};
+};
+
+// visit(first, last, stats) on ranges of the candidate pairs that together give the
+// result of visiting them in pass order: on one thread the pass order itself; on
+// several, each thread its share (Workspace::sharedPairs), pair by pair, each after
+// the pairs of other threads that met its spheres before.
 template <class Visit>
-void forEachPairGroup(World& world, const Params& params, StepStats& stats, const Visit& visit) {
+void forEachPairInPassOrder(World& world, const Params& params, StepStats& stats, const Visit& visit) {
     const Workspace& ws = world.workspace;
-    const SpherePair* pairs = ws.visitOrder.data();
     const int threads = threadsFor(world, params);
-    const std::size_t groups = ws.groupStart.size() - 1;
-    std::vector<StepStats> groupStats(threads == 1 ? 0 : groups);
-    for (const auto& [first, last] : {std::pair{std::size_t(0), ws.firstOddGroup}, std::pair{ws.firstOddGroup, groups}}) {
-        runTasks(threads, int(last - first), [&](int t) {
-            const std::size_t g = first + std::size_t(t);
-            if (threads == 1) {
-                visit(pairs + ws.groupStart[g], pairs + ws.groupStart[g + 1], stats);
-                return;
-            }
-            StepStats local;  // neighbours in groupStats share cache lines: count apart
-            visit(pairs + ws.groupStart[g], pairs + ws.groupStart[g + 1], local);
-            groupStats[g] = local;
-        });
+    if (threads == 1 || ws.shareThreads != threads) {
+        visit(ws.visitOrder.data(), ws.visitOrder.data() + ws.visitOrder.size(), stats);
+        return;
     }
-    for (const StepStats& s : groupStats) stats += s;
+    std::vector<StepStats> taskStats(static_cast<std::size_t>(threads));
+    std::vector<PairProgress> progress(static_cast<std::size_t>(threads));
+    runTasks(threads, threads, [&](int thread) {
+        StepStats local;  // neighbours in taskStats share cache lines: count apart
+        std::uint32_t seen[kMostSolverThreads] = {};  // what this thread last read of each other's progress
+        const auto ready = [&](std::uint32_t k) {
+            return ws.pairNeeds[2 * k].done <= seen[ws.pairNeeds[2 * k].thread] &&
+                   ws.pairNeeds[2 * k + 1].done <= seen[ws.pairNeeds[2 * k + 1].thread];
+        };
+        std::atomic<std::uint32_t>& done = progress[std::size_t(thread)].done;
+        const std::uint32_t first = ws.shareStart[std::size_t(thread)], last = ws.shareStart[std::size_t(thread) + 1];
+        for (std::uint32_t k = first; k < last;) {
+            for (const Workspace::PairNeed& need : {ws.pairNeeds[2 * k], ws.pairNeeds[2 * k + 1]}) {
+                if (need.done > seen[need.thread]) seen[need.thread] = awaitAtLeast(progress[need.thread].done, need.done);
+            }
+            // A run of pairs whose needs are met already, told done at its end.
+            std::uint32_t end = k + 1;
+            while (end < last && end - k < kLongestRun && ready(end)) ++end;
+            visit(ws.sharedPairs.data() + k, ws.sharedPairs.data() + end, local);
+            done.store(end - first, std::memory_order_release);
+            k = end;
+        }
+        taskStats[std::size_t(thread)] = local;
+    });
+    for (const StepStats& s : taskStats) stats += s;
 }
 
 // Field forces, semi-implicit Euler (slide 2): v <- v + h g, then p <- p + h v.
 void integrateVelocity(World& world, const Params& params, double h);
 void integratePosition(World& world, const Params& params, double h);
 
-// Fills world.workspace.pairs with the candidate pairs in the order the passes
-// visit them (index, reversed, or shuffled with the world's seed and step count).
+// Fills world.workspace.visitOrder with the candidate pairs in the order the passes
+// visit them (index, reversed, or shuffled with the world's seed and step count), and
+// with several threads shares them out.
 void findOrderedPairs(World& world, const Params& params, StepStats& stats);
 
 // Narrow phase, slide 9: the pair touches when |p1 - p2| <= r1 + r2.
@@ -103,8 +127,26 @@ inline bool touching(const World& world, const SpherePair& pair, SphereContact& 
 }
 
 // Slide 3: the sphere touches the plane when (p - a).n <= r.
-inline bool touching(const World& world, std::uint32_t i, const Plane& plane) {
-    return glm::dot(world.position[i] - plane.point, plane.normal) <= world.radius[i];
+inline bool touching(const glm::dvec3& p, double r, const Plane& plane) {
+    return glm::dot(p - plane.point, plane.normal) <= r;
+}
+
+// visit(k, face) for each plane k that sphere i touches, in plane order, with face =
+// faceFor(plane k, the centre as it is then): visit may move the sphere. Plain planes
+// are tested where they lie, without a copy (this runs for every sphere and plane in
+// every pass, and most spheres touch no wall).
+template <class Visit>
+inline void forEachTouchedPlane(const World& world, std::uint32_t i, const Visit& visit) {
+    const double r = world.radius[i];  // m
+    for (std::size_t k = 0; k < world.planes.size(); ++k) {
+        const Plane& plane = world.planes[k];
+        if (plane.thickness > 0.0) {
+            const Plane face = faceFor(plane, world.position[i]);
+            if (touching(world.position[i], r, face)) visit(k, face);
+        } else if (touching(world.position[i], r, plane)) {
+            visit(k, plane);
+        }
+    }
 }
 
 // The velocity response to one contact (collision_response.h), recorded in the

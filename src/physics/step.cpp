@@ -98,66 +98,52 @@ void reorder(std::vector<SpherePair>& pairs, PairOrder order, std::uint64_t seed
     for (std::size_t k = pairs.size(); k > 1; --k) std::swap(pairs[k - 1], pairs[random.below(k)]);
 }
 
-// The slab order: at most this many slabs along x, each at least one contact wide.
-constexpr int kSlabCount = 16;
-
-// Which slab each sphere's centre lies in now (non-finite centres: slab 0).
-void assignSlabs(World& world, const Extent& extent, double margin) {
+// Shares visitOrder's pairs out between `threads` threads (Workspace::sharedPairs): by
+// the slab of x, of equal width, that holds the first sphere.
+void sharePairsOut(World& world, int threads) {
+    Workspace& ws = world.workspace;
     double lo = INFINITY, hi = -INFINITY;  // m
     for (const glm::dvec3& p : world.position) {
         if (!std::isfinite(p.x)) continue;
         lo = std::min(lo, p.x);
         hi = std::max(hi, p.x);
     }
-    // A pair within reach lies less than 2 r_max + margin apart in x: in one slab or
-    // two neighbours (1 % to spare for rounding).
-    const double width = std::max(1.01 * (2.0 * extent.maxRadius + margin), (hi - lo) / kSlabCount);  // m
-    std::vector<std::uint32_t>& slab = world.workspace.slabOfSphere;
-    slab.resize(world.size());
-    for (std::size_t i = 0; i < world.size(); ++i) {
-        const double x = world.position[i].x;
-        const double s = std::isfinite(x) && width > 0.0 ? std::floor((x - lo) / width) : 0.0;
-        slab[i] = std::uint32_t(std::clamp(s, 0.0, double(kSlabCount - 1)));
-    }
-}
-
-// A pair belongs to the lower of its spheres' slabs; the even slabs' groups come
-// first (0, 2, 4, ...), then the odd ones'. A stable counting sort keeps index
-// order within each group.
-void groupBySlab(World& world, const Extent& extent, double margin) {
-    assignSlabs(world, extent, margin);
-    Workspace& ws = world.workspace;
-    const auto groupOf = [&](const SpherePair& pair) {
-        const std::uint32_t s = std::min(ws.slabOfSphere[pair.i], ws.slabOfSphere[pair.j]);
-        return s % 2 == 0 ? s / 2 : kSlabCount / 2 + s / 2;
+    const double slabsPerMetre = hi > lo ? threads / (hi - lo) : 0.0;
+    const auto threadOf = [&](std::uint32_t sphere) {
+        const double slab = (world.position[sphere].x - lo) * slabsPerMetre;
+        return std::isfinite(slab) ? std::uint32_t(std::clamp(slab, 0.0, threads - 1.0)) : 0u;
     };
-    ws.groupStart.assign(kSlabCount + 1, 0);
-    for (const SpherePair& pair : ws.visitOrder) ++ws.groupStart[groupOf(pair) + 1];
-    for (int g = 0; g < kSlabCount; ++g) ws.groupStart[std::size_t(g) + 1] += ws.groupStart[std::size_t(g)];
-    std::array<std::uint32_t, kSlabCount> next{};
-    std::copy(ws.groupStart.begin(), ws.groupStart.end() - 1, next.begin());
-    ws.grouped.resize(ws.visitOrder.size());
-    for (const SpherePair& pair : ws.visitOrder) ws.grouped[next[groupOf(pair)]++] = pair;
-    ws.visitOrder.swap(ws.grouped);
-    ws.firstOddGroup = kSlabCount / 2;
-}
-
-void groupOrdered(World& world, const Params& params, const Extent& extent, double margin) {
-    Workspace& ws = world.workspace;
-    if (params.order == PairOrder::Slabs) {
-        groupBySlab(world, extent, margin);
-        return;
+    ws.shareThreads = threads;
+    ws.shareStart.assign(std::size_t(threads) + 1, 0);
+    ws.threadOfPair.resize(ws.visitOrder.size());
+    for (std::size_t k = 0; k < ws.visitOrder.size(); ++k) {
+        ws.threadOfPair[k] = threadOf(ws.visitOrder[k].i);
+        ++ws.shareStart[ws.threadOfPair[k] + 1];
     }
-    reorder(ws.visitOrder, params.order, world.seed, world.stepCount);
-    ws.groupStart.assign({0, std::uint32_t(ws.visitOrder.size())});
-    ws.firstOddGroup = 1;
+    for (int t = 0; t < threads; ++t) ws.shareStart[std::size_t(t) + 1] += ws.shareStart[std::size_t(t)];
+    // Walk the pass order, noting where each sphere was met last.
+    ws.sharedPairs.resize(ws.visitOrder.size());
+    ws.pairNeeds.resize(2 * ws.visitOrder.size());
+    ws.lastPairOf.assign(world.size(), {});
+    std::vector<std::uint32_t> placed(ws.shareStart.begin(), ws.shareStart.end() - 1);
+    for (std::size_t k = 0; k < ws.visitOrder.size(); ++k) {
+        const SpherePair pair = ws.visitOrder[k];
+        const std::uint32_t t = ws.threadOfPair[k], slot = placed[t]++;
+        ws.sharedPairs[slot] = pair;
+        const std::uint32_t doneWithThis = slot - ws.shareStart[t] + 1;
+        for (int side = 0; side < 2; ++side) {
+            Workspace::PairNeed& last = ws.lastPairOf[side == 0 ? pair.i : pair.j];
+            ws.pairNeeds[2 * slot + std::size_t(side)] = last.thread != t ? last : Workspace::PairNeed{};
+            last = {t, doneWithThis};
+        }
+    }
 }
 
 }  // namespace
 
 int solverThreads(const World& world, const Params& params) {
     if (world.size() < kParallelMinSpheres) return 1;
-    if (params.threads > 0) return params.threads;
+    if (params.threads > 0) return std::min(params.threads, kMostSolverThreads);
     static const int cores = int(std::thread::hardware_concurrency());
     return std::clamp(cores, 1, kMostAutomaticThreads);
 }
@@ -175,16 +161,12 @@ StepStats& StepStats::operator+=(const StepStats& o) {
 
 void integrateVelocity(World& world, const Params& params, double h) {
     StepStats none;
-    forEachSphereRange(world, params, none, [&](std::uint32_t begin, std::uint32_t end, StepStats&) {
-        for (std::uint32_t i = begin; i < end; ++i) world.velocity[i] += h * params.gravity;
-    });
+    forEachSphere(world, params, none, [&](std::uint32_t i, StepStats&) { world.velocity[i] += h * params.gravity; });
 }
 
 void integratePosition(World& world, const Params& params, double h) {
     StepStats none;
-    forEachSphereRange(world, params, none, [&](std::uint32_t begin, std::uint32_t end, StepStats&) {
-        for (std::uint32_t i = begin; i < end; ++i) world.position[i] += h * world.velocity[i];
-    });
+    forEachSphere(world, params, none, [&](std::uint32_t i, StepStats&) { world.position[i] += h * world.velocity[i]; });
 }
 
 void findOrderedPairs(World& world, const Params& params, StepStats& stats) {
@@ -219,7 +201,10 @@ void findOrderedPairs(World& world, const Params& params, StepStats& stats) {
         }
     }
     stats.candidatePairs += ws.visitOrder.size();
-    groupOrdered(world, params, extent, margin);
+    reorder(ws.visitOrder, params.order, world.seed, world.stepCount);
+    const int passThreads = threadsFor(world, params);
+    ws.shareThreads = 1;
+    if (passThreads > 1) sharePairsOut(world, passThreads);
 }
 
 namespace {
@@ -276,19 +261,16 @@ void respondToContact(World& world, std::uint32_t i, std::size_t planeIndex, con
 }
 
 void respondToAllContacts(World& world, const Params& params, StepStats& stats, int pass) {
-    forEachPairGroup(world, params, stats, [&](const SpherePair* begin, const SpherePair* end, StepStats& s) {
+    forEachPairInPassOrder(world, params, stats, [&](const SpherePair* begin, const SpherePair* end, StepStats& s) {
         for (const SpherePair* pair = begin; pair != end; ++pair) {
             SphereContact contact;
             if (touching(world, *pair, contact)) respondToContact(world, *pair, contact, params, s, pass);
         }
     });
-    forEachSphereRange(world, params, stats, [&](std::uint32_t begin, std::uint32_t end, StepStats& s) {
-        for (std::uint32_t i = begin; i < end; ++i) {
-            for (std::size_t k = 0; k < world.planes.size(); ++k) {
-                const Plane face = faceFor(world.planes[k], world.position[i]);
-                if (touching(world, i, face)) respondToContact(world, i, k, face, params, s, pass);
-            }
-        }
+    forEachSphere(world, params, stats, [&](std::uint32_t i, StepStats& s) {
+        forEachTouchedPlane(world, i, [&](std::size_t k, const Plane& face) {
+            respondToContact(world, i, k, face, params, s, pass);
+        });
     });
 }
 

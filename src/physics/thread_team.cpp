@@ -108,4 +108,12 @@ void runTasksOnTeam(int threads, int tasks, TaskFunction function, const void* c
     team.run(threads, tasks, function, context);
 }
 
+unsigned awaitAtLeast(const std::atomic<unsigned>& counter, unsigned value) {
+    for (int spins = 0;; ++spins) {
+        const unsigned now = counter.load(std::memory_order_acquire);
+        if (now >= value) return now;
+        if (spins > 64) std::this_thread::yield();
+    }
+}
+
 }  // namespace physics

@@ -1,8 +1,9 @@
 #pragma once
 // The solver's worker threads: one process-wide team, started on first use, that
 // runs the tasks of a parallel stage. Which thread runs which task never changes a
-// result: the stages give threads only work that touches disjoint spheres, and
-// sum what they count afterwards.
+// result: the stages give threads work on disjoint spheres, or make a task wait
+// until the one that met a sphere before it is done, and sum what they count after.
+#include <atomic>
 
 namespace physics {
 
@@ -12,6 +13,9 @@ using TaskFunction = void (*)(const void* context, int task);
 // up to `threads` threads (the caller is one of them); returns when all have finished.
 void runTasksOnTeam(int threads, int tasks, TaskFunction function, const void* context);
 
+// Tasks may wait for each other (awaitAtLeast) when tasks <= threads: the team has
+// threads - 1 workers besides the caller, so a task that no thread has taken yet
+// always has an idle thread on its way to take it.
 // task(0) ... task(tasks - 1): in order on the caller with one thread or one task,
 // else on the team. (A template, so that no std::function allocates per stage.)
 template <class Task>
@@ -23,5 +27,10 @@ void runTasks(int threads, int tasks, const Task& task) {
     runTasksOnTeam(threads, tasks, [](const void* context, int t) { (*static_cast<const Task*>(context))(t); },
                    &task);
 }
+
+// Returns the value of `counter` (written by another task of the same runTasks call)
+// once it has reached `value`. Waiting spins (the wait is for a few pairs), then
+// yields, so that more threads than cores still make progress.
+unsigned awaitAtLeast(const std::atomic<unsigned>& counter, unsigned value);
 
 }  // namespace physics

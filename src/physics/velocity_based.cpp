@@ -14,7 +14,7 @@ namespace {
 
 void cancelPenetratingVelocity(World& world, const Params& params) {
     StepStats none;
-    forEachPairGroup(world, params, none, [&](const SpherePair* first, const SpherePair* last, StepStats&) {
+    forEachPairInPassOrder(world, params, none, [&](const SpherePair* first, const SpherePair* last, StepStats&) {
         for (const SpherePair* pair = first; pair != last; ++pair) {
             SphereContact contact;
             if (!touching(world, *pair, contact)) continue;
@@ -22,13 +22,10 @@ void cancelPenetratingVelocity(World& world, const Params& params) {
                                   world.mass[pair->j], contact.u);
         }
     });
-    forEachSphereRange(world, params, none, [&](std::uint32_t first, std::uint32_t last, StepStats&) {
-        for (std::uint32_t i = first; i < last; ++i) {
-            for (const Plane& plane : world.planes) {
-                const Plane face = faceFor(plane, world.position[i]);
-                if (touching(world, i, face)) cancelApproachToPlane(world.velocity[i], face.normal);
-            }
-        }
+    forEachSphere(world, params, none, [&](std::uint32_t i, StepStats&) {
+        forEachTouchedPlane(world, i, [&](std::size_t, const Plane& face) {
+            cancelApproachToPlane(world.velocity[i], face.normal);
+        });
     });
 }
 

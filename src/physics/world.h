@@ -82,13 +82,21 @@ struct Workspace {
     std::vector<glm::dvec4> cellOrdered;         // centre (m) and radius (m), in sphereByCell order
     std::vector<std::uint32_t> slotOfSphere;     // where each sphere sits in cellOrdered
     std::vector<TaskScratch> tasks;              // one per parallel task
-    // visitOrder is cut into groups of pairs, [groupStart[g], groupStart[g + 1]): the
-    // groups before firstOddGroup share no sphere with each other, nor do those after
-    // it (slab order; otherwise a single group).
-    std::vector<std::uint32_t> groupStart;
-    std::size_t firstOddGroup = 1;
-    std::vector<std::uint32_t> slabOfSphere;
-    std::vector<SpherePair> grouped;  // visitOrder being sorted into groups
+    // With several threads the pairs are shared out: thread t visits
+    // sharedPairs[shareStart[t], shareStart[t + 1]), the pairs whose first sphere lies in
+    // its slab of x, in pass order. Where a pair's sphere met a pair of another thread
+    // last, it waits for that pair (PairNeed), so every sphere still meets its pairs in
+    // pass order: the result of one thread, bit for bit.
+    struct PairNeed {
+        std::uint32_t thread = 0;  // the other thread
+        std::uint32_t done = 0;    // how many of its pairs must be done; 0: no need
+    };
+    int shareThreads = 1;
+    std::vector<SpherePair> sharedPairs;
+    std::vector<std::uint32_t> shareStart;
+    std::vector<PairNeed> pairNeeds;         // two per pair of sharedPairs, one per sphere
+    std::vector<std::uint32_t> threadOfPair;  // scratch of the share-out
+    std::vector<PairNeed> lastPairOf;         // scratch: per sphere, the last pair that met it
     std::vector<double> taskMove;  // m^2: the largest squared displacement each task saw
 };
 

@@ -191,19 +191,16 @@ std::vector<Parameter> makeTable() {
                "Slide 13: correct position p = p \u00b1 d/2 u, half of the collision depth d "
                "each. mass: the lighter sphere moves more (by d m2/(m1 + m2) and d m1/(m1 + m2)).",
                param<&Params::split>()),
-        choice("order", "pair order", {"index", "reversed", "shuffled", "slabs"},
+        choice("order", "pair order", {"index", "reversed", "shuffled"},
                static_cast<double>(kDefaults.order),
                "Slide 14: the order of correction does matter. Sphere pairs are visited in "
-               "index order, reversed, or shuffled with the scene's seed. slabs: the box is cut "
-               "into slabs along x, each wider than a contact; the pairs of the even slabs go "
-               "first, then the odd ones. Slabs of one kind share no sphere, so several threads "
-               "can handle them at once: the order a parallel solver needs.",
+               "index order, reversed, or shuffled with the scene's seed.",
                param<&Params::order>()),
-        integer("threads", "solver threads", 0, 64, kDefaults.threads,
+        integer("threads", "solver threads", 0, physics::kMostSolverThreads, kDefaults.threads,
                 "Threads the solver uses; 0: one per core (at most 8). The result is the same, "
-                "bit for bit, for any count. In the slab order every stage runs in parallel; in "
-                "the other orders the pair passes stay on one thread (their order is sequential). "
-                "Scenes under 4096 spheres use one thread.",
+                "bit for bit, for any count: threads share out only pairs that have no sphere "
+                "in common, wave after wave, so each sphere still meets its partners in the "
+                "pair order. Scenes under 4096 spheres use one thread.",
                 param<&Params::threads>()),
         choice("broadphase", "broad phase", {"grid", "allpairs"},
                static_cast<double>(kDefaults.broadPhase),

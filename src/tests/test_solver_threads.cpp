@@ -1,11 +1,12 @@
-// Threads never change a result: the thread team runs every task once, the slab
-// order keeps spheres of concurrent groups apart, and every method reaches the
-// same state, bit for bit, on 1, 2 or 3 threads.
+// Threads never change a result: the thread team runs every task once, the pairs
+// shared out between threads wait for the pairs that met their spheres before, and
+// every method and order reaches the same state, bit for bit, on 1, 2 or 3 threads.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <atomic>
 #include <cstdlib>
+#include <map>
 #include <set>
 #include <vector>
 
@@ -21,7 +22,6 @@
 namespace {
 
 using physics::Method;
-using physics::PairOrder;
 
 // The pile preset with 5000 spheres of 2.5 cm (above the solver's threshold for
 // threads), after "name=value" settings.
@@ -56,7 +56,7 @@ TEST(ThreadTeam, RunsEveryTaskExactlyOnce) {
 
 TEST(SolverThreads, EveryMethodAndOrderReachesTheSameStateOnAnyThreadCount) {
     for (const char* method : {"position", "velocity", "response-only"}) {
-        for (const char* order : {"index", "slabs", "shuffled"}) {
+        for (const char* order : {"index", "reversed", "shuffled"}) {
             std::set<std::uint64_t> hashes;
             std::uint64_t contacts = 0;
             for (const char* threads : {"1", "2", "3"}) {
@@ -77,7 +77,7 @@ TEST(SolverThreads, LoggedContactsAreTheSameOnAnyThreadCount) {
     std::vector<std::size_t> counts;
     std::set<std::uint64_t> hashes;
     for (const char* threads : {"1", "2"}) {
-        const scenes::Scene scene = pile({"order=slabs", std::string("threads=") + threads});
+        const scenes::Scene scene = pile({std::string("threads=") + threads});
         physics::World world = scenes::buildWorld(scene);
         world.recordContacts = true;
         for (int k = 0; k < 60; ++k) physics::step(world, scene.params);
@@ -89,62 +89,53 @@ TEST(SolverThreads, LoggedContactsAreTheSameOnAnyThreadCount) {
     EXPECT_EQ(hashes.size(), 1u);
 }
 
-// The slab order visits the pairs of the index order, regrouped: the groups of one
-// parity (even slabs, then odd ones) share no sphere.
-TEST(SlabOrder, VisitsTheIndexOrderPairsInGroupsThatShareNoSphere) {
+// Shared out between three threads, each thread has the pairs of its slab of x, in
+// pass order, and waits where a sphere met another thread's pair last: for exactly
+// that pair. Every pair of the pass order is in one share.
+TEST(SharedPairs, WaitForThePairThatMetTheirSpheresBefore) {
     const physics::World landed = run(pile({}), 60);
-    physics::World byIndex = landed, bySlabs = landed;
-    physics::Params params = pile({}).params;
-    physics::StepStats stats;
-    physics::findOrderedPairs(byIndex, params, stats);
-    params.order = PairOrder::Slabs;
-    physics::findOrderedPairs(bySlabs, params, stats);
+    for (const char* order : {"index", "shuffled"}) {
+        physics::World world = landed;
+        const physics::Params params = pile({std::string("order=") + order, "threads=3"}).params;
+        physics::StepStats stats;
+        physics::findOrderedPairs(world, params, stats);
+        const physics::Workspace& ws = world.workspace;
+        ASSERT_EQ(ws.shareThreads, 3);
+        ASSERT_EQ(ws.sharedPairs.size(), ws.visitOrder.size());
+        ASSERT_GT(ws.visitOrder.size(), 5000u);
 
-    const physics::Workspace& ws = bySlabs.workspace;
-    std::vector<physics::SpherePair> regrouped = ws.visitOrder;
-    const auto byIj = [](const physics::SpherePair& a, const physics::SpherePair& b) {
-        return a.i != b.i ? a.i < b.i : a.j < b.j;
-    };
-    std::sort(regrouped.begin(), regrouped.end(), byIj);
-    ASSERT_EQ(regrouped.size(), byIndex.workspace.visitOrder.size());
-    EXPECT_GT(regrouped.size(), 5000u);
-    for (std::size_t k = 0; k < regrouped.size(); ++k) {
-        ASSERT_EQ(regrouped[k].i, byIndex.workspace.visitOrder[k].i);
-        ASSERT_EQ(regrouped[k].j, byIndex.workspace.visitOrder[k].j);
-    }
-
-    const std::size_t groups = ws.groupStart.size() - 1;
-    ASSERT_GT(groups, 2u);
-    int busyGroups = 0;
-    for (const auto& [first, last] : {std::pair{std::size_t(0), ws.firstOddGroup}, std::pair{ws.firstOddGroup, groups}}) {
-        std::vector<int> groupOf(landed.size(), -1);  // which group of this parity touched the sphere
-        for (std::size_t g = first; g < last; ++g) {
-            busyGroups += ws.groupStart[g + 1] > ws.groupStart[g];
-            for (std::uint32_t k = ws.groupStart[g]; k < ws.groupStart[g + 1]; ++k) {
-                for (std::uint32_t sphere : {ws.visitOrder[k].i, ws.visitOrder[k].j}) {
-                    int& owner = groupOf[sphere];
-                    ASSERT_TRUE(owner == -1 || owner == int(g)) << "sphere " << sphere << " in groups " << owner << " and " << g;
-                    owner = int(g);
-                }
-                if (k > ws.groupStart[g]) {
-                    ASSERT_TRUE(byIj(ws.visitOrder[k - 1], ws.visitOrder[k])) << "index order in a group";
-                }
+        // Where each pair of the pass order went: (thread, place in its share).
+        std::map<std::pair<std::uint32_t, std::uint32_t>, std::pair<std::uint32_t, std::uint32_t>> placeOf;
+        for (std::uint32_t t = 0; t < 3; ++t) {
+            EXPECT_GT(ws.shareStart[t + 1] - ws.shareStart[t], ws.visitOrder.size() / 6) << "thread " << t << " has work";
+            for (std::uint32_t k = ws.shareStart[t]; k < ws.shareStart[t + 1]; ++k) {
+                placeOf[{ws.sharedPairs[k].i, ws.sharedPairs[k].j}] = {t, k - ws.shareStart[t]};
             }
         }
+        ASSERT_EQ(placeOf.size(), ws.visitOrder.size()) << "each pair in one share";
+        std::vector<std::pair<std::uint32_t, std::uint32_t>> lastMet(world.size(), {~0u, 0});
+        std::vector<std::uint32_t> doneInShare(3, 0);
+        std::size_t waits = 0;
+        for (const physics::SpherePair& pair : ws.visitOrder) {
+            const auto [thread, place] = placeOf.at({pair.i, pair.j});
+            ASSERT_EQ(place, doneInShare[thread]++) << "pass order within a share (" << order << ")";
+            const std::uint32_t k = ws.shareStart[thread] + place;
+            for (int side = 0; side < 2; ++side) {
+                auto& last = lastMet[side == 0 ? pair.i : pair.j];
+                const physics::Workspace::PairNeed need = ws.pairNeeds[2 * k + std::size_t(side)];
+                if (last.first == ~0u || last.first == thread) {
+                    EXPECT_EQ(need.done, 0u);
+                } else {
+                    EXPECT_EQ(need.thread, last.first);
+                    EXPECT_EQ(need.done, last.second + 1);
+                    ++waits;
+                }
+                last = {thread, place};
+            }
+        }
+        EXPECT_GT(waits, 0u) << "slabs meet";
+        EXPECT_LT(waits, ws.visitOrder.size() / 4) << "slabs meet only at their borders (" << order << ")";
     }
-    EXPECT_GE(busyGroups, 8) << "the pile spans several slabs";
-}
-
-// The slab order is another order of the same passes: the pile stays in its box
-// and overlaps no more than in index order.
-TEST(SlabOrder, KeepsThePileInItsBoxAsTheIndexOrderDoes) {
-    const scenes::Scene byIndex = pile({}), bySlabs = pile({"order=slabs", "threads=2"});
-    const physics::World a = run(byIndex, 180), b = run(bySlabs, 180);
-    EXPECT_EQ(physics::spheresOutsideBox(b, 0.0), 0u);
-    const double indexPenetration = physics::measure(a, byIndex.params).maxPenetration;
-    const double slabPenetration = physics::measure(b, bySlabs.params).maxPenetration;
-    EXPECT_LT(slabPenetration, std::max(0.05, 2.0 * indexPenetration));
-    EXPECT_NE(physics::stateHash(a), physics::stateHash(b)) << "another order, another (valid) result";
 }
 
 // Fresh builds with the skin at every step (as after a rewind) give the states of
