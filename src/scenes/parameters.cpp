@@ -198,9 +198,10 @@ std::vector<Parameter> makeTable() {
                param<&Params::order>()),
         integer("threads", "solver threads", 0, physics::kMostSolverThreads, kDefaults.threads,
                 "Threads the solver uses; 0: one per core (at most 8). The result is the same, "
-                "bit for bit, for any count: threads share out only pairs that have no sphere "
-                "in common, wave after wave, so each sphere still meets its partners in the "
-                "pair order. Scenes under 4096 spheres use one thread.",
+                "bit for bit, for any count and pair order: each thread takes the pairs of its "
+                "slab of x, and waits where a sphere met another thread's pair last, so each "
+                "sphere still meets its partners in the pair order. Scenes under 4096 spheres "
+                "use one thread.",
                 param<&Params::threads>()),
         choice("broadphase", "broad phase", {"grid", "allpairs"},
                static_cast<double>(kDefaults.broadPhase),
