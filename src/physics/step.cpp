@@ -1,7 +1,6 @@
 #include "physics/step.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <thread>
 #include <utility>
@@ -125,7 +124,8 @@ void sharePairsOut(World& world, int threads) {
     ws.sharedPairs.resize(ws.visitOrder.size());
     ws.pairNeeds.resize(2 * ws.visitOrder.size());
     ws.lastPairOf.assign(world.size(), {});
-    std::vector<std::uint32_t> placed(ws.shareStart.begin(), ws.shareStart.end() - 1);
+    std::uint32_t placed[kMostSolverThreads];  // where each thread's next pair goes
+    std::copy(ws.shareStart.begin(), ws.shareStart.end() - 1, placed);
     for (std::size_t k = 0; k < ws.visitOrder.size(); ++k) {
         const SpherePair pair = ws.visitOrder[k];
         const std::uint32_t t = ws.threadOfPair[k], slot = placed[t]++;

@@ -13,11 +13,11 @@ using TaskFunction = void (*)(const void* context, int task);
 // up to `threads` threads (the caller is one of them); returns when all have finished.
 void runTasksOnTeam(int threads, int tasks, TaskFunction function, const void* context);
 
+// task(0) ... task(tasks - 1): in order on the caller with one thread or one task,
+// else on the team. (A template, so that no std::function allocates per stage.)
 // Tasks may wait for each other (awaitAtLeast) when tasks <= threads: the team has
 // threads - 1 workers besides the caller, so a task that no thread has taken yet
 // always has an idle thread on its way to take it.
-// task(0) ... task(tasks - 1): in order on the caller with one thread or one task,
-// else on the team. (A template, so that no std::function allocates per stage.)
 template <class Task>
 void runTasks(int threads, int tasks, const Task& task) {
     if (threads <= 1 || tasks <= 1) {
