@@ -55,31 +55,36 @@ GridShape chooseGrid(const World& world, double margin) {
     }
 }
 
-// Counting sort: sphereByCell lists sphere indices cell by cell, ascending within a cell.
+// Stable counting sort of items 0..n-1 by key(k) in [0, buckets): place(k, slot) puts
+// item k at its slot. Leaves start[b] = the first slot of bucket b (buckets + 1 entries).
+template <class Key, class Place>
+void countingSort(std::size_t n, std::size_t buckets, const Key& key, std::vector<std::uint32_t>& start,
+                  const Place& place) {
+    start.assign(buckets + 1, 0);
+    for (std::size_t k = 0; k < n; ++k) ++start[key(k) + 1];
+    for (std::size_t b = 0; b < buckets; ++b) start[b + 1] += start[b];
+    for (std::size_t k = 0; k < n; ++k) place(k, start[key(k)]++);
+    // Placing advanced each start to the next bucket's: shift back.
+    for (std::size_t b = buckets; b > 0; --b) start[b] = start[b - 1];
+    start[0] = 0;
+}
+
+// sphereByCell lists sphere indices cell by cell, ascending within a cell, and
+// cellOrdered their centres and radii in the same order.
 void sortByCell(const World& world, const GridShape& grid, Workspace& ws) {
     const std::size_t n = world.size();
-    const std::size_t cellCount = static_cast<std::size_t>(grid.dims.x) * grid.dims.y * grid.dims.z;
     ws.cellOfSphere.resize(n);
-    ws.cellStart.assign(cellCount + 1, 0);
     for (std::size_t i = 0; i < n; ++i) {
         ws.cellOfSphere[i] = finite(world.position[i]) ? grid.linear(grid.cellOf(world.position[i])) : 0;
-        ++ws.cellStart[ws.cellOfSphere[i] + 1];
     }
-    for (std::size_t c = 0; c < cellCount; ++c) ws.cellStart[c + 1] += ws.cellStart[c];
     ws.sphereByCell.resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        ws.sphereByCell[ws.cellStart[ws.cellOfSphere[i]]++] = static_cast<std::uint32_t>(i);
-    }
-    // Filling advanced each start to the next cell's: shift back.
-    for (std::size_t c = cellCount; c > 0; --c) ws.cellStart[c] = ws.cellStart[c - 1];
-    ws.cellStart[0] = 0;
     ws.cellOrdered.resize(n);
-    ws.slotOfSphere.resize(n);
-    for (std::size_t k = 0; k < n; ++k) {
-        const std::uint32_t i = ws.sphereByCell[k];
-        ws.cellOrdered[k] = glm::dvec4(world.position[i], world.radius[i]);
-        ws.slotOfSphere[i] = static_cast<std::uint32_t>(k);
-    }
+    countingSort(n, std::size_t(grid.dims.x) * grid.dims.y * grid.dims.z,
+                 [&](std::size_t i) { return ws.cellOfSphere[i]; }, ws.cellStart,
+                 [&](std::size_t i, std::uint32_t slot) {
+                     ws.sphereByCell[slot] = static_cast<std::uint32_t>(i);
+                     ws.cellOrdered[slot] = glm::dvec4(world.position[i], world.radius[i]);
+                 });
 }
 
 bool withinReach(const glm::dvec4& a, const glm::dvec4& b, double margin) {
@@ -88,43 +93,74 @@ bool withinReach(const glm::dvec4& a, const glm::dvec4& b, double margin) {
     return glm::dot(delta, delta) <= reach * reach;
 }
 
-// Appends the pairs (i, j > i) within reach of sphere i, sorted by j, and returns
-// the distance tests made. The 27 cells around i's are 9 runs of 3 cells along x,
-// each one contiguous range of the cell-sorted spheres. The tests are written
-// without branches (about half the candidates have j < i, a few are in reach:
-// branches on either would be mispredicted), into `partners`, which only grows.
-std::uint64_t pairsOf(std::uint32_t i, const GridShape& grid, double margin, const Workspace& ws,
-                      std::vector<std::uint32_t>& partners, std::vector<SpherePair>& out) {
-    const glm::dvec4 sphere = ws.cellOrdered[ws.slotOfSphere[i]];
-    const glm::ivec3 c = grid.cellOf(glm::dvec3(sphere));
-    const int x0 = std::max(c.x - 1, 0), x1 = std::min(c.x + 1, grid.dims.x - 1);
-    std::uint32_t runStart[9], runEnd[9];
-    int runs = 0;
+// The spheres (as slots of the cell order) that the sphere at `slot` meets in the
+// forward half of its neighbourhood: the later spheres of its own cell, and the 13 of
+// its 26 neighbour cells that come after its cell. Each pair of neighbours is then
+// met from one side only. They are at most 5 contiguous runs of slots: the rest of
+// its cell and the next cell along x; the row y + 1; the three rows of the plane z + 1.
+struct ForwardRuns {
+    std::uint32_t start[5], end[5];
+    int count = 0;
     std::size_t candidates = 0;
-    for (int z = std::max(c.z - 1, 0); z <= std::min(c.z + 1, grid.dims.z - 1); ++z) {
-        for (int y = std::max(c.y - 1, 0); y <= std::min(c.y + 1, grid.dims.y - 1); ++y) {
-            runStart[runs] = ws.cellStart[grid.linear({x0, y, z})];
-            runEnd[runs] = ws.cellStart[grid.linear({x1, y, z}) + 1];
-            candidates += runEnd[runs] - runStart[runs];
-            ++runs;
-        }
+};
+ForwardRuns forwardRuns(std::uint32_t slot, std::uint32_t cell, const GridShape& grid, const Workspace& ws) {
+    const glm::ivec3 c(int(cell % std::uint32_t(grid.dims.x)), int(cell / std::uint32_t(grid.dims.x) % std::uint32_t(grid.dims.y)),
+                       int(cell / std::uint32_t(grid.dims.x) / std::uint32_t(grid.dims.y)));
+    const int x0 = std::max(c.x - 1, 0), x1 = std::min(c.x + 1, grid.dims.x - 1);
+    ForwardRuns runs;
+    const auto add = [&](std::uint32_t start, std::uint32_t end) {
+        runs.start[runs.count] = start;
+        runs.end[runs.count++] = end;
+        runs.candidates += end - start;
+    };
+    add(slot + 1, ws.cellStart[grid.linear({x1, c.y, c.z}) + 1]);
+    const auto addRow = [&](int y, int z) {
+        add(ws.cellStart[grid.linear({x0, y, z})], ws.cellStart[grid.linear({x1, y, z}) + 1]);
+    };
+    if (c.y + 1 < grid.dims.y) addRow(c.y + 1, c.z);
+    if (c.z + 1 < grid.dims.z) {
+        for (int y = std::max(c.y - 1, 0); y <= std::min(c.y + 1, grid.dims.y - 1); ++y) addRow(y, c.z + 1);
     }
-    if (partners.size() < candidates) partners.resize(candidates);
+    return runs;
+}
+
+// Appends the pairs within reach that the sphere at `slot` meets in its forward runs,
+// as (lower index, higher index), and returns the distance tests made. The tests are
+// written without branches (a few candidates are in reach: a branch would be
+// mispredicted), into `partners`, which only grows.
+std::uint64_t forwardPairsOf(std::uint32_t slot, const GridShape& grid, double margin, const Workspace& ws,
+                             std::vector<std::uint32_t>& partners, std::vector<SpherePair>& out) {
+    const std::uint32_t i = ws.sphereByCell[slot];
+    const glm::dvec4 sphere = ws.cellOrdered[slot];
+    const ForwardRuns runs = forwardRuns(slot, ws.cellOfSphere[i], grid, ws);
+    if (partners.size() < runs.candidates) partners.resize(runs.candidates);
     std::uint32_t* found = partners.data();
     std::size_t count = 0;
-    std::uint64_t tests = 0;
-    for (int run = 0; run < runs; ++run) {
-        for (std::uint32_t k = runStart[run]; k < runEnd[run]; ++k) {
-            const std::uint32_t j = ws.sphereByCell[k];
-            const bool after = j > i;
-            tests += after;
-            found[count] = j;
-            count += after & withinReach(sphere, ws.cellOrdered[k], margin);
+    for (int run = 0; run < runs.count; ++run) {
+        for (std::uint32_t k = runs.start[run]; k < runs.end[run]; ++k) {
+            found[count] = ws.sphereByCell[k];
+            count += withinReach(sphere, ws.cellOrdered[k], margin);
         }
     }
-    std::sort(found, found + count);
-    for (std::size_t k = 0; k < count; ++k) out.push_back({i, found[k]});
-    return tests;
+    for (std::size_t k = 0; k < count; ++k) out.push_back({std::min(i, found[k]), std::max(i, found[k])});
+    return runs.candidates;
+}
+
+// pairs <- found, in index order: grouped by first sphere (a counting sort), each
+// group sorted by second sphere (a few pairs: insertion sort).
+void sortByFirstSphere(std::size_t n, const std::vector<SpherePair>& found, std::vector<std::uint32_t>& start,
+                       std::vector<SpherePair>& pairs) {
+    pairs.resize(found.size());
+    countingSort(found.size(), n, [&](std::size_t k) { return found[k].i; }, start,
+                 [&](std::size_t k, std::uint32_t slot) { pairs[slot] = found[k]; });
+    for (std::size_t i = 0; i < n; ++i) {
+        for (std::uint32_t k = start[i] + 1; k < start[i + 1]; ++k) {
+            const SpherePair pair = pairs[k];
+            std::uint32_t to = k;
+            for (; to > start[i] && pairs[to - 1].j > pair.j; --to) pairs[to] = pairs[to - 1];
+            pairs[to] = pair;
+        }
+    }
 }
 
 }  // namespace
@@ -160,8 +196,8 @@ std::uint64_t findPairsGrid(const World& world, double margin, Workspace& worksp
     if (n < 2) return 0;
     const GridShape grid = chooseGrid(world, margin);
     sortByCell(world, grid, workspace);
-    // Each task finds the pairs of one range of first spheres i, in index order, so
-    // that their concatenation is in index order whatever the number of tasks.
+    // Each task finds the pairs of one range of the cell order; put together and
+    // sorted, they are in index order whatever the number of tasks.
     const int tasks = threads > 1 ? 4 * threads : 1;
     workspace.tasks.resize(std::size_t(tasks));
     std::vector<std::uint64_t> tests(std::size_t(tasks), 0);
@@ -170,15 +206,19 @@ std::uint64_t findPairsGrid(const World& world, double margin, Workspace& worksp
         scratch.pairs.clear();
         const Range range = rangeOf(n, t, tasks);
         std::uint64_t made = 0;
-        for (std::uint32_t i = range.begin; i < range.end; ++i) made += pairsOf(i, grid, margin, workspace, scratch.partners, scratch.pairs);
+        for (std::uint32_t slot = range.begin; slot < range.end; ++slot) {
+            made += forwardPairsOf(slot, grid, margin, workspace, scratch.partners, scratch.pairs);
+        }
         tests[std::size_t(t)] = made;
     });
+    workspace.foundPairs.clear();
     std::uint64_t total = 0;
     for (int t = 0; t < tasks; ++t) {
         const std::vector<SpherePair>& part = workspace.tasks[std::size_t(t)].pairs;
-        workspace.pairs.insert(workspace.pairs.end(), part.begin(), part.end());
+        workspace.foundPairs.insert(workspace.foundPairs.end(), part.begin(), part.end());
         total += tests[std::size_t(t)];
     }
+    sortByFirstSphere(n, workspace.foundPairs, workspace.pairStart, workspace.pairs);
     return total;
 }
 

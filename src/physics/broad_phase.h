@@ -20,7 +20,9 @@ std::uint64_t findPairsAllPairs(const World& world, double margin, std::vector<S
 
 // A uniform grid of cells at least one largest diameter (+ margin) wide, rebuilt
 // by a counting sort of sphere indices by cell: O(N) for bounded density. Each
-// sphere looks for partners of higher index in the 27 cells around its own.
+// sphere is tested against the later spheres of its cell and the 13 neighbour cells
+// after its own (half of the 26), so each pair once; a counting sort then puts the
+// pairs in index order.
 std::uint64_t findPairsGrid(const World& world, double margin, Workspace& workspace, int threads = 1);
 
 double maxRadius(const World& world);  // m, 0 for an empty world

@@ -79,8 +79,9 @@ struct Workspace {
     std::vector<std::uint32_t> cellOfSphere;
     std::vector<std::uint32_t> cellStart;   // counting-sort offsets, one per cell + 1
     std::vector<std::uint32_t> sphereByCell;
-    std::vector<glm::dvec4> cellOrdered;         // centre (m) and radius (m), in sphereByCell order
-    std::vector<std::uint32_t> slotOfSphere;     // where each sphere sits in cellOrdered
+    std::vector<glm::dvec4> cellOrdered;    // centre (m) and radius (m), in sphereByCell order
+    std::vector<SpherePair> foundPairs;     // the grid's pairs in cell order, before sorting
+    std::vector<std::uint32_t> pairStart;   // counting-sort offsets, one per sphere + 1
     std::vector<TaskScratch> tasks;              // one per parallel task
     // With several threads the pairs are shared out: thread t visits
     // sharedPairs[shareStart[t], shareStart[t + 1]), the pairs whose first sphere lies in
