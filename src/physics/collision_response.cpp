@@ -7,40 +7,56 @@
 namespace physics {
 namespace {
 
-// kg: the mass that a pair's relative motion has, 1 / (1/m1 + 1/m2).
-double reducedMass(double m1, double m2) { return 1.0 / (1.0 / m1 + 1.0 / m2); }
+// How a change of the pair's relative velocity splits between its spheres. An impulse
+// J = m_red dv (m_red = 1 / (1/m1 + 1/m2), the pair's reduced mass, dv in m/s) changes
+// v1 by J/m1 = dv m2/(m1 + m2) and v2 by J/m2 = dv m1/(m1 + m2): each sphere takes the
+// other's share of the total mass. One division per contact instead of five.
+struct MassShares {
+    double first, second;  // dimensionless, first + second = 1
+};
+MassShares massShares(double m1, double m2) {
+    const double perTotalMass = 1.0 / (m1 + m2);  // 1/kg
+    return {m2 * perTotalMass, m1 * perTotalMass};
+}
 
 // Slide 12, written for any masses: v1 <- alpha v1_par + beta (v1_perp + j/m1 u),
-// with j the elastic impulse of slide 11. For m1 = m2 this is alpha v1_par + beta v2_perp.
-void lectureAttenuation(glm::dvec3& v1, glm::dvec3& v2, double m1, double m2,
+// with j the elastic impulse of slide 11, j = 2 m_red (v2 - v1).u. For m1 = m2 this
+// is alpha v1_par + beta v2_perp.
+void lectureAttenuation(glm::dvec3& v1, glm::dvec3& v2, const MassShares& shares,
                         const glm::dvec3& u, double approachSpeed, const Params& params) {
-    const double j = 2.0 * reducedMass(m1, m2) * approachSpeed;  // kg m/s
+    const double elastic = 2.0 * approachSpeed;  // m/s: j / m_red
     const glm::dvec3 v1Perp = glm::dot(v1, u) * u;
     const glm::dvec3 v2Perp = glm::dot(v2, u) * u;
     const glm::dvec3 v1Par = v1 - v1Perp;
     const glm::dvec3 v2Par = v2 - v2Perp;
-    v1 = params.alpha * v1Par + params.beta * (v1Perp + (j / m1) * u);
-    v2 = params.alpha * v2Par + params.beta * (v2Perp - (j / m2) * u);
+    v1 = params.alpha * v1Par + params.beta * (v1Perp + (elastic * shares.first) * u);
+    v2 = params.alpha * v2Par + params.beta * (v2Perp - (elastic * shares.second) * u);
 }
 
 // Equal and opposite impulses: (1 + beta) on the normal relative speed, and a
 // tangential impulse that scales the relative tangential velocity by alpha.
-void momentumConserving(glm::dvec3& v1, glm::dvec3& v2, double m1, double m2,
+void momentumConserving(glm::dvec3& v1, glm::dvec3& v2, const MassShares& shares,
                         const glm::dvec3& u, double approachSpeed, const Params& params) {
-    const double mass = reducedMass(m1, m2);
     const glm::dvec3 tangential = (v2 - v1) - approachSpeed * u;
-    const glm::dvec3 impulse =
-        (1.0 + params.beta) * mass * approachSpeed * u + (1.0 - params.alpha) * mass * tangential;
-    v1 += impulse / m1;
-    v2 -= impulse / m2;
+    const glm::dvec3 change =  // m/s: impulse / m_red
+        (1.0 + params.beta) * approachSpeed * u + (1.0 - params.alpha) * tangential;
+    v1 += shares.first * change;
+    v2 -= shares.second * change;
+}
+
+// Perfectly inelastic along u: the pair stops approaching.
+void cancelApproach(glm::dvec3& v1, glm::dvec3& v2, const MassShares& shares,
+                    const glm::dvec3& u, double approachSpeed) {
+    v1 += (approachSpeed * shares.first) * u;
+    v2 -= (approachSpeed * shares.second) * u;
 }
 
 // Slide 13, 2-b: no bounce (the approaching normal speed is removed, perfectly
 // inelastic), then friction v <- mu v. In the momentum-conserving model the
 // friction damps the relative tangential velocity instead, so momentum stays exact.
-void staticSphereContact(glm::dvec3& v1, glm::dvec3& v2, double m1, double m2,
+void staticSphereContact(glm::dvec3& v1, glm::dvec3& v2, const MassShares& shares,
                          const glm::dvec3& u, double approachSpeed, const Params& params) {
-    if (approachSpeed > 0.0) cancelApproachBetween(v1, v2, m1, m2, u);
+    if (approachSpeed > 0.0) cancelApproach(v1, v2, shares, u, approachSpeed);
     if (params.response == ResponseModel::LectureAttenuation) {
         v1 *= params.mu;
         v2 *= params.mu;
@@ -48,9 +64,9 @@ void staticSphereContact(glm::dvec3& v1, glm::dvec3& v2, double m1, double m2,
     }
     const glm::dvec3 relative = v2 - v1;
     const glm::dvec3 tangential = relative - glm::dot(relative, u) * u;
-    const glm::dvec3 impulse = (1.0 - params.mu) * reducedMass(m1, m2) * tangential;
-    v1 += impulse / m1;
-    v2 -= impulse / m2;
+    const glm::dvec3 change = (1.0 - params.mu) * tangential;  // m/s: impulse / m_red
+    v1 += shares.first * change;
+    v2 -= shares.second * change;
 }
 
 }  // namespace
@@ -78,23 +94,23 @@ Response respondToSphere(glm::dvec3& v1, glm::dvec3& v2, double m1, double m2,
                          const glm::dvec3& u, const Params& params) {
     const double approachSpeed = glm::dot(v2 - v1, u);  // m/s, positive while approaching
     if (std::abs(approachSpeed) <= params.epsilon) {
-        staticSphereContact(v1, v2, m1, m2, u, approachSpeed, params);
+        staticSphereContact(v1, v2, massShares(m1, m2), u, approachSpeed, params);
         return Response::Static;
     }
     if (approachSpeed < 0.0) return Response::None;
     if (params.response == ResponseModel::LectureAttenuation) {
-        lectureAttenuation(v1, v2, m1, m2, u, approachSpeed, params);
+        lectureAttenuation(v1, v2, massShares(m1, m2), u, approachSpeed, params);
     } else {
-        momentumConserving(v1, v2, m1, m2, u, approachSpeed, params);
+        momentumConserving(v1, v2, massShares(m1, m2), u, approachSpeed, params);
     }
     return Response::Bounce;
 }
 
 void separateSpheres(glm::dvec3& p1, glm::dvec3& p2, double m1, double m2, const glm::dvec3& u,
                      double d, PositionSplit split) {
-    const double share1 = split == PositionSplit::HalfHalf ? 0.5 : m2 / (m1 + m2);
-    p1 += (share1 * d) * u;
-    p2 -= ((1.0 - share1) * d) * u;
+    const MassShares shares = split == PositionSplit::HalfHalf ? MassShares{0.5, 0.5} : massShares(m1, m2);
+    p1 += (shares.first * d) * u;
+    p2 -= (shares.second * d) * u;
 }
 
 void cancelApproachToPlane(glm::dvec3& v, const glm::dvec3& n) {
@@ -104,11 +120,8 @@ void cancelApproachToPlane(glm::dvec3& v, const glm::dvec3& n) {
 
 void cancelApproachBetween(glm::dvec3& v1, glm::dvec3& v2, double m1, double m2,
                            const glm::dvec3& u) {
-    const double approachSpeed = glm::dot(v2 - v1, u);
-    if (approachSpeed <= 0.0) return;
-    const double j = reducedMass(m1, m2) * approachSpeed;  // kg m/s, perfectly inelastic
-    v1 += (j / m1) * u;
-    v2 -= (j / m2) * u;
+    const double approachSpeed = glm::dot(v2 - v1, u);  // m/s
+    if (approachSpeed > 0.0) cancelApproach(v1, v2, massShares(m1, m2), u, approachSpeed);
 }
 
 }  // namespace physics

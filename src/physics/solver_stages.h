@@ -121,7 +121,7 @@ inline bool touching(const World& world, const SpherePair& pair, SphereContact& 
     if (distanceSquared > reach * reach) return false;
     const double distance = std::sqrt(distanceSquared);
     // Coincident centres have no direction: push them apart along z.
-    contact.u = distance > 0.0 ? delta / distance : glm::dvec3(0.0, 0.0, 1.0);
+    contact.u = distance > 0.0 ? delta * (1.0 / distance) : glm::dvec3(0.0, 0.0, 1.0);
     contact.depth = reach - distance;
     return true;
 }
