@@ -71,12 +71,15 @@ void countingSort(std::size_t n, std::size_t buckets, const Key& key, std::vecto
 
 // sphereByCell lists sphere indices cell by cell, ascending within a cell, and
 // cellOrdered their centres and radii in the same order.
-void sortByCell(const World& world, const GridShape& grid, Workspace& ws) {
+void sortByCell(const World& world, const GridShape& grid, Workspace& ws, int threads) {
     const std::size_t n = world.size();
     ws.cellOfSphere.resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        ws.cellOfSphere[i] = finite(world.position[i]) ? grid.linear(grid.cellOf(world.position[i])) : 0;
-    }
+    runTasks(threads, threads, [&](int t) {
+        const Range range = rangeOf(n, t, threads);
+        for (std::uint32_t i = range.begin; i < range.end; ++i) {
+            ws.cellOfSphere[i] = finite(world.position[i]) ? grid.linear(grid.cellOf(world.position[i])) : 0;
+        }
+    });
     ws.sphereByCell.resize(n);
     ws.cellOrdered.resize(n);
     countingSort(n, std::size_t(grid.dims.x) * grid.dims.y * grid.dims.z,
@@ -147,20 +150,23 @@ std::uint64_t forwardPairsOf(std::uint32_t slot, const GridShape& grid, double m
 }
 
 // pairs <- found, in index order: grouped by first sphere (a counting sort), each
-// group sorted by second sphere (a few pairs: insertion sort).
+// group sorted by second sphere (a few pairs: insertion sort, in parallel).
 void sortByFirstSphere(std::size_t n, const std::vector<SpherePair>& found, std::vector<std::uint32_t>& start,
-                       std::vector<SpherePair>& pairs) {
+                       std::vector<SpherePair>& pairs, int threads) {
     pairs.resize(found.size());
     countingSort(found.size(), n, [&](std::size_t k) { return found[k].i; }, start,
                  [&](std::size_t k, std::uint32_t slot) { pairs[slot] = found[k]; });
-    for (std::size_t i = 0; i < n; ++i) {
-        for (std::uint32_t k = start[i] + 1; k < start[i + 1]; ++k) {
-            const SpherePair pair = pairs[k];
-            std::uint32_t to = k;
-            for (; to > start[i] && pairs[to - 1].j > pair.j; --to) pairs[to] = pairs[to - 1];
-            pairs[to] = pair;
+    runTasks(threads, threads, [&](int t) {
+        const Range range = rangeOf(n, t, threads);
+        for (std::uint32_t i = range.begin; i < range.end; ++i) {
+            for (std::uint32_t k = start[i] + 1; k < start[i + 1]; ++k) {
+                const SpherePair pair = pairs[k];
+                std::uint32_t to = k;
+                for (; to > start[i] && pairs[to - 1].j > pair.j; --to) pairs[to] = pairs[to - 1];
+                pairs[to] = pair;
+            }
         }
-    }
+    });
 }
 
 }  // namespace
@@ -195,7 +201,7 @@ std::uint64_t findPairsGrid(const World& world, double margin, Workspace& worksp
     const auto n = static_cast<std::uint32_t>(world.size());
     if (n < 2) return 0;
     const GridShape grid = chooseGrid(world, margin);
-    sortByCell(world, grid, workspace);
+    sortByCell(world, grid, workspace, threads);
     // Each task finds the pairs of one range of the cell order; put together and
     // sorted, they are in index order whatever the number of tasks.
     const int tasks = threads > 1 ? 4 * threads : 1;
@@ -218,7 +224,7 @@ std::uint64_t findPairsGrid(const World& world, double margin, Workspace& worksp
         workspace.foundPairs.insert(workspace.foundPairs.end(), part.begin(), part.end());
         total += tests[std::size_t(t)];
     }
-    sortByFirstSphere(n, workspace.foundPairs, workspace.pairStart, workspace.pairs);
+    sortByFirstSphere(n, workspace.foundPairs, workspace.pairStart, workspace.pairs, threads);
     return total;
 }
 
