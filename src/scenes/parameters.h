@@ -40,6 +40,9 @@ struct Parameter {
     // Whether the scene has what the parameter acts on (an emitter, a generator);
     // nullptr: always. The UI hides the others.
     bool (*available)(const Scene&) = nullptr;
+    // Integer: what the slider shows for 0 when 0 means something else than none
+    // (threads = 0: one per core); "": the number.
+    std::string_view zeroMeans = {};
 
     bool availableIn(const Scene& scene) const { return !available || available(scene); }
 };

@@ -87,6 +87,18 @@ TEST(ParameterTable, RangesAreTheLecturesAndApplyAsDocumented) {
     EXPECT_EQ(scenes::findParameter("nope"), nullptr);
 }
 
+// threads = 0 is "one per core", not "no threads": the slider says so.
+TEST(ParameterTable, ZeroIsNamedWhereItMeansAutomatic) {
+    EXPECT_EQ(scenes::findParameter("threads")->zeroMeans, "auto");
+    EXPECT_EQ(scenes::findParameter("count")->zeroMeans, "");  // 0 spheres is none
+    for (const Parameter& p : scenes::parameterTable()) {
+        if (!p.zeroMeans.empty()) {
+            EXPECT_EQ(p.kind, ParameterKind::Integer) << p.name;
+            EXPECT_EQ(p.min, 0.0) << p.name;
+        }
+    }
+}
+
 TEST(ApplySetting, AcceptsGoodValuesAndChangesTheScene) {
     Scene scene = sceneWithGenerators();
     EXPECT_EQ(applySetting(scene, "alpha=0.25"), "");

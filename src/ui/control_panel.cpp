@@ -53,7 +53,8 @@ bool parameterWidget(const scenes::Parameter& p, scenes::Scene& scene) {
     } else if (p.kind == scenes::ParameterKind::Integer) {
         int integer = static_cast<int>(value);
         const int lo = static_cast<int>(p.min), hi = static_cast<int>(std::min(p.max, 1e9));
-        changed = ImGui::SliderInt(label.c_str(), &integer, lo, std::min(hi, lo + 100000));
+        const std::string format = integer == 0 && !p.zeroMeans.empty() ? std::string(p.zeroMeans) : "%d";
+        changed = ImGui::SliderInt(label.c_str(), &integer, lo, std::min(hi, lo + 100000), format.c_str());
         value = integer;
     } else {
         const bool logarithmic = p.min > 0.0 && p.max / p.min > 100.0;
