@@ -25,6 +25,10 @@ struct GridShape {
     std::uint32_t linear(const glm::ivec3& c) const {
         return static_cast<std::uint32_t>((c.z * dims.y + c.y) * dims.x + c.x);
     }
+    glm::ivec3 cellAt(std::uint32_t linearIndex) const {  // the inverse of linear()
+        const int k = static_cast<int>(linearIndex);
+        return {k % dims.x, k / dims.x % dims.y, k / dims.x / dims.y};
+    }
 };
 
 bool finite(const glm::dvec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
@@ -106,9 +110,9 @@ struct ForwardRuns {
     int count = 0;
     std::size_t candidates = 0;
 };
-ForwardRuns forwardRuns(std::uint32_t slot, std::uint32_t cell, const GridShape& grid, const Workspace& ws) {
-    const glm::ivec3 c(int(cell % std::uint32_t(grid.dims.x)), int(cell / std::uint32_t(grid.dims.x) % std::uint32_t(grid.dims.y)),
-                       int(cell / std::uint32_t(grid.dims.x) / std::uint32_t(grid.dims.y)));
+ForwardRuns forwardRuns(std::uint32_t slot, std::uint32_t cell, const GridShape& grid,
+                        const Workspace& ws) {
+    const glm::ivec3 c = grid.cellAt(cell);
     const int x0 = std::max(c.x - 1, 0), x1 = std::min(c.x + 1, grid.dims.x - 1);
     ForwardRuns runs;
     const auto add = [&](std::uint32_t start, std::uint32_t end) {
@@ -137,34 +141,33 @@ std::uint64_t forwardPairsOf(std::uint32_t slot, const GridShape& grid, double m
     const glm::dvec4 sphere = ws.cellOrdered[slot];
     const ForwardRuns runs = forwardRuns(slot, ws.cellOfSphere[i], grid, ws);
     if (partners.size() < runs.candidates) partners.resize(runs.candidates);
-    std::uint32_t* found = partners.data();
+    std::uint32_t* partner = partners.data();
     std::size_t count = 0;
     for (int run = 0; run < runs.count; ++run) {
         for (std::uint32_t k = runs.start[run]; k < runs.end[run]; ++k) {
-            found[count] = ws.sphereByCell[k];
+            partner[count] = ws.sphereByCell[k];
             count += withinReach(sphere, ws.cellOrdered[k], margin);
         }
     }
-    for (std::size_t k = 0; k < count; ++k) out.push_back({std::min(i, found[k]), std::max(i, found[k])});
+    for (std::size_t k = 0; k < count; ++k) {
+        out.push_back({std::min(i, partner[k]), std::max(i, partner[k])});
+    }
     return runs.candidates;
 }
 
-// pairs <- found, in index order: grouped by first sphere (a counting sort), each
-// group sorted by second sphere (a few pairs: insertion sort, in parallel).
-void sortByFirstSphere(std::size_t n, const std::vector<SpherePair>& found, std::vector<std::uint32_t>& start,
-                       std::vector<SpherePair>& pairs, int threads) {
-    pairs.resize(found.size());
-    countingSort(found.size(), n, [&](std::size_t k) { return found[k].i; }, start,
-                 [&](std::size_t k, std::uint32_t slot) { pairs[slot] = found[k]; });
+// pairs <- unsorted, in index order: grouped by first sphere (a counting sort), then
+// each group sorted by second sphere (in parallel).
+void sortByFirstSphere(std::size_t n, const std::vector<SpherePair>& unsorted,
+                       std::vector<std::uint32_t>& start, std::vector<SpherePair>& pairs,
+                       int threads) {
+    pairs.resize(unsorted.size());
+    countingSort(unsorted.size(), n, [&](std::size_t k) { return unsorted[k].i; }, start,
+                 [&](std::size_t k, std::uint32_t slot) { pairs[slot] = unsorted[k]; });
     runTasks(threads, threads, [&](int t) {
         const Range range = rangeOf(n, t, threads);
         for (std::uint32_t i = range.begin; i < range.end; ++i) {
-            for (std::uint32_t k = start[i] + 1; k < start[i + 1]; ++k) {
-                const SpherePair pair = pairs[k];
-                std::uint32_t to = k;
-                for (; to > start[i] && pairs[to - 1].j > pair.j; --to) pairs[to] = pairs[to - 1];
-                pairs[to] = pair;
-            }
+            std::sort(pairs.begin() + start[i], pairs.begin() + start[i + 1],
+                      [](const SpherePair& a, const SpherePair& b) { return a.j < b.j; });
         }
     });
 }
@@ -200,6 +203,7 @@ std::uint64_t findPairsGrid(const World& world, double margin, Workspace& worksp
     workspace.pairs.clear();
     const auto n = static_cast<std::uint32_t>(world.size());
     if (n < 2) return 0;
+    threads = std::max(threads, 1);
     const GridShape grid = chooseGrid(world, margin);
     sortByCell(world, grid, workspace, threads);
     // Each task finds the pairs of one range of the cell order; put together and

@@ -82,7 +82,7 @@ struct Workspace {
     std::vector<glm::dvec4> cellOrdered;    // centre (m) and radius (m), in sphereByCell order
     std::vector<SpherePair> foundPairs;     // the grid's pairs in cell order, before sorting
     std::vector<std::uint32_t> pairStart;   // counting-sort offsets, one per sphere + 1
-    std::vector<TaskScratch> tasks;              // one per parallel task
+    std::vector<TaskScratch> tasks;         // one per parallel task
     // With several threads the pairs are shared out: thread t visits
     // sharedPairs[shareStart[t], shareStart[t + 1]), the pairs whose first sphere lies in
     // its slab of x, in pass order. Where a pair's sphere met a pair of another thread

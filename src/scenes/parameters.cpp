@@ -201,13 +201,15 @@ std::vector<Parameter> makeTable() {
                "Slide 14: the order of correction does matter. Sphere pairs are visited in "
                "index order, reversed, or shuffled with the scene's seed.",
                param<&Params::order>()),
-        zeroMeaning("auto", integer("threads", "solver threads", 0, physics::kMostSolverThreads, kDefaults.threads,
-                "Threads the solver uses; 0: one per core (at most 8). The result is the same, "
-                "bit for bit, for any count and pair order: each thread takes the pairs of its "
-                "slab of x, and waits where a sphere met another thread's pair last, so each "
-                "sphere still meets its partners in the pair order. Scenes under 4096 spheres "
-                "use one thread.",
-                param<&Params::threads>())),
+        zeroMeaning("auto",
+                    integer("threads", "solver threads", 0, physics::kMostSolverThreads,
+                            kDefaults.threads,
+                            "Threads the solver uses; 0 (auto): one per core (at most 8). The "
+                            "result is the same, bit for bit, for any count and pair order: each "
+                            "thread takes the pairs of its slab of x, and waits where a sphere met "
+                            "another thread's pair last, so each sphere still meets its partners "
+                            "in the pair order. Scenes under 4096 spheres use one thread.",
+                            param<&Params::threads>())),
         choice("broadphase", "broad phase", {"grid", "allpairs"},
                static_cast<double>(kDefaults.broadPhase),
                "Where candidate pairs come from: a uniform grid (fast) or the lecture's loop "

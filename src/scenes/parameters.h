@@ -41,7 +41,7 @@ struct Parameter {
     // nullptr: always. The UI hides the others.
     bool (*available)(const Scene&) = nullptr;
     // Integer: what the slider shows for 0 when 0 means something else than none
-    // (threads = 0: one per core); "": the number.
+    // (threads = 0: one per core); "": the number. A literal, shown as an ImGui format.
     std::string_view zeroMeans = {};
 
     bool availableIn(const Scene& scene) const { return !available || available(scene); }

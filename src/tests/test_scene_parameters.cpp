@@ -95,6 +95,7 @@ TEST(ParameterTable, ZeroIsNamedWhereItMeansAutomatic) {
         if (!p.zeroMeans.empty()) {
             EXPECT_EQ(p.kind, ParameterKind::Integer) << p.name;
             EXPECT_EQ(p.min, 0.0) << p.name;
+            EXPECT_EQ(p.zeroMeans.find('%'), std::string_view::npos) << p.name << ": a printf format";
         }
     }
 }
