@@ -11,13 +11,15 @@ namespace {
 
 void particlesVelocityAndPosition(World& world, const Params& params, StepStats& stats,
                                   int pass) {
-    forEachPairInPassOrder(world, params, stats, [&](const SpherePair* first, const SpherePair* last, StepStats& s) {
-        for (const SpherePair* pair = first; pair != last; ++pair) {
+    forEachPairInPassOrder(world, params, stats, [&](const SpherePair* pairs, std::uint32_t first,
+                                                     std::uint32_t last, StepStats& s) {
+        for (std::uint32_t k = first; k < last; ++k) {
+            const SpherePair& pair = pairs[k];
             SphereContact contact;
-            if (!touching(world, *pair, contact)) continue;
-            respondToContact(world, *pair, contact, params, s, pass);
-            separateSpheres(world.position[pair->i], world.position[pair->j], world.mass[pair->i],
-                            world.mass[pair->j], contact.u, contact.depth, params.split);
+            if (!touching(world, pair, contact)) continue;
+            respondToContact(world, pair, contact, params, s, pass);
+            separateSpheres(world.position[pair.i], world.position[pair.j], world.mass[pair.i],
+                            world.mass[pair.j], contact.u, contact.depth, params.split);
         }
     });
 }

@@ -14,6 +14,7 @@ StepStats stepResponseOnly(World& world, const Params& params, double h) {
     integrateVelocity(world, params, h);  // A
     integratePosition(world, params, h);
     findOrderedPairs(world, params, stats);
+    findContacts(world, params);  // positions stay put during B
     for (int pass = 0; pass < params.passes; ++pass) {
         respondToAllContacts(world, params, stats, pass);  // B
     }

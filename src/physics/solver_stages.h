@@ -60,16 +60,25 @@ struct alignas(64) PairProgress {
     std::atomic<std::uint32_t> done{0};
 };
 
-// visit(first, last, stats) on ranges of the candidate pairs that together give the
-// result of visiting them in pass order: on one thread the pass order itself; on
-// several, each thread its share (Workspace::sharedPairs), pair by pair, each after
-// the pairs of other threads that met its spheres before.
+// The candidate pairs as the passes walk them: in pass order on one thread, shared out
+// (Workspace::sharedPairs) on several.
+inline const std::vector<SpherePair>& pairsAsVisited(const World& world, const Params& params) {
+    const Workspace& ws = world.workspace;
+    const int threads = threadsFor(world, params);
+    return threads == 1 || ws.shareThreads != threads ? ws.visitOrder : ws.sharedPairs;
+}
+
+// visit(pairs, first, last, stats) on ranges [first, last) of pairs = pairsAsVisited()
+// that together give the result of visiting them in pass order: on one thread the pass
+// order itself; on several, each thread its share, pair by pair, each after the pairs
+// of other threads that met its spheres before.
 template <class Visit>
 void forEachPairInPassOrder(World& world, const Params& params, StepStats& stats, const Visit& visit) {
     const Workspace& ws = world.workspace;
     const int threads = threadsFor(world, params);
+    const SpherePair* pairs = pairsAsVisited(world, params).data();
     if (threads == 1 || ws.shareThreads != threads) {
-        visit(ws.visitOrder.data(), ws.visitOrder.data() + ws.visitOrder.size(), stats);
+        visit(pairs, 0u, std::uint32_t(ws.visitOrder.size()), stats);
         return;
     }
     std::vector<StepStats> taskStats(static_cast<std::size_t>(threads));
@@ -90,7 +99,7 @@ void forEachPairInPassOrder(World& world, const Params& params, StepStats& stats
             // A run of pairs whose needs are met already, told done at its end.
             std::uint32_t end = k + 1;
             while (end < last && end - k < kLongestRun && ready(end)) ++end;
-            visit(ws.sharedPairs.data() + k, ws.sharedPairs.data() + end, local);
+            visit(pairs, k, end, local);
             done.store(end - first, std::memory_order_release);
             k = end;
         }
@@ -109,10 +118,6 @@ void integratePosition(World& world, const Params& params, double h);
 void findOrderedPairs(World& world, const Params& params, StepStats& stats);
 
 // Narrow phase, slide 9: the pair touches when |p1 - p2| <= r1 + r2.
-struct SphereContact {
-    glm::dvec3 u{0.0, 0.0, 1.0};  // (p1 - p2) / |p1 - p2|, from 2 to 1
-    double depth = 0.0;           // m, d = r1 + r2 - |p1 - p2| (>= 0 when touching)
-};
 // (Inline, as the next one: they run for every candidate in every pass.)
 inline bool touching(const World& world, const SpherePair& pair, SphereContact& contact) {
     const glm::dvec3 delta = world.position[pair.i] - world.position[pair.j];
@@ -158,7 +163,14 @@ void respondToContact(World& world, const SpherePair& pair, const SphereContact&
 void respondToContact(World& world, std::uint32_t i, std::size_t planeIndex, const Plane& face,
                       const Params& params, StepStats& stats, int pass);
 
-// Velocity response to every touching pair (in pass order), then every wall contact.
+// For methods whose positions stay put while the passes run (velocity based, response
+// only): finds the pairs that touch and the walls each sphere touches once per step,
+// into the workspace, for respondToAllContacts and the velocity method's cancelling.
+// Call after findOrderedPairs.
+void findContacts(World& world, const Params& params);
+
+// Velocity response to every touching pair (in pass order), then every wall contact,
+// as findContacts found them.
 void respondToAllContacts(World& world, const Params& params, StepStats& stats, int pass);
 
 }  // namespace physics

@@ -1,6 +1,7 @@
 #include "physics/step.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <thread>
 #include <utility>
@@ -260,17 +261,41 @@ void respondToContact(World& world, std::uint32_t i, std::size_t planeIndex, con
     }
 }
 
+void findContacts(World& world, const Params& params) {
+    Workspace& ws = world.workspace;
+    const std::vector<SpherePair>& pairs = pairsAsVisited(world, params);
+    ws.pairTouches.resize(pairs.size());
+    ws.pairContacts.resize(pairs.size());
+    const int threads = threadsFor(world, params);
+    runTasks(threads, threads, [&](int t) {
+        const Range range = rangeOf(pairs.size(), t, threads);
+        for (std::uint32_t k = range.begin; k < range.end; ++k) {
+            ws.pairTouches[k] = touching(world, pairs[k], ws.pairContacts[k]);
+        }
+    });
+    ws.wallStart.assign(world.size() + 1, 0);
+    ws.wallContacts.clear();
+    for (std::uint32_t i = 0; i < world.size(); ++i) {
+        forEachTouchedPlane(world, i, [&](std::size_t k, const Plane& face) {
+            ws.wallContacts.push_back({static_cast<std::uint32_t>(k), face});
+        });
+        ws.wallStart[i + 1] = static_cast<std::uint32_t>(ws.wallContacts.size());
+    }
+}
+
 void respondToAllContacts(World& world, const Params& params, StepStats& stats, int pass) {
-    forEachPairInPassOrder(world, params, stats, [&](const SpherePair* begin, const SpherePair* end, StepStats& s) {
-        for (const SpherePair* pair = begin; pair != end; ++pair) {
-            SphereContact contact;
-            if (touching(world, *pair, contact)) respondToContact(world, *pair, contact, params, s, pass);
+    const Workspace& ws = world.workspace;
+    assert(ws.pairTouches.size() == pairsAsVisited(world, params).size());  // findContacts ran
+    forEachPairInPassOrder(world, params, stats, [&](const SpherePair* pairs, std::uint32_t first,
+                                                     std::uint32_t last, StepStats& s) {
+        for (std::uint32_t k = first; k < last; ++k) {
+            if (ws.pairTouches[k]) respondToContact(world, pairs[k], ws.pairContacts[k], params, s, pass);
         }
     });
     forEachSphere(world, params, stats, [&](std::uint32_t i, StepStats& s) {
-        forEachTouchedPlane(world, i, [&](std::size_t k, const Plane& face) {
-            respondToContact(world, i, k, face, params, s, pass);
-        });
+        for (std::uint32_t w = ws.wallStart[i]; w < ws.wallStart[i + 1]; ++w) {
+            respondToContact(world, i, ws.wallContacts[w].plane, ws.wallContacts[w].face, params, s, pass);
+        }
     });
 }
 

@@ -12,20 +12,23 @@
 namespace physics {
 namespace {
 
+// The contacts are those findContacts found: positions have not moved since.
 void cancelPenetratingVelocity(World& world, const Params& params) {
+    const Workspace& ws = world.workspace;
     StepStats none;
-    forEachPairInPassOrder(world, params, none, [&](const SpherePair* first, const SpherePair* last, StepStats&) {
-        for (const SpherePair* pair = first; pair != last; ++pair) {
-            SphereContact contact;
-            if (!touching(world, *pair, contact)) continue;
-            cancelApproachBetween(world.velocity[pair->i], world.velocity[pair->j], world.mass[pair->i],
-                                  world.mass[pair->j], contact.u);
+    forEachPairInPassOrder(world, params, none, [&](const SpherePair* pairs, std::uint32_t first,
+                                                    std::uint32_t last, StepStats&) {
+        for (std::uint32_t k = first; k < last; ++k) {
+            if (!ws.pairTouches[k]) continue;
+            const SpherePair& pair = pairs[k];
+            cancelApproachBetween(world.velocity[pair.i], world.velocity[pair.j], world.mass[pair.i],
+                                  world.mass[pair.j], ws.pairContacts[k].u);
         }
     });
     forEachSphere(world, params, none, [&](std::uint32_t i, StepStats&) {
-        forEachTouchedPlane(world, i, [&](std::size_t, const Plane& face) {
-            cancelApproachToPlane(world.velocity[i], face.normal);
-        });
+        for (std::uint32_t w = ws.wallStart[i]; w < ws.wallStart[i + 1]; ++w) {
+            cancelApproachToPlane(world.velocity[i], ws.wallContacts[w].face.normal);
+        }
     });
 }
 
@@ -35,6 +38,7 @@ StepStats stepVelocityBased(World& world, const Params& params, double h) {
     StepStats stats;
     integrateVelocity(world, params, h);  // A
     findOrderedPairs(world, params, stats);
+    findContacts(world, params);  // positions stay put until D
     for (int pass = 0; pass < params.passes; ++pass) {
         respondToAllContacts(world, params, stats, pass);  // B
     }

@@ -56,6 +56,18 @@ struct SpherePair {
     std::uint32_t i, j;  // i < j
 };
 
+// Narrow phase, slide 9: where a touching pair touches.
+struct SphereContact {
+    glm::dvec3 u{0.0, 0.0, 1.0};  // (p1 - p2) / |p1 - p2|, from 2 to 1
+    double depth = 0.0;           // m, d = r1 + r2 - |p1 - p2| (>= 0 when touching)
+};
+
+// A sphere touching plane `plane` through `face` (faceFor(plane, its centre)).
+struct WallContact {
+    std::uint32_t plane = 0;
+    Plane face;
+};
+
 // What one parallel task of the broad phase writes. A cache line of its own, so that
 // two threads appending to their vectors never write to the same line.
 struct alignas(64) TaskScratch {
@@ -99,6 +111,12 @@ struct Workspace {
     std::vector<std::uint32_t> threadOfPair;  // scratch of the share-out
     std::vector<PairNeed> lastPairOf;         // scratch: per sphere, the last pair that met it
     std::vector<double> taskMove;  // m^2: the largest squared displacement each task saw
+    // The contacts of a step whose positions stay put while its passes run (velocity
+    // based, response only): found once, used by every pass (findContacts).
+    std::vector<std::uint8_t> pairTouches;     // per pair, in the order the passes visit them
+    std::vector<SphereContact> pairContacts;   // valid where pairTouches
+    std::vector<std::uint32_t> wallStart;      // sphere i's wall contacts: [wallStart[i], wallStart[i + 1])
+    std::vector<WallContact> wallContacts;     // by sphere, then plane
 };
 
 struct World {
