@@ -60,12 +60,16 @@ struct alignas(64) PairProgress {
     std::atomic<std::uint32_t> done{0};
 };
 
+// Whether the passes run on several threads, each its share of the pairs.
+inline bool pairsSharedOut(const World& world, const Params& params) {
+    const int threads = threadsFor(world, params);
+    return threads > 1 && world.workspace.shareThreads == threads;
+}
+
 // The candidate pairs as the passes walk them: in pass order on one thread, shared out
 // (Workspace::sharedPairs) on several.
 inline const std::vector<SpherePair>& pairsAsVisited(const World& world, const Params& params) {
-    const Workspace& ws = world.workspace;
-    const int threads = threadsFor(world, params);
-    return threads == 1 || ws.shareThreads != threads ? ws.visitOrder : ws.sharedPairs;
+    return pairsSharedOut(world, params) ? world.workspace.sharedPairs : world.workspace.visitOrder;
 }
 
 // visit(pairs, first, last, stats) on ranges [first, last) of pairs = pairsAsVisited()
@@ -77,7 +81,7 @@ void forEachPairInPassOrder(World& world, const Params& params, StepStats& stats
     const Workspace& ws = world.workspace;
     const int threads = threadsFor(world, params);
     const SpherePair* pairs = pairsAsVisited(world, params).data();
-    if (threads == 1 || ws.shareThreads != threads) {
+    if (!pairsSharedOut(world, params)) {
         visit(pairs, 0u, std::uint32_t(ws.visitOrder.size()), stats);
         return;
     }
