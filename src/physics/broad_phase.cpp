@@ -73,8 +73,14 @@ void countingSort(std::size_t n, std::size_t buckets, const Key& key, std::vecto
     start[0] = 0;
 }
 
+// The grid tests candidates this many at a time, whatever the length of a run (most
+// runs hold 1 to 4 spheres, and a loop that stops at each run's end would guess wrong
+// at almost every run). Tests past a run's end are made and not counted; the cell order
+// carries kLanes - 1 slots of padding so that they read valid memory.
+constexpr std::uint32_t kLanes = 4;
+
 // sphereByCell lists sphere indices cell by cell, ascending within a cell, and
-// cellOrdered their centres and radii in the same order.
+// cellOrdered their centres and radii in the same order (then the padding).
 void sortByCell(const World& world, const GridShape& grid, Workspace& ws, int threads) {
     const std::size_t n = world.size();
     ws.cellOfSphere.resize(n);
@@ -84,8 +90,8 @@ void sortByCell(const World& world, const GridShape& grid, Workspace& ws, int th
             ws.cellOfSphere[i] = finite(world.position[i]) ? grid.linear(grid.cellOf(world.position[i])) : 0;
         }
     });
-    ws.sphereByCell.resize(n);
-    ws.cellOrdered.resize(n);
+    ws.sphereByCell.resize(n + kLanes - 1);
+    ws.cellOrdered.resize(n + kLanes - 1);
     countingSort(n, std::size_t(grid.dims.x) * grid.dims.y * grid.dims.z,
                  [&](std::size_t i) { return ws.cellOfSphere[i]; }, ws.cellStart,
                  [&](std::size_t i, std::uint32_t slot) {
@@ -100,27 +106,25 @@ bool withinReach(const glm::dvec4& a, const glm::dvec4& b, double margin) {
     return glm::dot(delta, delta) <= reach * reach;
 }
 
-// The spheres (as slots of the cell order) that the sphere at `slot` meets in the
-// forward half of its neighbourhood: the later spheres of its own cell, and the 13 of
-// its 26 neighbour cells that come after its cell. Each pair of neighbours is then
-// met from one side only. They are at most 5 contiguous runs of slots: the rest of
-// its cell and the next cell along x; the row y + 1; the three rows of the plane z + 1.
+// The forward half of a cell's neighbourhood: the cell itself, and the 13 of its 26
+// neighbour cells that come after it. A sphere meets the later spheres of its own cell
+// and the spheres of those 13 cells, so each pair of neighbours is met from one side
+// only. They are at most 5 contiguous runs of slots: the cell and the next one along x;
+// the row y + 1; the three rows of the plane z + 1. The first run starts at the cell's
+// first slot; for one of its spheres, it starts just after that sphere.
 struct ForwardRuns {
     std::uint32_t start[5], end[5];
     int count = 0;
-    std::size_t candidates = 0;
 };
-ForwardRuns forwardRuns(std::uint32_t slot, std::uint32_t cell, const GridShape& grid,
-                        const Workspace& ws) {
+ForwardRuns forwardRuns(std::uint32_t cell, const GridShape& grid, const Workspace& ws) {
     const glm::ivec3 c = grid.cellAt(cell);
     const int x0 = std::max(c.x - 1, 0), x1 = std::min(c.x + 1, grid.dims.x - 1);
     ForwardRuns runs;
     const auto add = [&](std::uint32_t start, std::uint32_t end) {
         runs.start[runs.count] = start;
         runs.end[runs.count++] = end;
-        runs.candidates += end - start;
     };
-    add(slot + 1, ws.cellStart[grid.linear({x1, c.y, c.z}) + 1]);
+    add(ws.cellStart[cell], ws.cellStart[grid.linear({x1, c.y, c.z}) + 1]);
     const auto addRow = [&](int y, int z) {
         add(ws.cellStart[grid.linear({x0, y, z})], ws.cellStart[grid.linear({x1, y, z}) + 1]);
     };
@@ -131,28 +135,71 @@ ForwardRuns forwardRuns(std::uint32_t slot, std::uint32_t cell, const GridShape&
     return runs;
 }
 
-// Appends the pairs within reach that the sphere at `slot` meets in its forward runs,
-// as (lower index, higher index), and returns the distance tests made. The tests are
-// written without branches (a few candidates are in reach: a branch would be
-// mispredicted), into `partners`, which only grows.
-std::uint64_t forwardPairsOf(std::uint32_t slot, const GridShape& grid, double margin, const Workspace& ws,
-                             std::vector<std::uint32_t>& partners, std::vector<SpherePair>& out) {
+// Appends the pairs within reach that the sphere at `slot` meets in `runs` (its cell's,
+// the first starting after it), as (lower index, higher index), and returns the
+// distance tests made. The tests are written without branches (a few candidates are in
+// reach: a branch would be mispredicted), into `partners`, which only grows.
+std::uint64_t forwardPairsOf(std::uint32_t slot, const ForwardRuns& runs, double margin,
+                             const Workspace& ws, std::vector<std::uint32_t>& partners,
+                             std::vector<SpherePair>& out) {
     const std::uint32_t i = ws.sphereByCell[slot];
     const glm::dvec4 sphere = ws.cellOrdered[slot];
-    const ForwardRuns runs = forwardRuns(slot, ws.cellOfSphere[i], grid, ws);
-    if (partners.size() < runs.candidates) partners.resize(runs.candidates);
+    std::size_t candidates = 0;
+    for (int run = 0; run < runs.count; ++run) candidates += runs.end[run] - runs.start[run];
+    if (partners.size() < candidates + kLanes) partners.resize(candidates + kLanes);
     std::uint32_t* partner = partners.data();
     std::size_t count = 0;
     for (int run = 0; run < runs.count; ++run) {
-        for (std::uint32_t k = runs.start[run]; k < runs.end[run]; ++k) {
-            partner[count] = ws.sphereByCell[k];
-            count += withinReach(sphere, ws.cellOrdered[k], margin);
+        const std::uint32_t end = runs.end[run];
+        for (std::uint32_t k = runs.start[run]; k < end; k += kLanes) {
+            for (std::uint32_t lane = k; lane < k + kLanes; ++lane) {
+                partner[count] = ws.sphereByCell[lane];
+                count += (lane < end) & withinReach(sphere, ws.cellOrdered[lane], margin);
+            }
         }
     }
+    const std::size_t first = out.size();
+    out.resize(first + count);
+    SpherePair* found = out.data() + first;
     for (std::size_t k = 0; k < count; ++k) {
-        out.push_back({std::min(i, partner[k]), std::max(i, partner[k])});
+        found[k].i = std::min(i, partner[k]);
+        found[k].j = std::max(i, partner[k]);
     }
-    return runs.candidates;
+    return candidates;
+}
+
+// The pairs that the spheres at slots [begin, end) of the cell order meet, appended to
+// `out`; returns the distance tests made.
+std::uint64_t forwardPairs(std::uint32_t begin, std::uint32_t end, const GridShape& grid, double margin,
+                           const Workspace& ws, TaskScratch& scratch) {
+    std::uint64_t tests = 0;
+    std::uint32_t runsCell = UINT32_MAX;  // the cell `runs` belong to
+    ForwardRuns runs;
+    for (std::uint32_t slot = begin; slot < end; ++slot) {
+        const std::uint32_t cell = ws.cellOfSphere[ws.sphereByCell[slot]];
+        if (cell != runsCell) {
+            runs = forwardRuns(cell, grid, ws);
+            runsCell = cell;
+        }
+        runs.start[0] = slot + 1;
+        tests += forwardPairsOf(slot, runs, margin, ws, scratch.partners, scratch.pairs);
+    }
+    return tests;
+}
+
+// Sorts [first, last) by second sphere: insertion for the few pairs a sphere usually
+// has, std::sort beyond.
+void sortBySecondSphere(SpherePair* first, SpherePair* last) {
+    if (last - first > 16) {
+        std::sort(first, last, [](const SpherePair& a, const SpherePair& b) { return a.j < b.j; });
+        return;
+    }
+    for (SpherePair* k = first + 1; k < last; ++k) {
+        const SpherePair moving = *k;
+        SpherePair* hole = k;
+        for (; hole > first && hole[-1].j > moving.j; --hole) *hole = hole[-1];
+        *hole = moving;
+    }
 }
 
 // pairs <- unsorted, in index order: grouped by first sphere (a counting sort), then
@@ -166,8 +213,7 @@ void sortByFirstSphere(std::size_t n, const std::vector<SpherePair>& unsorted,
     runTasks(threads, threads, [&](int t) {
         const Range range = rangeOf(n, t, threads);
         for (std::uint32_t i = range.begin; i < range.end; ++i) {
-            std::sort(pairs.begin() + start[i], pairs.begin() + start[i + 1],
-                      [](const SpherePair& a, const SpherePair& b) { return a.j < b.j; });
+            sortBySecondSphere(pairs.data() + start[i], pairs.data() + start[i + 1]);
         }
     });
 }
@@ -215,11 +261,7 @@ std::uint64_t findPairsGrid(const World& world, double margin, Workspace& worksp
         TaskScratch& scratch = workspace.tasks[std::size_t(t)];
         scratch.pairs.clear();
         const Range range = rangeOf(n, t, tasks);
-        std::uint64_t made = 0;
-        for (std::uint32_t slot = range.begin; slot < range.end; ++slot) {
-            made += forwardPairsOf(slot, grid, margin, workspace, scratch.partners, scratch.pairs);
-        }
-        tests[std::size_t(t)] = made;
+        tests[std::size_t(t)] = forwardPairs(range.begin, range.end, grid, margin, workspace, scratch);
     });
     workspace.foundPairs.clear();
     std::uint64_t total = 0;

@@ -90,8 +90,8 @@ struct Workspace {
     int buildsNotReused = 0;                   // consecutive builds that served one step
     std::vector<std::uint32_t> cellOfSphere;
     std::vector<std::uint32_t> cellStart;   // counting-sort offsets, one per cell + 1
-    std::vector<std::uint32_t> sphereByCell;
-    std::vector<glm::dvec4> cellOrdered;    // centre (m) and radius (m), in sphereByCell order
+    std::vector<std::uint32_t> sphereByCell;  // then a few slots of padding
+    std::vector<glm::dvec4> cellOrdered;      // centre (m) and radius (m), in sphereByCell order
     std::vector<SpherePair> foundPairs;     // the grid's pairs in cell order, before sorting
     std::vector<std::uint32_t> pairStart;   // counting-sort offsets, one per sphere + 1
     std::vector<TaskScratch> tasks;         // one per parallel task
