@@ -106,11 +106,13 @@ Response respondToSphere(glm::dvec3& v1, glm::dvec3& v2, double m1, double m2,
     return Response::Bounce;
 }
 
-void separateSpheres(glm::dvec3& p1, glm::dvec3& p2, double m1, double m2, const glm::dvec3& u,
-                     double d, PositionSplit split) {
+Separation separateSpheres(glm::dvec3& p1, glm::dvec3& p2, double m1, double m2, const glm::dvec3& u,
+                           double d, PositionSplit split) {
     const MassShares shares = split == PositionSplit::HalfHalf ? MassShares{0.5, 0.5} : massShares(m1, m2);
-    p1 += (shares.first * d) * u;
-    p2 -= (shares.second * d) * u;
+    const Separation moved{shares.first * d, shares.second * d};  // m, along the unit u
+    p1 += moved.first * u;
+    p2 -= moved.second * u;
+    return moved;
 }
 
 void cancelApproachToPlane(glm::dvec3& v, const glm::dvec3& n) {

@@ -22,10 +22,15 @@ void projectOnPlane(glm::dvec3& p, double r, const Plane& plane);
 Response respondToSphere(glm::dvec3& v1, glm::dvec3& v2, double m1, double m2,
                          const glm::dvec3& u, const Params& params);
 
+// How far (m) separateSpheres moved each sphere.
+struct Separation {
+    double first, second;
+};
+
 // Slide 13, step 3: d = r1 + r2 - |p1 - p2|; p1 <- p1 + d/2 u, p2 <- p2 - d/2 u
 // (or split in inverse proportion to the masses).
-void separateSpheres(glm::dvec3& p1, glm::dvec3& p2, double m1, double m2, const glm::dvec3& u,
-                     double d, PositionSplit split);
+Separation separateSpheres(glm::dvec3& p1, glm::dvec3& p2, double m1, double m2, const glm::dvec3& u,
+                           double d, PositionSplit split);
 
 // Velocity-based method, step C: remove what still points into a penetration.
 void cancelApproachToPlane(glm::dvec3& v, const glm::dvec3& n);

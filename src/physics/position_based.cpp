@@ -9,8 +9,10 @@
 namespace physics {
 namespace {
 
+// Each move lowers the spheres' wall clearance by its length.
 void particlesVelocityAndPosition(World& world, const Params& params, StepStats& stats,
                                   int pass) {
+    std::vector<double>& clearance = world.workspace.wallClearance;  // m
     forEachPairInPassOrder(world, params, stats, [&](const SpherePair* pairs, std::uint32_t first,
                                                      std::uint32_t last, StepStats& s) {
         for (std::uint32_t k = first; k < last; ++k) {
@@ -18,19 +20,27 @@ void particlesVelocityAndPosition(World& world, const Params& params, StepStats&
             SphereContact contact;
             if (!touching(world, pair, contact)) continue;
             respondToContact(world, pair, contact, params, s, pass);
-            separateSpheres(world.position[pair.i], world.position[pair.j], world.mass[pair.i],
-                            world.mass[pair.j], contact.u, contact.depth, params.split);
+            const Separation moved =
+                separateSpheres(world.position[pair.i], world.position[pair.j], world.mass[pair.i],
+                                world.mass[pair.j], contact.u, contact.depth, params.split);
+            clearance[pair.i] -= moved.first;
+            clearance[pair.j] -= moved.second;
         }
     });
 }
 
+// A sphere whose wall clearance is above 0 touches no plane: passed by.
 void wallsVelocityAndPosition(World& world, const Params& params, StepStats& stats,
                               int pass) {
+    std::vector<double>& clearance = world.workspace.wallClearance;  // m
+    const double scale = planeScale(world);                          // m
     forEachSphere(world, params, stats, [&](std::uint32_t i, StepStats& s) {
+        if (clearance[i] > 0.0) return;
         forEachTouchedPlane(world, i, [&](std::size_t k, const Plane& face) {
             respondToContact(world, i, k, face, params, s, pass);
             projectOnPlane(world.position[i], world.radius[i], face);
         });
+        clearance[i] = wallClearance(world, i, scale);
     });
 }
 
@@ -41,6 +51,7 @@ StepStats stepPositionBased(World& world, const Params& params, double h) {
     integrateVelocity(world, params, h);  // A
     integratePosition(world, params, h);
     findOrderedPairs(world, params, stats);
+    findWallClearances(world, params);
     for (int pass = 0; pass < params.passes; ++pass) {
         particlesVelocityAndPosition(world, params, stats, pass);  // B
         wallsVelocityAndPosition(world, params, stats, pass);      // C

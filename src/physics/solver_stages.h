@@ -158,6 +158,37 @@ inline void forEachTouchedPlane(const World& world, std::uint32_t i, const Visit
     }
 }
 
+// m: the largest |a.x| + |a.y| + |a.z| of the planes' points, at least 1 m: with the
+// sphere's own, the scale of the rounding in wallClearance().
+inline double planeScale(const World& world) {
+    double scale = 1.0;  // m
+    for (const Plane& plane : world.planes) {
+        scale = std::max(scale, std::abs(plane.point.x) + std::abs(plane.point.y) + std::abs(plane.point.z));
+    }
+    return scale;
+}
+
+// m: a lower bound on the gap between sphere i's surface and every plane's face, less
+// a slack for rounding; at or below 0, the sphere may touch a plane. The position based
+// method keeps it per sphere (Workspace::wallClearance) to pass by, in its wall stage,
+// the spheres that touch no wall: most of them, in a pile.
+inline double wallClearance(const World& world, std::uint32_t i, double planeScale) {
+    // Relative to the coordinates: far above the rounding of the distances and of the
+    // moves since they were found (about 1e-16 of the coordinates each).
+    constexpr double kRoundingSlack = 1e-9;
+    const glm::dvec3& p = world.position[i];  // m
+    double gap = INFINITY;                    // m
+    for (const Plane& plane : world.planes) {
+        const double side = glm::dot(p - plane.point, plane.normal);  // m, signed
+        gap = std::min(gap, plane.thickness > 0.0 ? std::abs(side) - 0.5 * plane.thickness : side);
+    }
+    const double scale = planeScale + std::abs(p.x) + std::abs(p.y) + std::abs(p.z);  // m
+    return gap - world.radius[i] - kRoundingSlack * scale;
+}
+
+// Workspace::wallClearance <- wallClearance() of every sphere.
+void findWallClearances(World& world, const Params& params);
+
 // The velocity response to one contact (collision_response.h), recorded in the
 // spheres' contact state, counted in the stats (contacts on pass 0 only) and, when
 // world.recordContacts is on, logged as a ContactEvent.

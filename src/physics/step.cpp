@@ -283,6 +283,15 @@ void findContacts(World& world, const Params& params) {
     }
 }
 
+void findWallClearances(World& world, const Params& params) {
+    world.workspace.wallClearance.resize(world.size());
+    const double scale = planeScale(world);  // m
+    StepStats none;
+    forEachSphere(world, params, none, [&](std::uint32_t i, StepStats&) {
+        world.workspace.wallClearance[i] = wallClearance(world, i, scale);
+    });
+}
+
 void respondToAllContacts(World& world, const Params& params, StepStats& stats, int pass) {
     const Workspace& ws = world.workspace;
     assert(ws.pairTouches.size() == pairsAsVisited(world, params).size());  // findContacts ran

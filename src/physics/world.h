@@ -110,6 +110,10 @@ struct Workspace {
     std::vector<PairNeed> pairNeeds;         // two per pair of sharedPairs, one per sphere
     std::vector<std::uint32_t> threadOfPair;  // scratch of the share-out
     std::vector<PairNeed> lastPairOf;         // scratch: per sphere, the last pair that met it
+    // Position based: per sphere, a lower bound on its gap to the walls (m, see
+    // wallClearance()), lowered by each move of the pair stage, found anew by the wall
+    // stage for the spheres it visits.
+    std::vector<double> wallClearance;
     std::vector<double> taskMove;  // m^2: the largest squared displacement each task saw
     // The contacts of a step whose positions stay put while its passes run (velocity
     // based, response only): found once, used by every pass (findContacts).

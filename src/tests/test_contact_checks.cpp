@@ -228,6 +228,26 @@ TEST(ContactChecks, ThinWallIsTunnelledAtALargeStepOnly) {
     EXPECT_LT(finalX(1.0 / 1000.0), 0.0); // bounced off it
 }
 
+// The position based wall stage passes by the spheres whose wall clearance is above 0.
+// A sphere clear of the floor, pushed into it by the pair stage of the same pass, must
+// still be projected: each push lowers its clearance.
+TEST(ContactChecks, WallStageProjectsASpherePushedIntoTheWallInTheSamePass) {
+    for (const double thickness : {0.0, 0.02}) {
+        physics::Params params = fixtures::exactParams(1.0 / 60.0, dvec3(0.0));
+        params.passes = 1;
+        physics::World world;
+        fixtures::addBox(world, {2, 2, 2});
+        const double floor = 0.5 * thickness;  // m, the floor's face
+        if (thickness > 0.0) world.planes.push_back({{0, 0, 1}, {0, 0, 1}, thickness});
+        const dvec3 lift(0, 0, thickness > 0.0 ? 1.0 : 0.0);  // above the thin wall
+        const double r = 0.1, gap = 0.01, overlap = 0.05;  // m
+        world.addSphere(lift + dvec3(0, 0, floor + r + gap), {0, 0, 0}, r, 1.0);
+        world.addSphere(lift + dvec3(0, 0, floor + 3 * r + gap - overlap), {0, 0, 0}, r, 1.0);
+        physics::step(world, params);  // pushed down by overlap / 2 > gap
+        EXPECT_GE(world.position[0].z - lift.z, floor + r - 1e-12) << "thickness " << thickness;
+    }
+}
+
 TEST(ContactChecks, ThinWallFaceIsOnTheSideOfTheCentre) {
     const physics::Plane wall{{0, 0, 0}, {1, 0, 0}, 0.02};
     const physics::Plane front = physics::faceFor(wall, {-0.5, 0, 0});
