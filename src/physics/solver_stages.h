@@ -33,6 +33,11 @@ inline Range rangeOf(std::size_t n, int t, int tasks) {
             std::uint32_t(n * std::size_t(t + 1) / std::size_t(tasks))};
 }
 
+// Tasks per thread of forEachSphere: the threads take them as they come, so that
+// spheres that cost more (in the position based wall stage, the few near a wall: the
+// bottom of a pile, the lowest indices) are shared too.
+constexpr int kSphereTasksPerThread = 8;
+
 // visit(i, stats) on every sphere i once, in parallel (ranges of indices): for stages
 // where each sphere changes only itself.
 template <class Visit>
@@ -42,10 +47,11 @@ void forEachSphere(World& world, const Params& params, StepStats& stats, const V
         for (std::uint32_t i = 0; i < world.size(); ++i) visit(i, stats);
         return;
     }
-    std::vector<StepStats> taskStats(static_cast<std::size_t>(threads));
-    runTasks(threads, threads, [&](int t) {
+    const int tasks = kSphereTasksPerThread * threads;
+    std::vector<StepStats> taskStats(static_cast<std::size_t>(tasks));
+    runTasks(threads, tasks, [&](int t) {
         StepStats local;  // neighbours in taskStats share cache lines: count apart
-        const Range range = rangeOf(world.size(), t, threads);
+        const Range range = rangeOf(world.size(), t, tasks);
         for (std::uint32_t i = range.begin; i < range.end; ++i) visit(i, local);
         taskStats[std::size_t(t)] = local;
     });
