@@ -37,14 +37,17 @@ public:
             const std::uint64_t seen = generation_.load();  // it waits for the next one
             workers_.emplace_back([this, id, seen] { work(id, seen); });
         }
-        function_ = function;
-        context_ = context;
-        taskCount_ = tasks;
-        nextTask_.store(0);
-        helpers_ = helpers;
-        pending_.store(helpers);
         {
+            // Under the lock, with the generation: a worker reads them under it too, so
+            // it sees the helper count of the generation it wakes for, never the next
+            // run's (which would make it drain and count itself done twice).
             std::lock_guard<std::mutex> lock(mutex_);
+            function_ = function;
+            context_ = context;
+            taskCount_ = tasks;
+            nextTask_.store(0);
+            helpers_ = helpers;
+            pending_.store(helpers);
             ++generation_;
         }
         wake_.notify_all();
@@ -64,8 +67,9 @@ private:
         done_.wait(lock, [this] { return pending_.load() == 0; });
     }
 
-    // Waits for a generation after `seen`; false when the team is stopping.
-    bool awaitWork(std::uint64_t& seen) {
+    // Waits for a generation after `seen`; false when the team is stopping. `helpers`:
+    // how many workers that generation's run asked for.
+    bool awaitWork(std::uint64_t& seen, int& helpers) {
         const auto spinUntil = std::chrono::steady_clock::now() + kSpinTime;
         while (generation_.load() == seen && std::chrono::steady_clock::now() < spinUntil) {
             std::this_thread::yield();
@@ -73,12 +77,14 @@ private:
         std::unique_lock<std::mutex> lock(mutex_);
         wake_.wait(lock, [&] { return generation_.load() != seen; });
         seen = generation_.load();
+        helpers = helpers_;
         return !stopping_;
     }
 
     void work(int id, std::uint64_t seen) {
-        while (awaitWork(seen)) {
-            if (id >= helpers_) continue;  // this run needs fewer threads
+        int helpers = 0;
+        while (awaitWork(seen, helpers)) {
+            if (id >= helpers) continue;  // this run needs fewer threads
             drain();
             if (pending_.fetch_sub(1) == 1) {
                 std::lock_guard<std::mutex> lock(mutex_);

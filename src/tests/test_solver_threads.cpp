@@ -54,6 +54,23 @@ TEST(ThreadTeam, RunsEveryTaskExactlyOnce) {
     }
 }
 
+// Runs that ask for fewer threads than the team has leave some workers idle: a worker
+// that wakes late for such a run must not take the next run's helper count for its own
+// (it would count itself done twice: a run could return with a task unfinished, or the
+// next one wait forever, which ctest's time limit turns into a failure).
+TEST(ThreadTeam, EveryTaskHasEndedWhenARunReturnsWhileTheThreadCountChanges) {
+    for (int round = 0; round < 3000; ++round) {
+        const int threads = round % 2 == 0 ? 4 : 2;
+        std::atomic<int> ended{0};
+        physics::runTasks(threads, threads, [&](int) {
+            volatile int work = 0;
+            for (int k = 0; k < 2000; ++k) work = work + k;
+            ++ended;
+        });
+        ASSERT_EQ(ended.load(), threads) << "round " << round;
+    }
+}
+
 TEST(SolverThreads, EveryMethodAndOrderReachesTheSameStateOnAnyThreadCount) {
     for (const char* method : {"position", "velocity", "response-only"}) {
         for (const char* order : {"index", "reversed", "shuffled"}) {
