@@ -169,7 +169,7 @@ std::uint64_t forwardPairsOf(std::uint32_t slot, const ForwardRuns& runs, double
 }
 
 // The pairs that the spheres at slots [begin, end) of the cell order meet, appended to
-// `out`; returns the distance tests made.
+// scratch.pairs; returns the distance tests made.
 std::uint64_t forwardPairs(std::uint32_t begin, std::uint32_t end, const GridShape& grid, double margin,
                            const Workspace& ws, TaskScratch& scratch) {
     std::uint64_t tests = 0;
@@ -181,7 +181,7 @@ std::uint64_t forwardPairs(std::uint32_t begin, std::uint32_t end, const GridSha
             runs = forwardRuns(cell, grid, ws);
             runsCell = cell;
         }
-        runs.start[0] = slot + 1;
+        runs.start[0] = slot + 1;  // this sphere meets the spheres after it in its cell
         tests += forwardPairsOf(slot, runs, margin, ws, scratch.partners, scratch.pairs);
     }
     return tests;

@@ -22,7 +22,7 @@ void projectOnPlane(glm::dvec3& p, double r, const Plane& plane);
 Response respondToSphere(glm::dvec3& v1, glm::dvec3& v2, double m1, double m2,
                          const glm::dvec3& u, const Params& params);
 
-// How far (m) separateSpheres moved each sphere.
+// How far (m, >= 0) separateSpheres moved each sphere.
 struct Separation {
     double first, second;
 };

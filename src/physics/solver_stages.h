@@ -177,8 +177,10 @@ inline double planeScale(const World& world) {
 // m: a lower bound on the gap between sphere i's surface and every plane's face, less
 // a slack for rounding; at or below 0, the sphere may touch a plane. The position based
 // method keeps it per sphere (Workspace::wallClearance) to pass by, in its wall stage,
-// the spheres that touch no wall: most of them, in a pile.
-inline double wallClearance(const World& world, std::uint32_t i, double planeScale) {
+// the spheres that touch no wall: most of them, in a pile. A move of length L lowers a
+// gap by at most L because the normals are unit vectors (Plane); `scaleOfPlanes` is
+// planeScale(world).
+inline double wallClearance(const World& world, std::uint32_t i, double scaleOfPlanes) {
     // Relative to the coordinates: far above the rounding of the distances and of the
     // moves since they were found (about 1e-16 of the coordinates each).
     constexpr double kRoundingSlack = 1e-9;
@@ -188,7 +190,7 @@ inline double wallClearance(const World& world, std::uint32_t i, double planeSca
         const double side = glm::dot(p - plane.point, plane.normal);  // m, signed
         gap = std::min(gap, plane.thickness > 0.0 ? std::abs(side) - 0.5 * plane.thickness : side);
     }
-    const double scale = planeScale + std::abs(p.x) + std::abs(p.y) + std::abs(p.z);  // m
+    const double scale = scaleOfPlanes + std::abs(p.x) + std::abs(p.y) + std::abs(p.z);  // m
     return gap - world.radius[i] - kRoundingSlack * scale;
 }
 
