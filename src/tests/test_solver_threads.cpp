@@ -10,6 +10,8 @@
 #include <set>
 #include <vector>
 
+#include <glm/geometric.hpp>
+
 #include "physics/diagnostics.h"
 #include "physics/solver_stages.h"
 #include "physics/step.h"
@@ -68,6 +70,30 @@ TEST(ThreadTeam, EveryTaskHasEndedWhenARunReturnsWhileTheThreadCountChanges) {
             ++ended;
         });
         ASSERT_EQ(ended.load(), threads) << "round " << round;
+    }
+}
+
+// The position method handles the walls last in every pass, so no sphere is left in a
+// wall of the box after a step. Its wall stage visits only the spheres whose wall
+// clearance has fallen to 0, so this holds only if every push of the pair stage, on
+// any thread and in any pass, lowers the clearance of the sphere it moves.
+TEST(SolverThreads, PositionMethodLeavesNoSphereInAWallOfTheBoxOnAnyThreadCount) {
+    for (const char* threads : {"1", "2", "3"}) {
+        const scenes::Scene scene = pile({"method=position", "passes=3", std::string("threads=") + threads});
+        physics::World world = scenes::buildWorld(scene);
+        ASSERT_EQ(world.boxPlaneCount, 6);
+        double deepest = 0.0;  // m, into a wall of the box after a step
+        for (int step = 0; step < 40; ++step) {
+            physics::step(world, scene.params);
+            for (std::uint32_t i = 0; i < world.size(); ++i) {
+                for (int k = 0; k < world.boxPlaneCount; ++k) {
+                    const physics::Plane& wall = world.planes[std::size_t(k)];
+                    const double gap = glm::dot(world.position[i] - wall.point, wall.normal) - world.radius[i];
+                    deepest = std::max(deepest, -gap);
+                }
+            }
+        }
+        EXPECT_LE(deepest, 1e-12) << threads << " threads";
     }
 }
 
