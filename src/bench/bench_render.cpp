@@ -107,13 +107,23 @@ const char* glText(GLenum name) {
 }
 
 // The fraction of pixels that differ between two images of the same size: with
-// and without the spheres, a check that they were drawn and how much they cover.
-double coverage(const render::Image& with, const render::Image& without) {
+// and without the spheres, how much they cover; with and without the hidden ones, 0.
+double differingPixels(const render::Image& a, const render::Image& b) {
     long differ = 0;
-    for (std::size_t k = 0; k + 3 < with.rgba.size() && k + 3 < without.rgba.size(); k += 4) {
-        if (!std::equal(&with.rgba[k], &with.rgba[k] + 3, &without.rgba[k])) ++differ;
+    for (std::size_t k = 0; k + 3 < a.rgba.size() && k + 3 < b.rgba.size(); k += 4) {
+        if (!std::equal(&a.rgba[k], &a.rgba[k] + 3, &b.rgba[k])) ++differ;
     }
-    return double(differ) / (double(with.width) * with.height);
+    return double(differ) / (double(a.width) * a.height);
+}
+
+// Seconds to draw one frame into the target, glFinish included.
+double timeDraw(render::Renderer& renderer, render::OffscreenTarget& target,
+                const render::FrameSnapshot& snapshot, const render::Camera& camera) {
+    target.bind();
+    const auto start = std::chrono::steady_clock::now();
+    renderer.draw(snapshot, camera, 0, 0, kWidth, kHeight);
+    glFinish();
+    return bench::secondsSince(start);
 }
 
 }  // namespace
@@ -138,8 +148,9 @@ int main(int argc, char** argv) {
     std::printf("GL: %s backend, %s, %s%s%s\n\n", context->name(), glText(GL_RENDERER),
                 glText(GL_VERSION), threads ? ", LP_NUM_THREADS=" : "", threads ? threads : "");
     std::printf(
-        "| N | MSAA | ms per frame (draw + glFinish) | frames per second | "
-        "snapshot ms | covered |\n|---:|---:|---:|---:|---:|---:|\n");
+        "| N | MSAA | ms per frame, every sphere | ms per frame, hidden ones left out | "
+        "frames per second | spheres drawn | same image | snapshot ms | covered |\n"
+        "|---:|---:|---:|---:|---:|---:|:---:|---:|---:|\n");
     std::fflush(stdout);
 
     render::OffscreenTarget target;
@@ -170,34 +181,39 @@ int main(int argc, char** argv) {
                              why.c_str());
                 return 2;
             }
-            std::vector<double> frames;
+            // Every sphere sent, and the hidden ones left out, frame after frame.
+            std::vector<double> frames[2];
             for (int frame = 0; frame < 2 + o.frames; ++frame) {
-                target.bind();
-                const auto start = std::chrono::steady_clock::now();
-                renderer.draw(snapshot, camera, 0, 0, kWidth, kHeight);
-                glFinish();
-                if (frame >= 2) frames.push_back(bench::secondsSince(start));
+                for (bool cull : {false, true}) {
+                    renderer.cullHiddenSpheres = cull;
+                    const double seconds = timeDraw(renderer, target, snapshot, camera);
+                    if (frame >= 2) frames[cull].push_back(seconds);
+                }
             }
             if (const GLenum glError = glGetError(); glError != GL_NO_ERROR) {
                 std::fprintf(stderr, "spheres_bench_render: GL error 0x%x\n", glError);
                 return 2;
             }
-            const double seconds = bench::median(frames);
-            const render::Image drawn = target.read();
+            const std::size_t drawn = renderer.drawnSpheres();
+            const render::Image culled = target.read();
+            renderer.cullHiddenSpheres = false;
+            timeDraw(renderer, target, snapshot, camera);
+            const render::Image whole = target.read();
             if (!o.saveDirectory.empty()) {
                 const std::string path = o.saveDirectory + "/render_" + std::to_string(count) +
                                          "_" + std::to_string(samples) + ".png";
-                if (!render::writePng(path, drawn.width, drawn.height, drawn.rgba))
+                if (!render::writePng(path, culled.width, culled.height, culled.rgba))
                     std::fprintf(stderr, "spheres_bench_render: cannot write %s\n", path.c_str());
             }
-            target.bind();
-            renderer.draw(emptyBox, camera, 0, 0, kWidth, kHeight);
+            timeDraw(renderer, target, emptyBox, camera);
             const render::Image empty = target.read();
-            std::printf("| %s | %s | %.1f | %.1f | %.2f | %.0f %% |\n",
+            const double all = bench::median(frames[0]), seen = bench::median(frames[1]);
+            std::printf("| %s | %s | %.1f | %.1f | %.1f | %.1f %% | %s | %.2f | %.0f %% |\n",
                         bench::grouped(count).c_str(),
                         samples > 0 ? (std::to_string(samples) + "×").c_str() : "off",
-                        1e3 * seconds, 1.0 / seconds, 1e3 * bench::median(snapshotSeconds),
-                        100.0 * coverage(drawn, empty));
+                        1e3 * all, 1e3 * seen, 1.0 / seen, 100.0 * double(drawn) / count,
+                        differingPixels(culled, whole) == 0 ? "yes" : "**no**",
+                        1e3 * bench::median(snapshotSeconds), 100.0 * differingPixels(whole, empty));
             std::fflush(stdout);
         }
     }

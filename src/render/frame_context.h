@@ -17,6 +17,7 @@ struct FrameContext {
     glm::vec4 viewport{0.0f};        // x, y, width, height in framebuffer pixels
     glm::vec2 viewportSize{1.0f};    // px
     float nearPlane = 0.0f;          // m
+    float farPlane = 0.0f;           // m
     float pixelSize = 0.0f;          // view-space size of a pixel at 1 m: 2 tan(fovY/2) / height
     glm::vec3 lightView{0.0f};       // unit, towards the key light, view space
     glm::vec3 lightWorld{0.0f};      // the same, world space

@@ -1,6 +1,7 @@
 #include "render/renderer.h"
 
 #include <cmath>
+#include <string>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
@@ -24,6 +25,7 @@ FrameContext makeFrameContext(const Camera& camera, int x, int y, int width, int
     FrameContext frame;
     frame.viewport = glm::vec4(x, y, width, height);
     frame.nearPlane = camera.nearPlane();
+    frame.farPlane = camera.farPlane();
     frame.view = camera.view();
     frame.projection = camera.projection(static_cast<float>(width) / static_cast<float>(height));
     frame.viewProjection = frame.projection * frame.view;
@@ -90,6 +92,17 @@ void beginViewport(int x, int y, int width, int height) {
     glDisable(GL_CULL_FACE);
 }
 
+// Whether the GL draws on the CPU, by its renderer string.
+bool softwareRasterizer() {
+    const auto* name = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    if (name == nullptr) return false;
+    const std::string renderer = name;
+    for (const char* software : {"llvmpipe", "softpipe", "SwiftShader", "Software Rasterizer"}) {
+        if (renderer.find(software) != std::string::npos) return true;
+    }
+    return false;
+}
+
 }  // namespace
 
 struct Renderer::Passes {
@@ -112,8 +125,11 @@ std::string Renderer::init() {
             return error;
         }
     }
+    cullHiddenSpheres = softwareRasterizer();
     return {};
 }
+
+std::size_t Renderer::drawnSpheres() const { return passes_ ? passes_->spheres.drawnSpheres() : 0; }
 
 void Renderer::shutdown() {
     if (!passes_) return;
@@ -154,6 +170,7 @@ void Renderer::draw(const FrameSnapshot& snapshot, const Camera& camera, int x, 
     GLint sampleBuffers = 0;
     glGetIntegerv(GL_SAMPLE_BUFFERS, &sampleBuffers);
     passes_->planes.draw(planes.farFaces, frame, true);
+    passes_->spheres.cullHidden = cullHiddenSpheres;
     passes_->spheres.draw(snapshot, frame, style.antialiasEdges && sampleBuffers > 0);
     passes_->planes.draw(planes.extraFaces, frame, false);
     passes_->lines.draw(planes.edges, frame, true, kLineDepthBias);

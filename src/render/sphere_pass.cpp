@@ -43,22 +43,37 @@ void upload(GLuint buffer, const std::vector<SphereInstance>& instances) {
                  instances.data(), GL_STREAM_DRAW);
 }
 
-// A point sprite is dropped whole when its centre leaves the viewport, and is
-// limited in size: only spheres whose outline (bounded generously) lies inside
-// the viewport, beyond the near plane, and small enough, may be one.
-bool fitsPointSprite(const glm::vec3& viewCenter, float radius, const FrameContext& frame,
-                     float marginPixels) {
+// The sphere as the pass sees it, with whether it may be a point sprite. A point
+// sprite is dropped whole when its centre leaves the viewport, and is limited in
+// size: only spheres whose outline (bounded generously) lies inside the viewport,
+// beyond the near plane, and small enough, may be one.
+ViewSphere viewSphere(std::uint32_t index, const glm::vec3& viewCenter, float radius,
+                      const FrameContext& frame, float marginPixels) {
+    ViewSphere sphere;
+    sphere.index = index;
+    sphere.center = viewCenter;
+    sphere.radius = radius;
     const float front = -viewCenter.z - radius;  // m, depth of the nearest point
-    if (front <= frame.nearPlane * 1.01f) return false;
+    if (front <= frame.nearPlane * 1.01f) return sphere;
     const glm::vec2 tangent = glm::vec2(viewCenter) / -viewCenter.z;
     // Off-axis outlines stretch by up to 1 / cos^2 of the angle from the axis.
     const float stretch =
         1.0f + glm::dot(glm::vec2(viewCenter), glm::vec2(viewCenter)) / (front * front);
     const float reach = radius / front / frame.pixelSize * stretch + marginPixels + 1.0f;
-    if (2.0f * reach > kMaxPointPixels) return false;
     const glm::vec2 pixel = tangent / frame.pixelSize + 0.5f * frame.viewportSize;
-    return pixel.x >= reach && pixel.y >= reach && pixel.x <= frame.viewportSize.x - reach &&
-           pixel.y <= frame.viewportSize.y - reach;
+    sphere.pointSprite = 2.0f * reach <= kMaxPointPixels && pixel.x >= reach && pixel.y >= reach &&
+                         pixel.x <= frame.viewportSize.x - reach && pixel.y <= frame.viewportSize.y - reach;
+    return sphere;
+}
+
+// Bits of the bound draw framebuffer's depth buffer, 0 without one.
+int depthBitsOfTarget() {
+    GLint framebuffer = 0, bits = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
+    glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER,
+                                          framebuffer == 0 ? GL_DEPTH : GL_DEPTH_ATTACHMENT,
+                                          GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE, &bits);
+    return bits;
 }
 
 }  // namespace
@@ -119,17 +134,22 @@ void SpherePass::destroy() {
 }
 
 void SpherePass::partition(const FrameSnapshot& snapshot, const FrameContext& frame,
-                           float marginPixels) {
-    points_.clear();
-    quads_.clear();
+                           float marginPixels, bool coverageAlpha) {
+    inView_.clear();
     const std::size_t count =
         std::min({snapshot.centers.size(), snapshot.radii.size(), snapshot.colors.size()});
     for (std::size_t i = 0; i < count; ++i) {
-        const SphereInstance sphere{snapshot.centers[i], snapshot.radii[i], snapshot.colors[i]};
-        const glm::vec3 viewCenter(frame.view * glm::vec4(sphere.center, 1.0f));
-        if (viewCenter.z + sphere.radius >= 0.0f) continue;  // wholly behind the eye
-        (fitsPointSprite(viewCenter, sphere.radius, frame, marginPixels) ? points_ : quads_)
-            .push_back(sphere);
+        const glm::vec3 viewCenter(frame.view * glm::vec4(snapshot.centers[i], 1.0f));
+        if (viewCenter.z + snapshot.radii[i] >= 0.0f) continue;  // wholly behind the eye
+        inView_.push_back(viewSphere(std::uint32_t(i), viewCenter, snapshot.radii[i], frame, marginPixels));
+    }
+    if (cullHidden) hiddenSpheres_.find(inView_, frame, coverageAlpha, depthBitsOfTarget());
+    points_.clear();
+    quads_.clear();
+    for (const ViewSphere& sphere : inView_) {
+        if (sphere.hidden) continue;
+        const std::uint32_t i = sphere.index;
+        (sphere.pointSprite ? points_ : quads_).push_back({snapshot.centers[i], snapshot.radii[i], snapshot.colors[i]});
     }
 }
 
@@ -151,7 +171,7 @@ void SpherePass::draw(const FrameSnapshot& snapshot, const FrameContext& frame,
                       bool coverageAlpha) {
     // Coverage needs fragments up to a pixel and a half outside the outline, px.
     const float marginPixels = coverageAlpha ? 1.5f : 0.5f;
-    partition(snapshot, frame, marginPixels);
+    partition(snapshot, frame, marginPixels, coverageAlpha);
     if (points_.empty() && quads_.empty()) return;
     glEnable(GL_DEPTH_TEST);
     glDepthMask(GL_TRUE);

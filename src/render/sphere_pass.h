@@ -10,6 +10,7 @@
 #include "render/frame_context.h"
 #include "render/frame_snapshot.h"
 #include "render/gl_program.h"
+#include "render/hidden_spheres.h"
 
 namespace render {
 
@@ -26,6 +27,12 @@ class SpherePass {
     void destroy();
     // coverageAlpha: the target is multisampled and edges use alpha-to-coverage.
     void draw(const FrameSnapshot& snapshot, const FrameContext& frame, bool coverageAlpha);
+    // Spheres sent to the GL by the last draw (the others were hidden or behind the eye).
+    std::size_t drawnSpheres() const { return points_.size() + quads_.size(); }
+
+    // Leaves out the spheres no pixel can show (HiddenSphereFinder): the same image,
+    // less work for a software rasteriser, a little CPU time per frame.
+    bool cullHidden = false;
 
   private:
     struct Program {
@@ -35,7 +42,8 @@ class SpherePass {
     };
     std::string buildProgram(Program& program, std::string_view label,
                              std::string_view vertexSource);
-    void partition(const FrameSnapshot& snapshot, const FrameContext& frame, float marginPixels);
+    void partition(const FrameSnapshot& snapshot, const FrameContext& frame, float marginPixels,
+                   bool coverageAlpha);
     void setUniforms(const Program& program, const FrameContext& frame, float marginPixels,
                      bool coverageAlpha);
 
@@ -46,7 +54,9 @@ class SpherePass {
     GLuint cornerBuffer_ = 0;
     GLuint pointBuffer_ = 0;              // SphereInstance per point sprite
     GLuint quadBuffer_ = 0;               // SphereInstance per square
-    std::vector<SphereInstance> points_;  // reused from frame to frame
+    std::vector<ViewSphere> inView_;      // reused from frame to frame
+    HiddenSphereFinder hiddenSpheres_;
+    std::vector<SphereInstance> points_;
     std::vector<SphereInstance> quads_;
 };
 

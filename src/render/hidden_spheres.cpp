@@ -1,0 +1,184 @@
+#include "render/hidden_spheres.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+namespace render {
+namespace {
+
+// sphere.frag works in single precision: the depth it writes may be off by this
+// fraction of the distance to the sphere (the rounding of |c|^2 - along^2, about
+// 1e-7 of |c|^2, under a square root), on either side.
+constexpr float kShaderDepthNoise = 1e-3f;
+
+// Pixels' widths (at the sphere) by which sphere.frag's edge may differ from the
+// outline. Without samples a fragment is kept while its centre ray meets the sphere:
+// the margin is for rounding. With alpha to coverage, coverage is 1 from half of
+// fwidth(miss) inside the outline and 0 from as far outside; fwidth adds two
+// finite differences of at most a pixel's width each.
+constexpr float kEdgeMarginPixels = 0.25f;
+constexpr float kEdgeMarginSampledPixels = 1.0f;
+// Pixels by which the spans of pixels within a distance of a centre are narrowed
+// (covered) or widened (tested), for the rounding of the ray through a pixel centre.
+constexpr float kSpanSlackPixels = 0.02f;
+// Below one sphere in this many covering a pixel whole, none is tested.
+constexpr std::size_t kFewestCovering = 8;
+
+// The pixels [first, end) of a row (or the rows of a column) of `size` whose centre
+// (i + 0.5) lies within [lo, hi] px.
+struct Span {
+    int first, end;
+};
+Span pixelsBetween(float lo, float hi, int size) {
+    // floor(v) for v clamped to [-size - 1, size + 1]: truncation, which rounds towards 0,
+    // corrected (std::floor is a call without SSE 4.1).
+    const auto floorOf = [size](float v) {
+        v = std::clamp(v, -1.0f - float(size), 1.0f + float(size));
+        const int i = int(v);
+        return float(i) > v ? i - 1 : i;
+    };
+    const int first = -floorOf(0.5f - lo);  // ceil(lo - 0.5)
+    const int last = floorOf(hi - 0.5f);
+    return {std::max(first, 0), std::min(last + 1, size)};
+}
+
+// The pixels of row y (of a viewport `width` wide) whose centre lies within `radius` px of `center`.
+Span rowSpan(int y, const glm::vec2& center, float radius, int width) {
+    const float dy = float(y) + 0.5f - center.y;
+    const float half2 = radius * radius - dy * dy;
+    if (half2 < 0.0f) return {0, 0};
+    const float half = std::sqrt(half2);
+    return pixelsBetween(center.x - half, center.x + half, width);
+}
+
+}  // namespace
+
+// Where the rays that pass within `reach` (m) of c meet the screen, as circles around
+// the centre's projection p (px): a cone of half-angle beta = asin(reach / |c|) whose
+// axis is theta off the view axis meets the screen in an ellipse. Along its major axis
+// it spans tan(theta -+ beta) - tan(theta): p is within u (1 + t^2) / (1 - t u) of every
+// point of it (t = tan theta, u = tan beta, tangent of a sum). Across, its half-width b
+// is at least u, and its centre is d = u^2 t (1 + t^2) / (1 - t^2 u^2) beyond p: it
+// holds the circle of radius u - d around p.
+HiddenSphereFinder::Disc HiddenSphereFinder::discOf(const glm::vec3& c, float reach,
+                                                   float pixelSize) const {
+    const float distance2 = glm::dot(c, c);  // m^2
+    const float depth = -c.z;                // m
+    Disc disc;
+    disc.center = glm::vec2(c) / depth / pixelSize + 0.5f * glm::vec2(float(width_), float(height_));
+    if (depth <= 0.0f || reach * reach >= distance2) return disc;  // empty
+    const float t = std::sqrt(c.x * c.x + c.y * c.y) / depth;
+    const float u = reach / std::sqrt(distance2 - reach * reach);
+    if (t * u >= 0.5f) return disc;  // far off axis and wide: not worth it
+    const float stretch = (1.0f + t * t) * u;
+    // Rounding: a little less inside, a little more outside.
+    disc.inside = (u - stretch * t * u / (1.0f - t * t * u * u)) / pixelSize * (1.0f - 1e-4f) - kSpanSlackPixels;
+    disc.outside = stretch / (1.0f - t * u) / pixelSize * (1.0f + 1e-4f) + kSpanSlackPixels;
+    return disc;
+}
+
+// The pixels whose centre ray passes within radius - margin of the centre are covered
+// whole; the ray meets the sphere there at less than |c| - sqrt(r^2 - inner^2) from
+// the eye. Depths in this file are distances from the eye along the pixel's ray:
+// at one pixel they order fragments as the depth buffer does.
+// Returns whether it covered any pixel.
+bool HiddenSphereFinder::cover(const ViewSphere& sphere, float edgeMarginPixels, float pixelSize) {
+    const glm::vec3 c = sphere.center;                                  // m
+    const float distance = glm::length(c);                              // m
+    const float inner = sphere.radius - edgeMarginPixels * distance * pixelSize;  // m
+    if (inner <= 0.0f) return false;
+    const float depth = distance - std::sqrt(sphere.radius * sphere.radius - inner * inner) +
+                        kShaderDepthNoise * distance;  // m
+    const Disc disc = discOf(c, inner, pixelSize);
+    if (!(disc.inside > 0.0f)) return false;
+    const Span rows = pixelsBetween(disc.center.y - disc.inside, disc.center.y + disc.inside, height_);
+    bool covered = false;
+    for (int y = rows.first; y < rows.end; ++y) {
+        float* row = &nearestCover_[std::size_t(y) * std::size_t(width_)];
+        const Span span = rowSpan(y, disc.center, disc.inside, width_);
+        for (int x = span.first; x < span.end; ++x) row[x] = std::min(row[x], depth);
+        covered = covered || span.first < span.end;
+    }
+    return covered;
+}
+
+// Whether every pixel where the sphere may leave a fragment is covered in front of
+// it. Its fragments lie within `outer` of its centre: on the sphere, or for edge
+// fragments whose ray misses it (alpha to coverage), at the ray's closest approach.
+bool HiddenSphereFinder::behindCover(const ViewSphere& sphere, float edgeMarginPixels,
+                                     float pixelSize, float depthQuantum) const {
+    const glm::vec3 c = sphere.center;      // m
+    const float distance = glm::length(c);  // m
+    const float outer = sphere.radius + edgeMarginPixels * distance * pixelSize;  // m
+    float nearest = distance - outer - kShaderDepthNoise * distance;             // m
+    nearest -= 4.0f * nearest * nearest * depthQuantum;  // two depth-buffer steps, and rounding
+    const Disc disc = discOf(c, outer, pixelSize);
+    if (!(disc.outside > 0.0f)) return false;
+    if (tilesBehindCover(disc, nearest)) return true;
+    const Span rows = pixelsBetween(disc.center.y - disc.outside, disc.center.y + disc.outside, height_);
+    for (int y = rows.first; y < rows.end; ++y) {
+        const float* row = &nearestCover_[std::size_t(y) * std::size_t(width_)];
+        const Span span = rowSpan(y, disc.center, disc.outside, width_);
+        for (int x = span.first; x < span.end; ++x) {
+            if (!(row[x] < nearest)) return false;
+        }
+    }
+    return true;
+}
+
+// Tiles of kTile x kTile pixels: the farthest cover of each, so that most hidden
+// spheres are found hidden by the few tiles under them, without their pixels.
+void HiddenSphereFinder::findFarthestCoverOfTiles() {
+    tilesX_ = (width_ + kTile - 1) / kTile;
+    tilesY_ = (height_ + kTile - 1) / kTile;
+    farthestCover_.assign(std::size_t(tilesX_) * std::size_t(tilesY_), 0.0f);
+    for (int y = 0; y < height_; ++y) {
+        const float* row = &nearestCover_[std::size_t(y) * std::size_t(width_)];
+        float* tiles = &farthestCover_[std::size_t(y / kTile) * std::size_t(tilesX_)];
+        for (int x = 0; x < width_; ++x) tiles[x / kTile] = std::max(tiles[x / kTile], row[x]);
+    }
+}
+
+bool HiddenSphereFinder::tilesBehindCover(const Disc& disc, float nearest) const {
+    const Span columns = pixelsBetween(disc.center.x - disc.outside, disc.center.x + disc.outside, width_);
+    const Span rows = pixelsBetween(disc.center.y - disc.outside, disc.center.y + disc.outside, height_);
+    // No pixel centre within reach (a sphere between them, or off the viewport): no fragment.
+    if (columns.first >= columns.end || rows.first >= rows.end) return true;
+    for (int ty = rows.first / kTile; ty <= (rows.end - 1) / kTile; ++ty) {
+        for (int tx = columns.first / kTile; tx <= (columns.end - 1) / kTile; ++tx) {
+            if (!(farthestCover_[std::size_t(ty) * std::size_t(tilesX_) + std::size_t(tx)] < nearest)) return false;
+        }
+    }
+    return true;
+}
+
+void HiddenSphereFinder::find(std::vector<ViewSphere>& spheres, const FrameContext& frame,
+                              bool multisampled, int depthBits) {
+    for (ViewSphere& sphere : spheres) sphere.hidden = false;
+    width_ = int(frame.viewportSize.x);
+    height_ = int(frame.viewportSize.y);
+    if (width_ <= 0 || height_ <= 0 || depthBits <= 0) return;
+    nearestCover_.assign(std::size_t(width_) * std::size_t(height_), INFINITY);
+    const float margin = multisampled ? kEdgeMarginSampledPixels : kEdgeMarginPixels;
+    std::size_t covering = 0;  // spheres that cover a pixel whole
+    for (const ViewSphere& sphere : spheres) {
+        // Only spheres drawn whole between the near and far planes hide others.
+        const float front = -sphere.center.z - sphere.radius, back = -sphere.center.z + sphere.radius;  // m
+        if (front > frame.nearPlane * 1.01f && back < frame.farPlane * 0.99f) {
+            covering += cover(sphere, margin, frame.pixelSize);
+        }
+    }
+    // Spheres too small on the screen to cover a pixel whole (a million under MSAA):
+    // few could be hidden, and testing them all would cost more than it saves.
+    if (covering < spheres.size() / kFewestCovering) return;
+    findFarthestCoverOfTiles();
+    // A depth d is stored as about 1 - near / d in steps of 2^-depthBits: d^2 times this, m.
+    const float depthQuantum = std::ldexp(1.0f, -depthBits) / frame.nearPlane;  // 1/m
+    for (ViewSphere& sphere : spheres) {
+        sphere.hidden = sphere.pointSprite && behindCover(sphere, margin, frame.pixelSize, depthQuantum);
+    }
+}
+
+}  // namespace render

@@ -1,0 +1,63 @@
+#pragma once
+// Internal to spheres_render: finds the spheres that no pixel can show, so that the
+// sphere pass does not send them. A software rasteriser pays for every sphere it is
+// sent, seen or not, and most of a pile is hidden behind its surface.
+//
+// A depth buffer on the CPU, conservative: each sphere writes, at each pixel whose
+// centre ray meets it far enough inside its outline that its fragment surely covers
+// the whole pixel (every sample under MSAA), the view depth of its surface there. A
+// sphere drawn as a point sprite is hidden when every pixel its sprite may touch
+// holds a depth surely in front of its nearest point. Its fragments would all fail
+// the depth test: the image is the same, pixel for pixel, with or without it.
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "render/frame_context.h"
+
+namespace render {
+
+// A sphere in front of the eye, as the sphere pass sees it this frame.
+struct ViewSphere {
+    std::uint32_t index = 0;  // in the snapshot
+    glm::vec3 center{0.0f};   // m, view space (the eye looks along -z)
+    float radius = 0.0f;      // m
+    bool pointSprite = false;  // drawn as a point sprite, else as a square (never hidden)
+    bool hidden = false;       // set by HiddenSphereFinder
+};
+
+class HiddenSphereFinder {
+  public:
+    // Sets `hidden` on the point-sprite spheres that no pixel can show. multisampled:
+    // the target has samples and edges use alpha to coverage; depthBits: of the
+    // target's depth buffer (0: none, nothing is hidden).
+    void find(std::vector<ViewSphere>& spheres, const FrameContext& frame, bool multisampled,
+              int depthBits);
+
+  private:
+    // Circles on the screen around the projection of a centre (px, from the viewport's
+    // lower left): inside one, every pixel centre's ray passes within a distance of the
+    // centre; outside the other, none does. Radii <= 0: nothing inside.
+    struct Disc {
+        glm::vec2 center{0.0f};
+        float inside = 0.0f, outside = 0.0f;
+    };
+    Disc discOf(const glm::vec3& c, float reach, float pixelSize) const;
+    bool cover(const ViewSphere& sphere, float edgeMarginPixels, float pixelSize);
+    bool behindCover(const ViewSphere& sphere, float edgeMarginPixels, float pixelSize,
+                     float depthQuantum) const;
+    void findFarthestCoverOfTiles();
+    bool tilesBehindCover(const Disc& disc, float nearest) const;
+
+    int width_ = 0, height_ = 0;  // px, the viewport
+    // Per pixel (row 0 at the bottom): the distance from the eye along the pixel's ray
+    // (m) in front of which some sphere covers the whole pixel; +infinity where none does.
+    std::vector<float> nearestCover_;
+    static constexpr int kTile = 8;  // px
+    int tilesX_ = 0, tilesY_ = 0;
+    std::vector<float> farthestCover_;  // per tile: the largest nearestCover_ of its pixels
+};
+
+}  // namespace render

@@ -1,0 +1,208 @@
+// Leaving out the spheres no pixel can show (render/hidden_spheres.h): which ones the
+// CPU depth buffer finds hidden, and, drawn headless, that the image stays the same
+// to the last byte while most of a pile is left out.
+#include <glad/gl.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "platform/headless_context.h"
+#include "render/camera.h"
+#include "render/frame_snapshot.h"
+#include "render/hidden_spheres.h"
+#include "render/offscreen_target.h"
+#include "render/renderer.h"
+
+namespace {
+
+// A 640 x 360 view with the camera's default field of view, the eye at the origin
+// looking along -z (view space is world space here).
+render::FrameContext frameOf(int width = 640, int height = 360) {
+    const render::Camera camera;
+    render::FrameContext frame;
+    frame.viewportSize = glm::vec2(float(width), float(height));
+    frame.pixelSize = 2.0f * std::tan(0.5f * camera.fovY) / float(height);
+    frame.nearPlane = 0.1f;
+    frame.farPlane = 100.0f;
+    return frame;
+}
+
+render::ViewSphere sphereAt(const glm::vec3& center, float radius, bool pointSprite = true) {
+    render::ViewSphere sphere;
+    sphere.center = center;
+    sphere.radius = radius;
+    sphere.pointSprite = pointSprite;
+    return sphere;
+}
+
+std::vector<bool> hiddenOf(std::vector<render::ViewSphere> spheres, bool multisampled = false,
+                           const render::FrameContext& frame = frameOf()) {
+    render::HiddenSphereFinder finder;
+    finder.find(spheres, frame, multisampled, 24);
+    std::vector<bool> hidden;
+    for (const render::ViewSphere& sphere : spheres) hidden.push_back(sphere.hidden);
+    return hidden;
+}
+
+TEST(HiddenSpheres, ASphereBehindALargerOneIsHiddenAndTheOneInFrontIsNot) {
+    // 0.5 m at 3 m covers about 60 px around the centre; 0.05 m at 5 m about 4 px.
+    const auto hidden = hiddenOf({sphereAt({0, 0, -3}, 0.5f), sphereAt({0.1f, -0.1f, -5}, 0.05f)});
+    EXPECT_FALSE(hidden[0]);
+    EXPECT_TRUE(hidden[1]);
+}
+
+TEST(HiddenSpheres, ASpherePeepingPastTheEdgeOrInFrontIsShown) {
+    // The small sphere's outline starts 1 cm beyond the outline of the large one, seen
+    // from the eye: at 5 m, that is 0.5 px outside.
+    const float outline = 0.5f / std::sqrt(9.0f - 0.25f);  // tangent of the large one's outline
+    const float edge = outline * 5.0f;                     // m, at 5 m
+    const auto hidden = hiddenOf({sphereAt({0, 0, -3}, 0.5f), sphereAt({edge + 0.06f, 0, -5}, 0.05f),
+                                  sphereAt({edge - 0.2f, 0, -5}, 0.05f), sphereAt({0, 0, -2}, 0.05f)});
+    EXPECT_FALSE(hidden[1]) << "peeps out";
+    EXPECT_TRUE(hidden[2]) << "well inside the outline, behind";
+    EXPECT_FALSE(hidden[3]) << "in front";
+}
+
+TEST(HiddenSpheres, ASphereCloseBehindTheSurfaceIsShown) {
+    // A sphere covers its disc at one depth, the deepest its surface reaches there
+    // (plus the shader's rounding): a sphere close behind its front is not found hidden,
+    // one behind that depth is.
+    const auto hidden = hiddenOf({sphereAt({0, 0, -3}, 0.5f), sphereAt({0, 0, -2.601f}, 0.1f),
+                                  sphereAt({0, 0.1f, -3.2f}, 0.05f)});
+    EXPECT_FALSE(hidden[1]) << "1 mm behind the large sphere's nearest point";
+    EXPECT_TRUE(hidden[2]) << "behind the large sphere's centre";
+}
+
+TEST(HiddenSpheres, SquaresAndSpheresBehindOnesCutByTheNearPlaneAreShown) {
+    const render::FrameContext frame = frameOf();
+    // A sphere drawn as a square is never left out, even when covered.
+    EXPECT_FALSE(hiddenOf({sphereAt({0, 0, -3}, 0.5f), sphereAt({0, 0, -5}, 0.05f, false)})[1]);
+    // The near plane cuts the large sphere: it may not be drawn whole, so it hides nothing.
+    EXPECT_FALSE(hiddenOf({sphereAt({0, 0, -0.5f}, 0.45f), sphereAt({0, 0, -5}, 0.05f)}, false, frame)[1]);
+    // The far plane (100 m) cuts it: it hides nothing either (the one behind is 5 px wide).
+    EXPECT_FALSE(hiddenOf({sphereAt({0, 0, -99.4f}, 1.5f), sphereAt({0, 0, -99.9f}, 0.5f)}, false, frame)[1]);
+    // The same, nearer, hides it.
+    EXPECT_TRUE(hiddenOf({sphereAt({0, 0, -97.4f}, 1.5f), sphereAt({0, 0, -97.9f}, 0.5f)}, false, frame)[1]);
+}
+
+TEST(HiddenSpheres, ASphereBetweenPixelCentresIsHidden) {
+    // 0.5 mm at 2 m is 0.12 px: with its centre at a pixel's corner, no pixel centre's
+    // ray comes near it and no fragment survives. Centred on a pixel, it shows.
+    const render::FrameContext frame = frameOf();
+    const float pixel = frame.pixelSize * 2.0f;  // m per px at 2 m
+    EXPECT_TRUE(hiddenOf({sphereAt({0, 0, -2}, 0.0005f)}, false, frame)[0]) << "at a corner";
+    EXPECT_FALSE(hiddenOf({sphereAt({0.5f * pixel, 0.5f * pixel, -2}, 0.0005f)}, false, frame)[0]) << "at a centre";
+}
+
+TEST(HiddenSpheres, EdgesByCoverageNeedMoreOfTheSphereInFront) {
+    // In front, a sphere 6 px across; behind, one whose fragments reach 2.5 px from its
+    // centre. Without samples the front one covers 2.75 px around its centre, enough;
+    // under alpha to coverage only 2 px, and the edges of the one behind may show.
+    const render::FrameContext frame = frameOf();
+    const float pixel = frame.pixelSize;  // m per px at 1 m
+    const std::vector<render::ViewSphere> spheres{sphereAt({0, 0, -2}, 3.0f * pixel * 2.0f),
+                                                  sphereAt({0, 0, -4}, 1.5f * pixel * 4.0f)};
+    EXPECT_TRUE(hiddenOf(spheres, false)[1]);
+    EXPECT_FALSE(hiddenOf(spheres, true)[1]);
+}
+
+// ------------------------------------------------------------ drawn, headless
+
+// A pile in a box: a jittered lattice of 6 000 spheres, radii 1 to 4 cm, some
+// overlapping, coloured by index.
+render::FrameSnapshot pile() {
+    render::FrameSnapshot snapshot;
+    const float half = 0.5f;  // m, half the box
+    const std::vector<glm::vec3> normals{{0, 0, 1}, {1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, -1}};
+    for (const glm::vec3& n : normals) {
+        snapshot.planes.push_back({n.z < 0 ? glm::vec3(0, 0, 2 * half) : -half * glm::vec3(n.x, n.y, 0), n});
+    }
+    snapshot.boxPlaneCount = 6;
+    unsigned state = 12345u;
+    const auto random = [&state] {  // in [0, 1)
+        state = state * 1664525u + 1013904223u;
+        return float(state >> 8) / float(1u << 24);
+    };
+    const int across = 25, high = 10;
+    const float spacing = 2.0f * half / float(across);  // m
+    for (int k = 0; k < high; ++k) {
+        for (int j = 0; j < across; ++j) {
+            for (int i = 0; i < across; ++i) {
+                const glm::vec3 jitter(random() - 0.5f, random() - 0.5f, random() - 0.5f);
+                const glm::vec3 centre = glm::vec3(-half + (i + 0.5f) * spacing, -half + (j + 0.5f) * spacing,
+                                                   (k + 0.5f) * spacing) + 0.3f * spacing * jitter;
+                const auto id = std::uint8_t(i * 7 + j * 13 + k * 29);
+                snapshot.addSphere(centre, 0.01f + 0.03f * random(), {id, std::uint8_t(255 - id), 128, 255});
+            }
+        }
+    }
+    return snapshot;
+}
+
+class HiddenSpheresDrawn : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        std::string error;
+        context_ = platform::createHeadless(platform::HeadlessBackend::Auto, &error);
+        if (!context_) GTEST_SKIP() << "no headless GL backend available (OSMesa, EGL): " << error;
+        ASSERT_EQ(renderer_.init(), "");
+    }
+
+    struct Drawn {
+        render::Image image;
+        std::size_t spheres = 0;  // sent to the GL
+    };
+    Drawn draw(const render::FrameSnapshot& snapshot, const render::Camera& camera, int samples, bool cull) {
+        EXPECT_EQ(target_.resize(kWidth, kHeight, samples), "");
+        target_.bind();
+        renderer_.cullHiddenSpheres = cull;
+        renderer_.draw(snapshot, camera, 0, 0, kWidth, kHeight);
+        EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+        return {target_.read(), renderer_.drawnSpheres()};
+    }
+
+    static constexpr int kWidth = 480, kHeight = 270;
+    std::unique_ptr<platform::HeadlessContext> context_;
+    render::Renderer renderer_;
+    render::OffscreenTarget target_;
+};
+
+// The number of pixels whose colour differs.
+int differingPixels(const render::Image& a, const render::Image& b) {
+    int differ = 0;
+    for (std::size_t k = 0; k + 3 < a.rgba.size() && k + 3 < b.rgba.size(); k += 4) {
+        differ += a.rgba[k] != b.rgba[k] || a.rgba[k + 1] != b.rgba[k + 1] || a.rgba[k + 2] != b.rgba[k + 2];
+    }
+    return differ;
+}
+
+TEST_F(HiddenSpheresDrawn, LeavingOutTheHiddenSpheresKeepsEveryPixel) {
+    const render::FrameSnapshot snapshot = pile();
+    std::vector<render::Camera> cameras(5);
+    cameras[0].reset({-0.5f, -0.5f, 0}, {0.5f, 0.5f, 1}, float(kWidth) / kHeight);  // the default view
+    cameras[1] = cameras[0];
+    cameras[1].elevation = 1.5f;  // from above
+    cameras[2] = cameras[0];
+    cameras[2].elevation = -0.3f;  // from below the floor
+    cameras[3] = cameras[0];
+    cameras[3].distance = 0.9f;  // close: some spheres are squares, some behind the eye
+    cameras[4] = cameras[0];
+    cameras[4].distance = 6.0f;  // far: spheres of a few pixels
+    std::size_t mostHidden = 0;
+    for (std::size_t c = 0; c < cameras.size(); ++c) {
+        for (int samples : {0, 4}) {
+            const Drawn all = draw(snapshot, cameras[c], samples, false);
+            const Drawn seen = draw(snapshot, cameras[c], samples, true);
+            EXPECT_EQ(differingPixels(all.image, seen.image), 0) << "camera " << c << ", " << samples << " samples";
+            EXPECT_LE(seen.spheres, all.spheres);
+            if (samples == 0) mostHidden = std::max(mostHidden, all.spheres - seen.spheres);
+        }
+    }
+    // From above only the top layer or two show: most of the pile is left out.
+    EXPECT_GT(mostHidden, snapshot.sphereCount() / 2);
+}
+
+}  // namespace
