@@ -18,7 +18,10 @@ void main() {
     vec2 ndc = (gl_FragCoord.xy - uViewport.xy) / uViewport.zw * 2.0 - 1.0;
     vec3 ray = normalize(vec3(ndc.x / uProjection[0][0], ndc.y / uProjection[1][1], -1.0));
     float along = dot(ray, vCenter);                       // m, to the closest approach
-    float miss2 = dot(vCenter, vCenter) - along * along;   // m^2, squared miss distance
+    // Squared miss distance, m^2, as the offset's length: |c|^2 - along^2 would cancel
+    // in single precision (an error of 1e-7 |c|^2, most of a pixel for small spheres).
+    vec3 offset = vCenter - ray * along;
+    float miss2 = dot(offset, offset);
     float miss = sqrt(max(miss2, 0.0));
     // Inside the outline > 0, in pixels: the anti-aliased edge under MSAA.
     float edge = (vRadius - miss) / max(fwidth(miss), 1e-7);

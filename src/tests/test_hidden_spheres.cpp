@@ -156,15 +156,15 @@ class HiddenSpheresDrawn : public ::testing::Test {
         std::size_t spheres = 0;  // sent to the GL
     };
     Drawn draw(const render::FrameSnapshot& snapshot, const render::Camera& camera, int samples, bool cull) {
-        EXPECT_EQ(target_.resize(kWidth, kHeight, samples), "");
+        EXPECT_EQ(target_.resize(width_, height_, samples), "");
         target_.bind();
         renderer_.cullHiddenSpheres = cull;
-        renderer_.draw(snapshot, camera, 0, 0, kWidth, kHeight);
+        renderer_.draw(snapshot, camera, 0, 0, width_, height_);
         EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
         return {target_.read(), renderer_.drawnSpheres()};
     }
 
-    static constexpr int kWidth = 480, kHeight = 270;
+    int width_ = 480, height_ = 270;
     std::unique_ptr<platform::HeadlessContext> context_;
     render::Renderer renderer_;
     render::OffscreenTarget target_;
@@ -182,7 +182,7 @@ int differingPixels(const render::Image& a, const render::Image& b) {
 TEST_F(HiddenSpheresDrawn, LeavingOutTheHiddenSpheresKeepsEveryPixel) {
     const render::FrameSnapshot snapshot = pile();
     std::vector<render::Camera> cameras(5);
-    cameras[0].reset({-0.5f, -0.5f, 0}, {0.5f, 0.5f, 1}, float(kWidth) / kHeight);  // the default view
+    cameras[0].reset({-0.5f, -0.5f, 0}, {0.5f, 0.5f, 1}, float(width_) / height_);  // the default view
     cameras[1] = cameras[0];
     cameras[1].elevation = 1.5f;  // from above
     cameras[2] = cameras[0];
@@ -191,8 +191,10 @@ TEST_F(HiddenSpheresDrawn, LeavingOutTheHiddenSpheresKeepsEveryPixel) {
     cameras[3].distance = 0.9f;  // close: some spheres are squares, some behind the eye
     cameras[4] = cameras[0];
     cameras[4].distance = 6.0f;  // far: spheres of a few pixels
+    cameras.push_back(cameras[0]);  // the default view in full HD
     std::size_t mostHidden = 0;
     for (std::size_t c = 0; c < cameras.size(); ++c) {
+        if (c == cameras.size() - 1) width_ = 1920, height_ = 1080;  // small pixels: the shader's rounding shows
         for (int samples : {0, 4}) {
             const Drawn all = draw(snapshot, cameras[c], samples, false);
             const Drawn seen = draw(snapshot, cameras[c], samples, true);
