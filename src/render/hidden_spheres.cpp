@@ -9,8 +9,8 @@ namespace render {
 namespace {
 
 // sphere.frag works in single precision: the depth it writes may be off by this
-// fraction of the distance to the sphere (the rounding of |c|^2 - along^2, about
-// 1e-7 of |c|^2, under a square root), on either side.
+// fraction of the distance to the sphere, on either side. Generous: a rounding of
+// 1e-7 of |c|^2 under its square root would give 3e-4.
 constexpr float kShaderDepthNoise = 1e-3f;
 
 // Pixels' widths (at the sphere) by which sphere.frag's edge may differ from the

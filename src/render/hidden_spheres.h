@@ -5,9 +5,10 @@
 //
 // A depth buffer on the CPU, conservative: each sphere writes, at each pixel whose
 // centre ray meets it far enough inside its outline that its fragment surely covers
-// the whole pixel (every sample under MSAA), the view depth of its surface there. A
-// sphere drawn as a point sprite is hidden when every pixel its sprite may touch
-// holds a depth surely in front of its nearest point. Its fragments would all fail
+// the whole pixel (every sample under MSAA), the deepest its surface reaches there
+// (as a distance from the eye along the pixel's ray). A sphere drawn as a point
+// sprite is hidden when every pixel where it may leave a fragment holds a distance
+// surely in front of its nearest point. Its fragments would all fail
 // the depth test: the image is the same, pixel for pixel, with or without it.
 #include <cstdint>
 #include <vector>

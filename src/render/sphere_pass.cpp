@@ -66,12 +66,16 @@ ViewSphere viewSphere(std::uint32_t index, const glm::vec3& viewCenter, float ra
     return sphere;
 }
 
-// Bits of the bound draw framebuffer's depth buffer, 0 without one.
+// Bits of the bound draw framebuffer's depth buffer, 0 without one (asked first: the
+// size of a missing attachment is a GL error).
 int depthBitsOfTarget() {
-    GLint framebuffer = 0, bits = 0;
+    GLint framebuffer = 0, type = GL_NONE, bits = 0;
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
-    glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER,
-                                          framebuffer == 0 ? GL_DEPTH : GL_DEPTH_ATTACHMENT,
+    const GLenum attachment = framebuffer == 0 ? GL_DEPTH : GL_DEPTH_ATTACHMENT;
+    glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, attachment,
+                                          GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
+    if (type == GL_NONE) return 0;
+    glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, attachment,
                                           GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE, &bits);
     return bits;
 }

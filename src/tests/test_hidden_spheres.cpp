@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include <glm/vec2.hpp>
+
 #include "platform/headless_context.h"
 #include "render/camera.h"
 #include "render/frame_snapshot.h"
@@ -155,16 +157,16 @@ class HiddenSpheresDrawn : public ::testing::Test {
         render::Image image;
         std::size_t spheres = 0;  // sent to the GL
     };
-    Drawn draw(const render::FrameSnapshot& snapshot, const render::Camera& camera, int samples, bool cull) {
-        EXPECT_EQ(target_.resize(width_, height_, samples), "");
+    Drawn draw(const render::FrameSnapshot& snapshot, const render::Camera& camera, glm::ivec2 size,
+               int samples, bool cull) {
+        EXPECT_EQ(target_.resize(size.x, size.y, samples), "");
         target_.bind();
         renderer_.cullHiddenSpheres = cull;
-        renderer_.draw(snapshot, camera, 0, 0, width_, height_);
+        renderer_.draw(snapshot, camera, 0, 0, size.x, size.y);
         EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
         return {target_.read(), renderer_.drawnSpheres()};
     }
 
-    int width_ = 480, height_ = 270;
     std::unique_ptr<platform::HeadlessContext> context_;
     render::Renderer renderer_;
     render::OffscreenTarget target_;
@@ -181,24 +183,24 @@ int differingPixels(const render::Image& a, const render::Image& b) {
 
 TEST_F(HiddenSpheresDrawn, LeavingOutTheHiddenSpheresKeepsEveryPixel) {
     const render::FrameSnapshot snapshot = pile();
-    std::vector<render::Camera> cameras(5);
-    cameras[0].reset({-0.5f, -0.5f, 0}, {0.5f, 0.5f, 1}, float(width_) / height_);  // the default view
-    cameras[1] = cameras[0];
-    cameras[1].elevation = 1.5f;  // from above
-    cameras[2] = cameras[0];
-    cameras[2].elevation = -0.3f;  // from below the floor
-    cameras[3] = cameras[0];
-    cameras[3].distance = 0.9f;  // close: some spheres are squares, some behind the eye
-    cameras[4] = cameras[0];
-    cameras[4].distance = 6.0f;  // far: spheres of a few pixels
-    cameras.push_back(cameras[0]);  // the default view in full HD
+    struct View {
+        render::Camera camera;
+        glm::ivec2 size{480, 270};  // px
+    };
+    std::vector<View> views(6);
+    views[0].camera.reset({-0.5f, -0.5f, 0}, {0.5f, 0.5f, 1}, 16.0f / 9.0f);  // the default view
+    for (View& view : views) view.camera = views[0].camera;
+    views[1].camera.elevation = 1.5f;   // from above
+    views[2].camera.elevation = -0.3f;  // from below the floor
+    views[3].camera.distance = 0.9f;    // close: some spheres are squares, some behind the eye
+    views[4].camera.distance = 6.0f;    // far: spheres of a few pixels
+    views[5].size = {1920, 1080};       // the default view in full HD: small pixels
     std::size_t mostHidden = 0;
-    for (std::size_t c = 0; c < cameras.size(); ++c) {
-        if (c == cameras.size() - 1) width_ = 1920, height_ = 1080;  // small pixels: the shader's rounding shows
+    for (std::size_t v = 0; v < views.size(); ++v) {
         for (int samples : {0, 4}) {
-            const Drawn all = draw(snapshot, cameras[c], samples, false);
-            const Drawn seen = draw(snapshot, cameras[c], samples, true);
-            EXPECT_EQ(differingPixels(all.image, seen.image), 0) << "camera " << c << ", " << samples << " samples";
+            const Drawn all = draw(snapshot, views[v].camera, views[v].size, samples, false);
+            const Drawn seen = draw(snapshot, views[v].camera, views[v].size, samples, true);
+            EXPECT_EQ(differingPixels(all.image, seen.image), 0) << "view " << v << ", " << samples << " samples";
             EXPECT_LE(seen.spheres, all.spheres);
             if (samples == 0) mostHidden = std::max(mostHidden, all.spheres - seen.spheres);
         }
