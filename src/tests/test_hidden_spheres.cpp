@@ -187,7 +187,7 @@ TEST_F(HiddenSpheresDrawn, LeavingOutTheHiddenSpheresKeepsEveryPixel) {
         render::Camera camera;
         glm::ivec2 size{480, 270};  // px
     };
-    std::vector<View> views(6);
+    std::vector<View> views(8);
     views[0].camera.reset({-0.5f, -0.5f, 0}, {0.5f, 0.5f, 1}, 16.0f / 9.0f);  // the default view
     for (View& view : views) view.camera = views[0].camera;
     views[1].camera.elevation = 1.5f;   // from above
@@ -195,6 +195,13 @@ TEST_F(HiddenSpheresDrawn, LeavingOutTheHiddenSpheresKeepsEveryPixel) {
     views[3].camera.distance = 0.9f;    // close: some spheres are squares, some behind the eye
     views[4].camera.distance = 6.0f;    // far: spheres of a few pixels
     views[5].size = {1920, 1080};       // the default view in full HD: small pixels
+    // From 100 m through a narrow lens, the pile filling the frame: far from the eye, where
+    // single precision in the fragment shader has the least to spare.
+    views[6].camera.distance = 100.0f;
+    views[6].camera.fovY = 0.012f;  // rad
+    views[7].camera.distance = 40.0f;  // spheres of 1-3 px in full HD
+    views[7].camera.fovY = 0.25f;
+    views[7].size = {1920, 1080};
     std::size_t mostHidden = 0;
     for (std::size_t v = 0; v < views.size(); ++v) {
         for (int samples : {0, 4}) {
