@@ -328,8 +328,8 @@ void UiOverlay::layout(Simulation& simulation) {
     if (!renderer_.error().empty()) throw std::runtime_error("ImGui: " + renderer_.error());
     ImGui::NewFrame();
     panelPixels_ = ui::panelWidth(panel_, ImGui::GetIO().DisplaySize.x);
-    ui::Readouts readouts = makeReadouts(simulation, 0.0, 0.0);
-    readouts.stepMs = 0.0;  // wall time: it would make equal runs differ
+    // No wall times: they would make equal runs differ.
+    ui::Readouts readouts = makeReadouts(simulation, ui::FrameTimes{});
     ui::PanelActions actions = ui::drawControlPanel(
         simulation.editableScene(), simulation.timeScale, readouts, panel_, presets_);
     ui::drawReadouts(readouts, actions);

@@ -57,11 +57,9 @@ std::string restitutionNote(const Simulation& simulation) {
 
 }  // namespace
 
-ui::Readouts makeReadouts(const Simulation& simulation, double fps, double renderMs) {
+ui::Readouts makeReadouts(const Simulation& simulation, const ui::FrameTimes& timing) {
     ui::Readouts r;
-    r.fps = fps;
-    r.renderMs = renderMs;
-    r.stepMs = simulation.lastStepMilliseconds();
+    r.timing = timing;
     r.paused = simulation.paused;
     r.behindRealTime = simulation.behindRealTime();
     r.time = simulation.world().time;

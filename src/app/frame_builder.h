@@ -23,7 +23,7 @@ bool overlaysOnTop(const ui::PanelState& view, std::size_t sphereCount);
 // that it records contacts and trails from the next step on, and only then.
 void buildSnapshot(Simulation& simulation, const ui::PanelState& view, render::FrameSnapshot& snapshot);
 
-ui::Readouts makeReadouts(const Simulation& simulation, double fps, double renderMs);
+ui::Readouts makeReadouts(const Simulation& simulation, const ui::FrameTimes& timing);
 
 // Axis-aligned bounds of the box (or of the spheres when there is none), m, for the camera.
 void sceneBounds(const Simulation& simulation, glm::vec3& lo, glm::vec3& hi);

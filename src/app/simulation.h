@@ -45,7 +45,6 @@ public:
     double wallBudget = std::numeric_limits<double>::infinity();
 
     const physics::StepStats& lastStepStats() const { return lastStats_; }
-    double lastStepMilliseconds() const { return lastStepMs_; }  // ms of wall time, one step
     bool behindRealTime() const { return behind_; }
     const History& history() const { return history_; }
     const physics::Diagnostics& diagnostics() const { return diagnostics_; }
@@ -89,7 +88,6 @@ private:
     physics::World world_;
     double accumulator_ = 0.0;  // s of simulated time not yet stepped
     physics::StepStats lastStats_;
-    double lastStepMs_ = 0.0;
     bool behind_ = false;
     History history_;
     physics::Diagnostics diagnostics_;

@@ -70,7 +70,7 @@ private:
     ui::PanelState panel_;
     InteractionInput input_;
     std::vector<std::string> presets_;
-    double fps_ = 0.0, renderMs_ = 0.0;
+    ui::FrameTimes timing_;
     double frameSeconds_ = 0.0;  // s, a running average of the real frame time
     bool screenshotRequested_ = false;
     bool cameraFitted_ = false;  // fitted in the first frame, once the panel's width is known
@@ -260,7 +260,8 @@ void WindowApp::drawScene() {
         session_.appendSelection(k, camera_, snapshots_[k]);
         renderer_.draw(snapshots_[k], camera_, view.x, view.y, view.z, view.w);
     }
-    renderMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    glFinish();  // a software GL draws after the calls return: time the drawing, not the calls
+    timing_.drawMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
 void WindowApp::frame(double dt) {
@@ -273,9 +274,14 @@ void WindowApp::frame(double dt) {
     input_.expireMessage(window_->time());
     handleMouse();
     session_.setCatchEveryStep(input_.tools().explainer);
+    const auto stepping = std::chrono::steady_clock::now();
+    const std::uint64_t stepsBefore = simulation_.world().stepCount;
     session_.advance(dt);
+    const std::uint64_t stepsAfter = simulation_.world().stepCount;
+    timing_.steps = stepsAfter >= stepsBefore ? stepsAfter - stepsBefore : 0;
+    timing_.solverMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - stepping).count();
     drawScene();
-    ui::Readouts readouts = makeReadouts(simulation_, fps_, renderMs_);
+    ui::Readouts readouts = makeReadouts(simulation_, timing_);
     readouts.diagnostics = session_.diagnostics(0);  // measured again after an edit or a step back
     ui::PanelActions actions =
         ui::drawControlPanel(simulation_.editableScene(), simulation_.timeScale, readouts, panel_, presets_);
@@ -313,7 +319,7 @@ int WindowApp::run() {
         const double dt = std::min(now - last, 0.25);  // s; a stall (dragging the window) is not simulated
         // Averaged in time, not in rate, so one near-instant first frame cannot inflate it.
         frameSeconds_ = frames == 0 ? 0.0 : (frames == 1 ? now - last : 0.9 * frameSeconds_ + 0.1 * (now - last));
-        fps_ = frameSeconds_ > 0.0 ? 1.0 / frameSeconds_ : 0.0;
+        timing_.fps = frameSeconds_ > 0.0 ? 1.0 / frameSeconds_ : 0.0;
         last = now;
         const bool lastFrame = options_.frames > 0 && frames + 1 >= options_.frames;
         frame(dt);

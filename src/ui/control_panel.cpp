@@ -154,8 +154,11 @@ void sceneSection(scenes::Scene& scene, PanelState& state, const std::vector<std
 
 void readoutsBody(const Readouts& r, PanelActions& actions) {
     const physics::Diagnostics& d = r.diagnostics;
-    if (r.fps > 0.0) {
-        ImGui::Text("%.0f FPS   draw %.1f ms   step %.2f ms", r.fps, r.renderMs, r.stepMs);
+    if (r.timing.fps > 0.0) {
+        ImGui::Text("%.0f FPS   draw %.1f ms", r.timing.fps, r.timing.drawMs);
+        ImGui::Text("solver %.1f ms for %llu step%s", r.timing.solverMs, static_cast<unsigned long long>(r.timing.steps), r.timing.steps == 1 ? "" : "s");
+        tooltip("Wall time of the last frame: drawing the scene until the GL has finished it, and "
+                "the solver's steps (h / substeps each).");
     } else {
         ImGui::TextDisabled("FPS and timings: not measured here");  // capture: equal runs, equal images
     }

@@ -35,11 +35,18 @@ struct PanelState {
     int presetIndex = -1;      // into the preset list; -1: a file
 };
 
+// Where the last frame's wall time went. A software GL draws after the draw calls
+// return, so drawMs runs until the GL has finished the scene.
+struct FrameTimes {
+    double fps = 0.0;       // 0: timings are not shown (capture mode, for reproducible images)
+    double solverMs = 0.0;  // ms stepping, every step of the frame (and of a comparison run)
+    std::uint64_t steps = 0;  // solver steps (h / substeps each) run in the frame
+    double drawMs = 0.0;    // ms from the first draw call until the GL has finished the scene
+};
+
 // What the app shows in the readouts; plain numbers, filled each frame.
 struct Readouts {
-    double fps = 0.0;       // 0: timings are not shown (capture mode, for reproducible images)
-    double renderMs = 0.0;  // ms to draw the scene, CPU side
-    double stepMs = 0.0;    // ms of wall time for the last step
+    FrameTimes timing;
     bool paused = false;
     bool behindRealTime = false;
     double time = 0.0;      // s, simulated
