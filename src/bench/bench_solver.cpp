@@ -13,6 +13,8 @@
 #include <cstdlib>
 #include <cstring>
 #include <map>
+#include <numeric>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -30,6 +32,8 @@ struct Options {
     double warmUp = 1.5;  // s simulated before timing: the pile has landed
     double block = 0.5;   // s of wall time per timed repetition (at least one step)
     int repetitions = 3;
+    bool mixNumbers = false;  // shuffle the spheres' numbers after the warm-up
+    bool chains = false;      // print how much of a pass could run side by side
 };
 
 const char* const kUsage =
@@ -41,7 +45,11 @@ const char* const kUsage =
     "  --k K          passes (default 4)\n"
     "  --order NAME   pair order: index, reversed or shuffled (default index)\n"
     "  --warm-up S    simulated seconds before timing (default 1.5)\n"
-    "  --reps R       timed repetitions (default 3)\n";
+    "  --reps R       timed repetitions (default 3)\n"
+    "  --mix-numbers  after the warm-up, shuffle the spheres' numbers (the same places and\n"
+    "                 speeds): memory visited out of order, as in a gas that has run long\n"
+    "  --chains       also print, per N, how much of a pass could run side by side with\n"
+    "                 the same result (chains of pairs that share a sphere)\n";
 
 [[noreturn]] void usageError(const std::string& why) {
     std::fprintf(stderr, "spheres_bench_solver: %s\n%s", why.c_str(), kUsage);
@@ -67,6 +75,10 @@ Options parseOptions(int argc, char** argv) {
             o.repetitions = 2;
             continue;
         }
+        if (option == "--mix-numbers" || option == "--chains") {
+            (option == "--chains" ? o.chains : o.mixNumbers) = true;
+            continue;
+        }
         if (k + 1 >= argc) usageError(option + ": expected a value after it");
         const char* value = argv[++k];
         if (option == "--n") o.counts = countsFrom(option, value);
@@ -88,6 +100,60 @@ scenes::Scene pileOf(int count, const Options& options, int threads) {
     return scene;
 }
 
+// The same spheres under shuffled numbers: sphere k takes the place, speed, radius and
+// mass of sphere order[k]. Neighbours in space are then far apart in memory.
+physics::World withNumbersShuffled(const physics::World& world) {
+    std::vector<std::size_t> order(world.size());
+    std::iota(order.begin(), order.end(), std::size_t(0));
+    std::shuffle(order.begin(), order.end(), std::mt19937_64(world.seed));
+    physics::World mixed = world;
+    for (std::size_t k = 0; k < world.size(); ++k) {
+        mixed.position[k] = world.position[order[k]];
+        mixed.velocity[k] = world.velocity[order[k]];
+        mixed.radius[k] = world.radius[order[k]];
+        mixed.mass[k] = world.mass[order[k]];
+        mixed.contactState[k] = world.contactState[order[k]];
+    }
+    mixed.workspace = physics::Workspace{};  // its pairs and caches name the old numbers
+    return mixed;
+}
+
+// How much of a pass could run side by side without changing its result. A pair must
+// come after every earlier pair (in pass order) that shares a sphere with it; its level
+// is one more than theirs. Pairs of one level share no sphere. Over the whole pass, and
+// inside windows of consecutive pairs (whose spheres stay in the caches): pairs per level.
+std::string chainsRow(const physics::World& world, int count) {
+    const std::vector<physics::SpherePair>& pairs = world.workspace.visitOrder;
+    std::vector<std::uint32_t> level(world.size(), 0), window(world.size(), 0);
+    std::uint32_t longest = 0;
+    for (const physics::SpherePair& pair : pairs) {
+        const std::uint32_t l = 1 + std::max(level[pair.i], level[pair.j]);
+        level[pair.i] = level[pair.j] = l;
+        longest = std::max(longest, l);
+    }
+    char cell[96];
+    std::snprintf(cell, sizeof cell, "| %s | %zu | %u | %.0f |", bench::grouped(count).c_str(), pairs.size(),
+                  longest, double(pairs.size()) / std::max(1u, longest));
+    std::string row = cell;
+    for (std::size_t size : {64, 256, 1024}) {
+        std::size_t levels = 0;
+        for (std::size_t first = 0; first < pairs.size(); first += size) {
+            const std::size_t end = std::min(pairs.size(), first + size);
+            std::uint32_t top = 0;
+            for (std::size_t k = first; k < end; ++k) window[pairs[k].i] = window[pairs[k].j] = 0;
+            for (std::size_t k = first; k < end; ++k) {
+                const std::uint32_t l = 1 + std::max(window[pairs[k].i], window[pairs[k].j]);
+                window[pairs[k].i] = window[pairs[k].j] = l;
+                top = std::max(top, l);
+            }
+            levels += top;
+        }
+        std::snprintf(cell, sizeof cell, " %.1f |", double(pairs.size()) / double(std::max<std::size_t>(1, levels)));
+        row += cell;
+    }
+    return row;
+}
+
 struct Run {
     std::vector<double> seconds;  // per repetition
     std::uint64_t builds = 0;
@@ -98,6 +164,7 @@ struct Row {
     int count = 0;
     double solverSteps = 0.0;
     std::map<int, Run> byThreads;
+    std::string chains;  // --chains: a row of that table
 };
 
 Row measure(int count, const Options& options) {
@@ -108,10 +175,16 @@ Row measure(int count, const Options& options) {
     const int warmUpSteps = int(std::lround(options.warmUp / scene.params.timeStep));
     for (int k = 0; k < warmUpSteps; ++k) physics::step(start, scene.params);
     const double perStep = bench::secondsSince(warmUpStart) / std::max(1, warmUpSteps);
+    if (options.mixNumbers) start = withNumbersShuffled(start);
     const int steps = std::max(1, int(options.block / std::max(perStep, 1e-9)));
 
     Row row;
     row.count = count;
+    if (options.chains) {
+        physics::World stepped = start;
+        physics::step(stepped, scene.params);  // the candidate pairs of this state, in pass order
+        row.chains = chainsRow(stepped, count);
+    }
     row.solverSteps = double(steps) * scene.params.substeps;
     for (int rep = 0; rep < options.repetitions; ++rep) {
         for (int threads : options.threads) {
@@ -133,15 +206,18 @@ Row measure(int count, const Options& options) {
 
 int main(int argc, char** argv) {
     const Options options = parseOptions(argc, argv);
-    std::printf("Pile (%s), K = %d, order %s, %s; load average %s at the start\n\n",
+    std::printf("Pile (%s), K = %d, order %s%s, %s; load average %s at the start\n\n",
                 bench::presetContaining("pile").c_str(), options.passes, options.order.c_str(),
+                options.mixNumbers ? ", numbers shuffled after the warm-up" : "",
                 bench::cpuModel().c_str(), bench::loadAverage().c_str());
     std::printf("| N | threads | ms per solver step | ns per sphere-step | × one thread | rebuilds | hash |\n");
     std::printf("|---:|---:|---:|---:|---:|---:|---|\n");
     std::map<int, std::vector<double>> counts, times;  // by threads
+    std::vector<std::string> chains;
     bool same = true;
     for (int count : options.counts) {
         const Row row = measure(count, options);
+        chains.push_back(row.chains);
         const double baseline = bench::median(row.byThreads.begin()->second.seconds);
         const std::uint64_t firstHash = row.byThreads.begin()->second.hash;
         for (const auto& [threads, run] : row.byThreads) {
@@ -160,6 +236,13 @@ int main(int argc, char** argv) {
     std::printf("\nlog-log slope of time per step against N:");
     for (const auto& [threads, t] : times) {
         std::printf(" %.3f (%d thread%s)", bench::logLogSlope(counts[threads], t), threads, threads > 1 ? "s" : "");
+    }
+    if (options.chains) {
+        std::printf("\nPairs that could be visited side by side with the same result, in the pass order of\n"
+                    "the first timed step (a pair comes after every earlier pair that shares a sphere with it):\n\n"
+                    "| N | candidate pairs | longest chain | pairs per level | per level, windows of 64 | 256 | 1024 |\n"
+                    "|---:|---:|---:|---:|---:|---:|---:|\n");
+        for (const std::string& row : chains) std::printf("%s\n", row.c_str());
     }
     std::printf("\n%s\n", same ? "every thread count reached the same state" : "THREADS CHANGED THE RESULT");
     return same ? 0 : 1;
