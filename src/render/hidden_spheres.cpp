@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <thread>
 
 #include <glm/geometric.hpp>
+
+#include "physics/thread_team.h"
 
 namespace render {
 namespace {
@@ -25,6 +28,28 @@ constexpr float kEdgeMarginSampledPixels = 1.0f;
 constexpr float kSpanSlackPixels = 0.02f;
 // Below one sphere in this many covering a pixel whole, none is tested.
 constexpr std::size_t kFewestCovering = 8;
+
+// From this many spheres on, the finder runs on the thread team, each thread taking
+// this many tasks as they come (bands of rows hold more or fewer spheres).
+constexpr std::size_t kParallelMinSpheres = 8192;
+constexpr int kTasksPerThread = 4;
+constexpr int kMostThreads = 8;
+
+int threadsFor(std::size_t spheres) {
+    static const int cores = int(std::thread::hardware_concurrency());
+    return spheres < kParallelMinSpheres ? 1 : std::clamp(cores, 1, kMostThreads);
+}
+
+int tasksFor(int threads) { return threads == 1 ? 1 : kTasksPerThread * threads; }
+
+// [0, n) cut into tasksFor(threads) ranges: task(t, begin, end) for range t, on the team.
+template <class Task>
+void forEachRange(int threads, std::size_t n, const Task& task) {
+    const auto tasks = std::size_t(tasksFor(threads));
+    physics::runTasks(threads, int(tasks), [&](int t) {
+        task(t, n * std::size_t(t) / tasks, n * std::size_t(t + 1) / tasks);
+    });
+}
 
 // The pixels [first, end) of a row (or the rows of a column) of `size` whose centre
 // (i + 0.5) lies within [lo, hi] px.
@@ -83,25 +108,46 @@ HiddenSphereFinder::Disc HiddenSphereFinder::discOf(const glm::vec3& c, float re
 // whole; the ray meets the sphere there at less than |c| - sqrt(r^2 - inner^2) from
 // the eye. Depths in this file are distances from the eye along the pixel's ray:
 // at one pixel they order fragments as the depth buffer does.
-// Returns whether it covered any pixel.
-bool HiddenSphereFinder::cover(const ViewSphere& sphere, float edgeMarginPixels, float pixelSize) {
+HiddenSphereFinder::Cover HiddenSphereFinder::coverOf(const ViewSphere& sphere, float edgeMarginPixels,
+                                                      float pixelSize) const {
+    Cover cover;
     const glm::vec3 c = sphere.center;                                  // m
     const float distance = glm::length(c);                              // m
     const float inner = sphere.radius - edgeMarginPixels * distance * pixelSize;  // m
-    if (inner <= 0.0f) return false;
-    const float depth = distance - std::sqrt(sphere.radius * sphere.radius - inner * inner) +
-                        kShaderDepthNoise * distance;  // m
-    const Disc disc = discOf(c, inner, pixelSize);
-    if (!(disc.inside > 0.0f)) return false;
-    const Span rows = pixelsBetween(disc.center.y - disc.inside, disc.center.y + disc.inside, height_);
-    bool covered = false;
-    for (int y = rows.first; y < rows.end; ++y) {
-        float* row = &nearestCover_[std::size_t(y) * std::size_t(width_)];
-        const Span span = rowSpan(y, disc.center, disc.inside, width_);
-        for (int x = span.first; x < span.end; ++x) row[x] = std::min(row[x], depth);
-        covered = covered || span.first < span.end;
+    if (inner <= 0.0f) return cover;
+    cover.depth = distance - std::sqrt(sphere.radius * sphere.radius - inner * inner) +
+                  kShaderDepthNoise * distance;  // m
+    cover.disc = discOf(c, inner, pixelSize);
+    if (!(cover.disc.inside > 0.0f)) return cover;
+    const Span rows = pixelsBetween(cover.disc.center.y - cover.disc.inside, cover.disc.center.y + cover.disc.inside,
+                                    height_);
+    cover.firstRow = rows.first;
+    cover.endRow = rows.end;
+    return cover;
+}
+
+bool HiddenSphereFinder::coversAPixel(const Cover& cover) const {
+    for (int y = cover.firstRow; y < cover.endRow; ++y) {
+        const Span span = rowSpan(y, cover.disc.center, cover.disc.inside, width_);
+        if (span.first < span.end) return true;
     }
-    return covered;
+    return false;
+}
+
+// nearestCover_ on rows [firstRow, endRow): the nearest of the covers there.
+void HiddenSphereFinder::coverRows(int firstRow, int endRow) {
+    std::fill(nearestCover_.begin() + std::ptrdiff_t(firstRow) * width_,
+              nearestCover_.begin() + std::ptrdiff_t(endRow) * width_, INFINITY);
+    for (const std::vector<Cover>& covers : covers_) {
+        for (const Cover& cover : covers) {
+            const int end = std::min(cover.endRow, endRow);
+            for (int y = std::max(cover.firstRow, firstRow); y < end; ++y) {
+                float* row = &nearestCover_[std::size_t(y) * std::size_t(width_)];
+                const Span span = rowSpan(y, cover.disc.center, cover.disc.inside, width_);
+                for (int x = span.first; x < span.end; ++x) row[x] = std::min(row[x], cover.depth);
+            }
+        }
+    }
 }
 
 // Whether every pixel where the sphere may leave a fragment is covered in front of
@@ -130,11 +176,9 @@ bool HiddenSphereFinder::behindCover(const ViewSphere& sphere, float edgeMarginP
 
 // Tiles of kTile x kTile pixels: the farthest cover of each, so that most hidden
 // spheres are found hidden by the few tiles under them, without their pixels.
-void HiddenSphereFinder::findFarthestCoverOfTiles() {
-    tilesX_ = (width_ + kTile - 1) / kTile;
-    tilesY_ = (height_ + kTile - 1) / kTile;
-    farthestCover_.assign(std::size_t(tilesX_) * std::size_t(tilesY_), 0.0f);
-    for (int y = 0; y < height_; ++y) {
+// Rows of tiles [firstTileRow, endTileRow); farthestCover_ starts at 0.
+void HiddenSphereFinder::findFarthestCoverOfTiles(int firstTileRow, int endTileRow) {
+    for (int y = firstTileRow * kTile; y < std::min(endTileRow * kTile, height_); ++y) {
         const float* row = &nearestCover_[std::size_t(y) * std::size_t(width_)];
         float* tiles = &farthestCover_[std::size_t(y / kTile) * std::size_t(tilesX_)];
         for (int x = 0; x < width_; ++x) tiles[x / kTile] = std::max(tiles[x / kTile], row[x]);
@@ -154,31 +198,56 @@ bool HiddenSphereFinder::tilesBehindCover(const Disc& disc, float nearest) const
     return true;
 }
 
+// covers_ <- where each sphere covers whole pixels: only spheres drawn whole between
+// the near and far planes hide others. Returns how many cover a pixel.
+std::size_t HiddenSphereFinder::findCovers(const std::vector<ViewSphere>& spheres, const FrameContext& frame,
+                                           float edgeMarginPixels, int threads) {
+    covers_.resize(std::size_t(tasksFor(threads)));
+    forEachRange(threads, spheres.size(), [&](int t, std::size_t begin, std::size_t end) {
+        std::vector<Cover>& covers = covers_[std::size_t(t)];
+        covers.clear();
+        for (std::size_t k = begin; k < end; ++k) {
+            const ViewSphere& sphere = spheres[k];
+            const float front = -sphere.center.z - sphere.radius, back = -sphere.center.z + sphere.radius;  // m
+            if (!(front > frame.nearPlane * 1.01f && back < frame.farPlane * 0.99f)) continue;
+            const Cover cover = coverOf(sphere, edgeMarginPixels, frame.pixelSize);
+            if (coversAPixel(cover)) covers.push_back(cover);
+        }
+    });
+    std::size_t covering = 0;
+    for (const std::vector<Cover>& covers : covers_) covering += covers.size();
+    return covering;
+}
+
 void HiddenSphereFinder::find(std::vector<ViewSphere>& spheres, const FrameContext& frame,
                               bool multisampled, int depthBits) {
     for (ViewSphere& sphere : spheres) sphere.hidden = false;
     width_ = int(frame.viewportSize.x);
     height_ = int(frame.viewportSize.y);
     if (width_ <= 0 || height_ <= 0 || depthBits <= 0) return;
-    nearestCover_.assign(std::size_t(width_) * std::size_t(height_), INFINITY);
+    const int threads = threadsFor(spheres.size());
     const float margin = multisampled ? kEdgeMarginSampledPixels : kEdgeMarginPixels;
-    std::size_t covering = 0;  // spheres that cover a pixel whole
-    for (const ViewSphere& sphere : spheres) {
-        // Only spheres drawn whole between the near and far planes hide others.
-        const float front = -sphere.center.z - sphere.radius, back = -sphere.center.z + sphere.radius;  // m
-        if (front > frame.nearPlane * 1.01f && back < frame.farPlane * 0.99f) {
-            covering += cover(sphere, margin, frame.pixelSize);
-        }
-    }
     // Spheres too small on the screen to cover a pixel whole (a million under MSAA):
     // few could be hidden, and testing them all would cost more than it saves.
-    if (covering < spheres.size() / kFewestCovering) return;
-    findFarthestCoverOfTiles();
+    if (findCovers(spheres, frame, margin, threads) < spheres.size() / kFewestCovering) return;
+    nearestCover_.resize(std::size_t(width_) * std::size_t(height_));
+    forEachRange(threads, std::size_t(height_), [&](int, std::size_t begin, std::size_t end) {
+        coverRows(int(begin), int(end));
+    });
+    tilesX_ = (width_ + kTile - 1) / kTile;
+    tilesY_ = (height_ + kTile - 1) / kTile;
+    farthestCover_.assign(std::size_t(tilesX_) * std::size_t(tilesY_), 0.0f);
+    forEachRange(threads, std::size_t(tilesY_), [&](int, std::size_t begin, std::size_t end) {
+        findFarthestCoverOfTiles(int(begin), int(end));
+    });
     // A depth d is stored as about 1 - near / d in steps of 2^-depthBits: d^2 times this, m.
     const float depthQuantum = std::ldexp(1.0f, -depthBits) / frame.nearPlane;  // 1/m
-    for (ViewSphere& sphere : spheres) {
-        sphere.hidden = sphere.pointSprite && behindCover(sphere, margin, frame.pixelSize, depthQuantum);
-    }
+    forEachRange(threads, spheres.size(), [&](int, std::size_t begin, std::size_t end) {
+        for (std::size_t k = begin; k < end; ++k) {
+            ViewSphere& sphere = spheres[k];
+            sphere.hidden = sphere.pointSprite && behindCover(sphere, margin, frame.pixelSize, depthQuantum);
+        }
+    });
 }
 
 }  // namespace render

@@ -10,6 +10,11 @@
 // sprite is hidden when every pixel where it may leave a fragment holds a distance
 // surely in front of its nearest point. Its fragments would all fail
 // the depth test: the image is the same, pixel for pixel, with or without it.
+//
+// From a few thousand spheres on, it runs on the solver's thread team (the GL's own
+// threads are idle while it runs): covering by bands of rows, testing by ranges of
+// spheres. Every pixel keeps the nearest cover, so the result is the same on any
+// number of threads.
 #include <cstdint>
 #include <vector>
 
@@ -46,13 +51,25 @@ class HiddenSphereFinder {
         float inside = 0.0f, outside = 0.0f;
     };
     Disc discOf(const glm::vec3& c, float reach, float pixelSize) const;
-    bool cover(const ViewSphere& sphere, float edgeMarginPixels, float pixelSize);
+    // Where a sphere covers whole pixels: inside `disc`, rows [firstRow, endRow), the
+    // distance `depth` (m) along each pixel's ray. No rows: it covers none.
+    struct Cover {
+        Disc disc;
+        float depth = 0.0f;
+        int firstRow = 0, endRow = 0;
+    };
+    Cover coverOf(const ViewSphere& sphere, float edgeMarginPixels, float pixelSize) const;
+    bool coversAPixel(const Cover& cover) const;
+    std::size_t findCovers(const std::vector<ViewSphere>& spheres, const FrameContext& frame,
+                           float edgeMarginPixels, int threads);
+    void coverRows(int firstRow, int endRow);
     bool behindCover(const ViewSphere& sphere, float edgeMarginPixels, float pixelSize,
                      float depthQuantum) const;
-    void findFarthestCoverOfTiles();
+    void findFarthestCoverOfTiles(int firstTileRow, int endTileRow);
     bool tilesBehindCover(const Disc& disc, float nearest) const;
 
     int width_ = 0, height_ = 0;  // px, the viewport
+    std::vector<std::vector<Cover>> covers_;  // per range of spheres: those that cover a pixel
     // Per pixel (row 0 at the bottom): the distance from the eye along the pixel's ray
     // (m) in front of which some sphere covers the whole pixel; +infinity where none does.
     std::vector<float> nearestCover_;

@@ -113,9 +113,9 @@ TEST(HiddenSpheres, EdgesByCoverageNeedMoreOfTheSphereInFront) {
 
 // ------------------------------------------------------------ drawn, headless
 
-// A pile in a box: a jittered lattice of 6 000 spheres, radii 1 to 4 cm, some
-// overlapping, coloured by index.
-render::FrameSnapshot pile() {
+// A pile in a box: a jittered lattice of across x across x high spheres (6 250 by
+// default), radii 1 to 4 cm at the default spacing, some overlapping, coloured by index.
+render::FrameSnapshot pile(int across = 25, int high = 10) {
     render::FrameSnapshot snapshot;
     const float half = 0.5f;  // m, half the box
     const std::vector<glm::vec3> normals{{0, 0, 1}, {1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, -1}};
@@ -128,8 +128,8 @@ render::FrameSnapshot pile() {
         state = state * 1664525u + 1013904223u;
         return float(state >> 8) / float(1u << 24);
     };
-    const int across = 25, high = 10;
     const float spacing = 2.0f * half / float(across);  // m
+    const float radiusScale = 25.0f / float(across);
     for (int k = 0; k < high; ++k) {
         for (int j = 0; j < across; ++j) {
             for (int i = 0; i < across; ++i) {
@@ -137,7 +137,8 @@ render::FrameSnapshot pile() {
                 const glm::vec3 centre = glm::vec3(-half + (i + 0.5f) * spacing, -half + (j + 0.5f) * spacing,
                                                    (k + 0.5f) * spacing) + 0.3f * spacing * jitter;
                 const auto id = std::uint8_t(i * 7 + j * 13 + k * 29);
-                snapshot.addSphere(centre, 0.01f + 0.03f * random(), {id, std::uint8_t(255 - id), 128, 255});
+                snapshot.addSphere(centre, radiusScale * (0.01f + 0.03f * random()),
+                                   {id, std::uint8_t(255 - id), 128, 255});
             }
         }
     }
@@ -214,6 +215,29 @@ TEST_F(HiddenSpheresDrawn, LeavingOutTheHiddenSpheresKeepsEveryPixel) {
     }
     // From above only the top layer or two show: most of the pile is left out.
     EXPECT_GT(mostHidden, snapshot.sphereCount() / 2);
+}
+
+// From 8 192 spheres on the finder runs on the thread team: bands of rows, ranges of
+// spheres. A pile of 20 000 from the default view and from above.
+TEST_F(HiddenSpheresDrawn, OnSeveralThreadsEveryPixelIsKeptToo) {
+    const render::FrameSnapshot snapshot = pile(50, 8);
+    ASSERT_GE(snapshot.sphereCount(), 8192u);
+    render::Camera camera;
+    camera.reset({-0.5f, -0.5f, 0}, {0.5f, 0.5f, 1}, 16.0f / 9.0f);
+    for (float elevation : {camera.elevation, 1.5f}) {
+        camera.elevation = elevation;
+        for (int samples : {0, 4}) {
+            const Drawn all = draw(snapshot, camera, {640, 360}, samples, false);
+            const Drawn seen = draw(snapshot, camera, {640, 360}, samples, true);
+            EXPECT_EQ(differingPixels(all.image, seen.image), 0) << "elevation " << elevation << ", " << samples << " samples";
+            // Without samples most of the pile is left out (under MSAA its spheres of a few
+            // pixels are too small to hide others).
+            if (samples == 0) {
+                EXPECT_LT(seen.spheres, all.spheres / 2) << "elevation " << elevation;
+            }
+            EXPECT_LE(seen.spheres, all.spheres);
+        }
+    }
 }
 
 }  // namespace
