@@ -260,7 +260,9 @@ void WindowApp::drawScene() {
         session_.appendSelection(k, camera_, snapshots_[k]);
         renderer_.draw(snapshots_[k], camera_, view.x, view.y, view.z, view.w);
     }
-    glFinish();  // a software GL draws after the calls return: time the drawing, not the calls
+    // A software GL draws after the calls return: time the drawing, not the calls. (On a
+    // GPU this costs the overlap of one frame's GL work with the next one's CPU work.)
+    glFinish();
     timing_.drawMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
@@ -278,8 +280,8 @@ void WindowApp::frame(double dt) {
     const std::uint64_t stepsBefore = simulation_.world().stepCount;
     session_.advance(dt);
     const std::uint64_t stepsAfter = simulation_.world().stepCount;
-    timing_.steps = stepsAfter >= stepsBefore ? stepsAfter - stepsBefore : 0;
-    timing_.solverMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - stepping).count();
+    timing_.stepsThisFrame = stepsAfter >= stepsBefore ? stepsAfter - stepsBefore : 0;
+    timing_.steppingMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - stepping).count();
     drawScene();
     ui::Readouts readouts = makeReadouts(simulation_, timing_);
     readouts.diagnostics = session_.diagnostics(0);  // measured again after an edit or a step back

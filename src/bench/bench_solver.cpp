@@ -182,7 +182,7 @@ Row measure(int count, const Options& options) {
     row.count = count;
     if (options.chains) {
         physics::World stepped = start;
-        physics::step(stepped, scene.params);  // the candidate pairs of this state, in pass order
+        physics::step(stepped, scene.params);  // its last substep's candidate pairs, in pass order
         row.chains = chainsRow(stepped, count);
     }
     row.solverSteps = double(steps) * scene.params.substeps;
@@ -239,7 +239,8 @@ int main(int argc, char** argv) {
     }
     if (options.chains) {
         std::printf("\nPairs that could be visited side by side with the same result, in the pass order of\n"
-                    "the first timed step (a pair comes after every earlier pair that shares a sphere with it):\n\n"
+                    "the last substep of one step after the warm-up (a pair comes after every earlier pair\n"
+                    "that shares a sphere with it):\n\n"
                     "| N | candidate pairs | longest chain | pairs per level | per level, windows of 64 | 256 | 1024 |\n"
                     "|---:|---:|---:|---:|---:|---:|---:|\n");
         for (const std::string& row : chains) std::printf("%s\n", row.c_str());

@@ -11,6 +11,8 @@ using TaskFunction = void (*)(const void* context, int task);
 
 // Runs function(context, 0) ... function(context, tasks - 1), each exactly once, on
 // up to `threads` threads (the caller is one of them); returns when all have finished.
+// Calls from several threads take turns (the solver, the renderer's hidden spheres);
+// a task must not call it (it would wait for itself) nor throw.
 void runTasksOnTeam(int threads, int tasks, TaskFunction function, const void* context);
 
 // task(0) ... task(tasks - 1): in order on the caller with one thread or one task,

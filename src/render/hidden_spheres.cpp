@@ -6,6 +6,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "physics/params.h"
 #include "physics/thread_team.h"
 
 namespace render {
@@ -29,14 +30,17 @@ constexpr float kSpanSlackPixels = 0.02f;
 // Below one sphere in this many covering a pixel whole, none is tested.
 constexpr std::size_t kFewestCovering = 8;
 
-// From this many spheres on, the finder runs on the thread team, each thread taking
-// this many tasks as they come (bands of rows hold more or fewer spheres).
+// From this many spheres on, the finder runs on the thread team (unless told a
+// number), each thread taking this many tasks as they come (bands of rows hold more
+// or fewer spheres). Tasks never wait for each other, and none throws: the covers'
+// room is reserved before they run.
 constexpr std::size_t kParallelMinSpheres = 8192;
 constexpr int kTasksPerThread = 4;
 constexpr int kMostThreads = 8;
 
-int threadsFor(std::size_t spheres) {
+int threadsFor(std::size_t spheres, int asked) {
     static const int cores = int(std::thread::hardware_concurrency());
+    if (asked > 0) return std::min(asked, physics::kMostSolverThreads);
     return spheres < kParallelMinSpheres ? 1 : std::clamp(cores, 1, kMostThreads);
 }
 
@@ -202,10 +206,14 @@ bool HiddenSphereFinder::tilesBehindCover(const Disc& disc, float nearest) const
 // the near and far planes hide others. Returns how many cover a pixel.
 std::size_t HiddenSphereFinder::findCovers(const std::vector<ViewSphere>& spheres, const FrameContext& frame,
                                            float edgeMarginPixels, int threads) {
-    covers_.resize(std::size_t(tasksFor(threads)));
+    const std::size_t tasks = std::size_t(tasksFor(threads));
+    covers_.resize(tasks);
+    for (std::size_t t = 0; t < tasks; ++t) {
+        covers_[t].clear();
+        covers_[t].reserve(spheres.size() * (t + 1) / tasks - spheres.size() * t / tasks);
+    }
     forEachRange(threads, spheres.size(), [&](int t, std::size_t begin, std::size_t end) {
         std::vector<Cover>& covers = covers_[std::size_t(t)];
-        covers.clear();
         for (std::size_t k = begin; k < end; ++k) {
             const ViewSphere& sphere = spheres[k];
             const float front = -sphere.center.z - sphere.radius, back = -sphere.center.z + sphere.radius;  // m
@@ -220,12 +228,12 @@ std::size_t HiddenSphereFinder::findCovers(const std::vector<ViewSphere>& sphere
 }
 
 void HiddenSphereFinder::find(std::vector<ViewSphere>& spheres, const FrameContext& frame,
-                              bool multisampled, int depthBits) {
+                              bool multisampled, int depthBits, int threadsAsked) {
     for (ViewSphere& sphere : spheres) sphere.hidden = false;
     width_ = int(frame.viewportSize.x);
     height_ = int(frame.viewportSize.y);
     if (width_ <= 0 || height_ <= 0 || depthBits <= 0) return;
-    const int threads = threadsFor(spheres.size());
+    const int threads = threadsFor(spheres.size(), threadsAsked);
     const float margin = multisampled ? kEdgeMarginSampledPixels : kEdgeMarginPixels;
     // Spheres too small on the screen to cover a pixel whole (a million under MSAA):
     // few could be hidden, and testing them all would cost more than it saves.

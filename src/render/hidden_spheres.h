@@ -38,9 +38,10 @@ class HiddenSphereFinder {
   public:
     // Sets `hidden` on the point-sprite spheres that no pixel can show. multisampled:
     // the target has samples and edges use alpha to coverage; depthBits: of the
-    // target's depth buffer (0: none, nothing is hidden).
+    // target's depth buffer (0: none, nothing is hidden); threads: 0 for the hardware's
+    // (one below a few thousand spheres). The result is the same on any number.
     void find(std::vector<ViewSphere>& spheres, const FrameContext& frame, bool multisampled,
-              int depthBits);
+              int depthBits, int threads = 0);
 
   private:
     // Circles on the screen around the projection of a centre (px, from the viewport's

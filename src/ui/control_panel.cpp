@@ -156,9 +156,11 @@ void readoutsBody(const Readouts& r, PanelActions& actions) {
     const physics::Diagnostics& d = r.diagnostics;
     if (r.timing.fps > 0.0) {
         ImGui::Text("%.0f FPS   draw %.1f ms", r.timing.fps, r.timing.drawMs);
-        ImGui::Text("solver %.1f ms for %llu step%s", r.timing.solverMs, static_cast<unsigned long long>(r.timing.steps), r.timing.steps == 1 ? "" : "s");
+        ImGui::Text("stepping %.1f ms (%llu step%s)", r.timing.steppingMs,
+                    static_cast<unsigned long long>(r.timing.stepsThisFrame), r.timing.stepsThisFrame == 1 ? "" : "s");
         tooltip("Wall time of the last frame: drawing the scene until the GL has finished it, and "
-                "the solver's steps (h / substeps each).");
+                "stepping: the solver's steps (h / substeps each), a side-by-side run's too, and "
+                "the measurements after them.");
     } else {
         ImGui::TextDisabled("FPS and timings: not measured here");  // capture: equal runs, equal images
     }

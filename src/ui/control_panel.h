@@ -39,9 +39,13 @@ struct PanelState {
 // return, so drawMs runs until the GL has finished the scene.
 struct FrameTimes {
     double fps = 0.0;       // 0: timings are not shown (capture mode, for reproducible images)
-    double solverMs = 0.0;  // ms stepping, every step of the frame (and of a comparison run)
-    std::uint64_t steps = 0;  // solver steps (h / substeps each) run in the frame
-    double drawMs = 0.0;    // ms from the first draw call until the GL has finished the scene
+    // ms advancing the runs: every step of the frame, a side-by-side run's too, and the
+    // measurements after them.
+    double steppingMs = 0.0;
+    std::uint64_t stepsThisFrame = 0;  // solver steps (h / substeps each) of the main run
+    // ms from the start of drawing (snapshots, hidden spheres, draw calls) until the GL
+    // has finished the scene.
+    double drawMs = 0.0;
 };
 
 // What the app shows in the readouts; plain numbers, filled each frame.
