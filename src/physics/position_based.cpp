@@ -51,10 +51,13 @@ StepStats stepPositionBased(World& world, const Params& params, double h) {
     integrateVelocity(world, params, h);  // A
     integratePosition(world, params, h);
     findOrderedPairs(world, params, stats);
-    findWallClearances(world, params);
-    for (int pass = 0; pass < params.passes; ++pass) {
-        particlesVelocityAndPosition(world, params, stats, pass);  // B
-        wallsVelocityAndPosition(world, params, stats, pass);      // C
+    {
+        const StageTimer timer(stats.passesSeconds);
+        findWallClearances(world, params);
+        for (int pass = 0; pass < params.passes; ++pass) {
+            particlesVelocityAndPosition(world, params, stats, pass);  // B
+            wallsVelocityAndPosition(world, params, stats, pass);      // C
+        }
     }
     return stats;
 }

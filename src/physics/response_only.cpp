@@ -14,9 +14,12 @@ StepStats stepResponseOnly(World& world, const Params& params, double h) {
     integrateVelocity(world, params, h);  // A
     integratePosition(world, params, h);
     findOrderedPairs(world, params, stats);
-    findContacts(world, params);  // positions stay put during B
-    for (int pass = 0; pass < params.passes; ++pass) {
-        respondToAllContacts(world, params, stats, pass);  // B
+    {
+        const StageTimer timer(stats.passesSeconds);
+        findContacts(world, params);  // positions stay put during B
+        for (int pass = 0; pass < params.passes; ++pass) {
+            respondToAllContacts(world, params, stats, pass);  // B
+        }
     }
     return stats;
 }

@@ -3,6 +3,7 @@
 // particles"). Internal to the physics library.
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <utility>
@@ -118,13 +119,27 @@ void forEachPairInPassOrder(World& world, const Params& params, StepStats& stats
     for (const StepStats& s : taskStats) stats += s;
 }
 
+// Adds the wall time (s) from its construction to the end of its scope to `seconds`:
+// the stages' profile in StepStats.
+class StageTimer {
+  public:
+    explicit StageTimer(double& seconds) : seconds_(seconds) {}
+    ~StageTimer() { seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
+    StageTimer(const StageTimer&) = delete;
+    StageTimer& operator=(const StageTimer&) = delete;
+
+  private:
+    double& seconds_;
+    std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
 // Field forces, semi-implicit Euler (slide 2): v <- v + h g, then p <- p + h v.
 void integrateVelocity(World& world, const Params& params, double h);
 void integratePosition(World& world, const Params& params, double h);
 
 // Fills world.workspace.visitOrder with the candidate pairs in the order the passes
 // visit them (index, reversed, or shuffled with the world's seed and step count), and
-// with several threads shares them out.
+// with several threads shares them out. Timed as StepStats::broadPhaseSeconds.
 void findOrderedPairs(World& world, const Params& params, StepStats& stats);
 
 // Narrow phase, slide 9: the pair touches when |p1 - p2| <= r1 + r2.

@@ -157,6 +157,8 @@ StepStats& StepStats::operator+=(const StepStats& o) {
     wallContacts += o.wallContacts;
     collisions += o.collisions;
     staticContacts += o.staticContacts;
+    broadPhaseSeconds += o.broadPhaseSeconds;
+    passesSeconds += o.passesSeconds;
     return *this;
 }
 
@@ -171,6 +173,7 @@ void integratePosition(World& world, const Params& params, double h) {
 }
 
 void findOrderedPairs(World& world, const Params& params, StepStats& stats) {
+    const StageTimer timer(stats.broadPhaseSeconds);
     Workspace& ws = world.workspace;
     const int threads = solverThreads(world, params);
     const Extent extent = extentOf(world);

@@ -16,6 +16,11 @@ struct StepStats {
     std::uint64_t wallContacts = 0;    // sphere-plane contacts found in the first pass
     std::uint64_t collisions = 0;      // contacts that bounced (speed above epsilon), all passes
     std::uint64_t staticContacts = 0;  // contacts handled as static (slide 13), all passes
+    // s of wall time (a profile, not part of the result): finding the candidate pairs
+    // (grid or all pairs, then their order), and the collision passes (with what they
+    // find first: contacts, wall clearances, and the velocity method's cancelling).
+    double broadPhaseSeconds = 0.0;
+    double passesSeconds = 0.0;
     StepStats& operator+=(const StepStats& o);
 };
 

@@ -38,11 +38,14 @@ StepStats stepVelocityBased(World& world, const Params& params, double h) {
     StepStats stats;
     integrateVelocity(world, params, h);  // A
     findOrderedPairs(world, params, stats);
-    findContacts(world, params);  // positions stay put until D
-    for (int pass = 0; pass < params.passes; ++pass) {
-        respondToAllContacts(world, params, stats, pass);  // B
+    {
+        const StageTimer timer(stats.passesSeconds);
+        findContacts(world, params);  // positions stay put until D
+        for (int pass = 0; pass < params.passes; ++pass) {
+            respondToAllContacts(world, params, stats, pass);  // B
+        }
+        cancelPenetratingVelocity(world, params);  // C
     }
-    cancelPenetratingVelocity(world, params);  // C
     integratePosition(world, params, h);  // D
     return stats;
 }

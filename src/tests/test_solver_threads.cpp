@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cstdlib>
 #include <map>
 #include <set>
@@ -112,6 +113,24 @@ TEST(SolverThreads, EveryMethodAndOrderReachesTheSameStateOnAnyThreadCount) {
             }
             EXPECT_EQ(hashes.size(), 1u) << method << ", " << order;
             EXPECT_GT(contacts, 2500u) << "the pile has landed";
+        }
+    }
+}
+
+// StepStats' profile: each method times its broad phase and its passes once per
+// solver step, inside the step (together at most the step's wall time), on one thread
+// and on two. (What it measures is not asserted: only that it is a part of the step.)
+TEST(StepProfile, TheBroadPhaseAndThePassesArePartsOfTheStep) {
+    for (const char* method : {"position", "velocity", "response-only"}) {
+        for (const char* threads : {"1", "2"}) {
+            const scenes::Scene scene = pile({std::string("method=") + method, std::string("threads=") + threads});
+            physics::World world = run(scene, 30);  // landing: contacts to resolve
+            const auto start = std::chrono::steady_clock::now();
+            const physics::StepStats stats = physics::step(world, scene.params);
+            const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            EXPECT_GT(stats.broadPhaseSeconds, 0.0) << method << ", " << threads << " threads";
+            EXPECT_GT(stats.passesSeconds, 0.0) << method << ", " << threads << " threads";
+            EXPECT_LE(stats.broadPhaseSeconds + stats.passesSeconds, seconds) << method << ", " << threads << " threads";
         }
     }
 }

@@ -161,6 +161,18 @@ void readoutsBody(const Readouts& r, PanelActions& actions) {
         tooltip("Wall time of the last frame: drawing the scene until the GL has finished it, and "
                 "stepping: the solver's steps (h / substeps each), a side-by-side run's too, and "
                 "the measurements after them.");
+        const physics::StepStats& s = r.stats;
+        ImGui::Text("broad phase %.2f ms  passes %.2f ms", 1e3 * s.broadPhaseSeconds, 1e3 * s.passesSeconds);
+        if (s.broadPhaseBuilds > 0) {
+            ImGui::Text("  %llu pair tests, %llu candidates", static_cast<unsigned long long>(s.pairTests),
+                        static_cast<unsigned long long>(s.candidatePairs));
+        } else {
+            ImGui::Text("  pairs kept, %llu candidates", static_cast<unsigned long long>(s.candidatePairs));
+        }
+        tooltip("Where the last step went (its substeps together): finding the candidate pairs (the broad phase: a grid, "
+                "or all N(N-1)/2 pairs; the pair tests are its distance tests, none when no sphere "
+                "moved far enough to need new pairs), then the K collision passes over the "
+                "candidates. Switch the broad phase to compare.");
     } else {
         ImGui::TextDisabled("FPS and timings: not measured here");  // capture: equal runs, equal images
     }
