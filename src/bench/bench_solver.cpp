@@ -5,6 +5,8 @@
 // For each N the pile falls and lands first (--warm-up simulated seconds, on the
 // most threads asked for); then every thread count runs the same number of steps
 // from that same state, interleaved (1, 2, 1, 2, ...), and a row gives the median.
+// "broad phase" and "passes" are StepStats' profile (per solver step, median): what
+// is left of a step is the integration and the rest.
 // The "hash" column is the state hash after the timed steps of the first
 // repetition: equal for every thread count, or the row says DIFFERENT (and the
 // program exits with 1), since threads must never change the result.
@@ -156,6 +158,7 @@ std::string chainsRow(const physics::World& world, int count) {
 
 struct Run {
     std::vector<double> seconds;  // per repetition
+    std::vector<double> broadPhase, passes;  // s per repetition: StepStats' profile
     std::uint64_t builds = 0;
     std::uint64_t hash = 0;       // after the first repetition
 };
@@ -195,6 +198,8 @@ Row measure(int count, const Options& options) {
             for (int k = 0; k < steps; ++k) stats += physics::step(world, timed.params);
             Run& run = row.byThreads[threads];
             run.seconds.push_back(bench::secondsSince(begin));
+            run.broadPhase.push_back(stats.broadPhaseSeconds);
+            run.passes.push_back(stats.passesSeconds);
             run.builds = stats.broadPhaseBuilds;
             if (rep == 0) run.hash = physics::stateHash(world);
         }
@@ -210,8 +215,8 @@ int main(int argc, char** argv) {
                 bench::presetContaining("pile").c_str(), options.passes, options.order.c_str(),
                 options.mixNumbers ? ", numbers shuffled after the warm-up" : "",
                 bench::cpuModel().c_str(), bench::loadAverage().c_str());
-    std::printf("| N | threads | ms per solver step | ns per sphere-step | × one thread | rebuilds | hash |\n");
-    std::printf("|---:|---:|---:|---:|---:|---:|---|\n");
+    std::printf("| N | threads | ms per solver step | ns per sphere-step | × one thread | broad phase ms | passes ms | rebuilds | hash |\n");
+    std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|---|\n");
     std::map<int, std::vector<double>> counts, times;  // by threads
     std::vector<std::string> chains;
     bool same = true;
@@ -224,18 +229,23 @@ int main(int argc, char** argv) {
             const double seconds = bench::median(run.seconds);
             const bool equal = run.hash == firstHash;
             same = same && equal;
-            std::printf("| %s | %d | %.3f | %.0f | %.2f | %.0f %% | %016llx%s |\n", bench::grouped(count).c_str(),
-                        threads, 1e3 * seconds / row.solverSteps, 1e9 * seconds / (row.solverSteps * count),
-                        baseline / seconds, 100.0 * double(run.builds) / row.solverSteps,
+            std::printf("| %s | %d | %.3f | %.0f | %.2f | %.3f | %.3f | %.0f %% | %016llx%s |\n",
+                        bench::grouped(count).c_str(), threads, 1e3 * seconds / row.solverSteps,
+                        1e9 * seconds / (row.solverSteps * count), baseline / seconds,
+                        1e3 * bench::median(run.broadPhase) / row.solverSteps,
+                        1e3 * bench::median(run.passes) / row.solverSteps, 100.0 * double(run.builds) / row.solverSteps,
                         static_cast<unsigned long long>(run.hash), equal ? "" : " DIFFERENT");
             counts[threads].push_back(count);
             times[threads].push_back(seconds / row.solverSteps);
         }
         std::fflush(stdout);
     }
-    std::printf("\nlog-log slope of time per step against N:");
-    for (const auto& [threads, t] : times) {
-        std::printf(" %.3f (%d thread%s)", bench::logLogSlope(counts[threads], t), threads, threads > 1 ? "s" : "");
+    if (options.counts.size() > 1) {
+        std::printf("\nlog-log slope of time per step against N:");
+        for (const auto& [threads, t] : times) {
+            std::printf(" %.3f (%d thread%s)", bench::logLogSlope(counts[threads], t), threads, threads > 1 ? "s" : "");
+        }
+        std::printf("\n");
     }
     if (options.chains) {
         std::printf("\nPairs that could be visited side by side with the same result, in the pass order of\n"
