@@ -77,8 +77,12 @@ Options parseOptions(int argc, char** argv) {
             o.repetitions = 2;
             continue;
         }
-        if (option == "--mix-numbers" || option == "--chains") {
-            (option == "--chains" ? o.chains : o.mixNumbers) = true;
+        if (option == "--mix-numbers") {
+            o.mixNumbers = true;
+            continue;
+        }
+        if (option == "--chains") {
+            o.chains = true;
             continue;
         }
         if (k + 1 >= argc) usageError(option + ": expected a value after it");
@@ -120,19 +124,28 @@ physics::World withNumbersShuffled(const physics::World& world) {
     return mixed;
 }
 
-// How much of a pass could run side by side without changing its result. A pair must
-// come after every earlier pair (in pass order) that shares a sphere with it; its level
-// is one more than theirs. Pairs of one level share no sphere. Over the whole pass, and
-// inside windows of consecutive pairs (whose spheres stay in the caches): pairs per level.
+// How many levels the pairs [first, end) take: a pair must come after every earlier
+// pair of the range that shares a sphere with it, so its level is one more than theirs.
+// Pairs of one level share no sphere. `level` is scratch, one per sphere.
+std::uint32_t levelsOf(const std::vector<physics::SpherePair>& pairs, std::size_t first, std::size_t end,
+                       std::vector<std::uint32_t>& level) {
+    for (std::size_t k = first; k < end; ++k) level[pairs[k].i] = level[pairs[k].j] = 0;
+    std::uint32_t top = 0;
+    for (std::size_t k = first; k < end; ++k) {
+        const std::uint32_t l = 1 + std::max(level[pairs[k].i], level[pairs[k].j]);
+        level[pairs[k].i] = level[pairs[k].j] = l;
+        top = std::max(top, l);
+    }
+    return top;
+}
+
+// How much of a pass could run side by side without changing its result: pairs per
+// level over the whole pass, and inside windows of consecutive pairs (whose spheres
+// stay in the caches).
 std::string chainsRow(const physics::World& world, int count) {
     const std::vector<physics::SpherePair>& pairs = world.workspace.visitOrder;
-    std::vector<std::uint32_t> level(world.size(), 0), window(world.size(), 0);
-    std::uint32_t longest = 0;
-    for (const physics::SpherePair& pair : pairs) {
-        const std::uint32_t l = 1 + std::max(level[pair.i], level[pair.j]);
-        level[pair.i] = level[pair.j] = l;
-        longest = std::max(longest, l);
-    }
+    std::vector<std::uint32_t> level(world.size(), 0);
+    const std::uint32_t longest = levelsOf(pairs, 0, pairs.size(), level);
     char cell[96];
     std::snprintf(cell, sizeof cell, "| %s | %zu | %u | %.0f |", bench::grouped(count).c_str(), pairs.size(),
                   longest, double(pairs.size()) / std::max(1u, longest));
@@ -140,15 +153,7 @@ std::string chainsRow(const physics::World& world, int count) {
     for (std::size_t size : {64, 256, 1024}) {
         std::size_t levels = 0;
         for (std::size_t first = 0; first < pairs.size(); first += size) {
-            const std::size_t end = std::min(pairs.size(), first + size);
-            std::uint32_t top = 0;
-            for (std::size_t k = first; k < end; ++k) window[pairs[k].i] = window[pairs[k].j] = 0;
-            for (std::size_t k = first; k < end; ++k) {
-                const std::uint32_t l = 1 + std::max(window[pairs[k].i], window[pairs[k].j]);
-                window[pairs[k].i] = window[pairs[k].j] = l;
-                top = std::max(top, l);
-            }
-            levels += top;
+            levels += levelsOf(pairs, first, std::min(pairs.size(), first + size), level);
         }
         std::snprintf(cell, sizeof cell, " %.1f |", double(pairs.size()) / double(std::max<std::size_t>(1, levels)));
         row += cell;

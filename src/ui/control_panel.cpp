@@ -152,27 +152,32 @@ void sceneSection(scenes::Scene& scene, PanelState& state, const std::vector<std
     tooltip("Saves the current positions, velocities and parameters as a scene file.");
 }
 
+// Where the last frame's time went, and the last step's profile (window only).
+void frameTimings(const Readouts& r) {
+    ImGui::Text("%.0f FPS   draw %.1f ms", r.timing.fps, r.timing.drawMs);
+    ImGui::Text("stepping %.1f ms (%llu step%s)", r.timing.steppingMs,
+                static_cast<unsigned long long>(r.timing.stepsThisFrame), r.timing.stepsThisFrame == 1 ? "" : "s");
+    tooltip("Wall time of the last frame: drawing the scene until the GL has finished it, and "
+            "stepping: the solver's steps (h / substeps each), a side-by-side run's too, and "
+            "the measurements after them.");
+    const physics::StepStats& s = r.stats;
+    ImGui::Text("broad phase %.2f ms  passes %.2f ms", 1e3 * s.broadPhaseSeconds, 1e3 * s.passesSeconds);
+    if (s.broadPhaseBuilds > 0) {
+        ImGui::Text("  %llu pair tests, %llu candidates", static_cast<unsigned long long>(s.pairTests),
+                    static_cast<unsigned long long>(s.candidatePairs));
+    } else {
+        ImGui::Text("  pairs kept, %llu candidates", static_cast<unsigned long long>(s.candidatePairs));
+    }
+    tooltip("Where the last step went (its substeps together): finding the candidate pairs "
+            "(the broad phase: a grid, or all N(N-1)/2 pairs; the pair tests are its distance tests, none when no sphere "
+            "moved far enough to need new pairs), then the K collision passes over the "
+            "candidates. Switch the broad phase to compare.");
+}
+
 void readoutsBody(const Readouts& r, PanelActions& actions) {
     const physics::Diagnostics& d = r.diagnostics;
     if (r.timing.fps > 0.0) {
-        ImGui::Text("%.0f FPS   draw %.1f ms", r.timing.fps, r.timing.drawMs);
-        ImGui::Text("stepping %.1f ms (%llu step%s)", r.timing.steppingMs,
-                    static_cast<unsigned long long>(r.timing.stepsThisFrame), r.timing.stepsThisFrame == 1 ? "" : "s");
-        tooltip("Wall time of the last frame: drawing the scene until the GL has finished it, and "
-                "stepping: the solver's steps (h / substeps each), a side-by-side run's too, and "
-                "the measurements after them.");
-        const physics::StepStats& s = r.stats;
-        ImGui::Text("broad phase %.2f ms  passes %.2f ms", 1e3 * s.broadPhaseSeconds, 1e3 * s.passesSeconds);
-        if (s.broadPhaseBuilds > 0) {
-            ImGui::Text("  %llu pair tests, %llu candidates", static_cast<unsigned long long>(s.pairTests),
-                        static_cast<unsigned long long>(s.candidatePairs));
-        } else {
-            ImGui::Text("  pairs kept, %llu candidates", static_cast<unsigned long long>(s.candidatePairs));
-        }
-        tooltip("Where the last step went (its substeps together): finding the candidate pairs (the broad phase: a grid, "
-                "or all N(N-1)/2 pairs; the pair tests are its distance tests, none when no sphere "
-                "moved far enough to need new pairs), then the K collision passes over the "
-                "candidates. Switch the broad phase to compare.");
+        frameTimings(r);
     } else {
         ImGui::TextDisabled("FPS and timings: not measured here");  // capture: equal runs, equal images
     }
