@@ -73,6 +73,7 @@ struct Options {
     double budget = 300.0;        // s: an engine whose warm-up would take longer is skipped
     double bulletScale = 0.0;     // Bullet's units per metre; 0: the largest radius is 0.5
     bool bulletBoxWalls = false;  // Bullet's walls are slabs (btBoxShape), not planes
+    double stepSeconds = 0.0;     // s per step of every engine; 0: the preset's h / substeps
 };
 
 const char* const kUsage =
@@ -97,6 +98,8 @@ const char* const kUsage =
     "  --bullet-scale S   Bullet's units per metre (default: the largest radius is 0.5;\n"
     "                     1 gives it metres, where its absolute margins make it slow)\n"
     "  --bullet-box-walls Bullet's walls as slabs (btBoxShape) instead of static planes\n"
+    "  --h S              seconds per step of every engine, e.g. 1/60 (default: the\n"
+    "                     preset's h / substeps, 1/240: the steps the demo takes)\n"
     "An engine whose step takes more than 5 s is dropped at that N and above.\n";
 
 std::vector<std::string> splitList(const std::string& text) {
@@ -121,6 +124,14 @@ double parsePositive(const std::string& option, const char* text) {
     if (*end != '\0' || !(value > 0.0) || !std::isfinite(value))
         usageError(option + " " + text + ": expected a positive number");
     return value;
+}
+
+// s: a time step written as seconds (0.004) or as a fraction (1/60).
+double parseStep(const std::string& text) {
+    const std::size_t slash = text.find('/');
+    if (slash == std::string::npos) return parsePositive("--h", text.c_str());
+    const double over = parsePositive("--h", text.substr(0, slash).c_str());
+    return over / parsePositive("--h", text.substr(slash + 1).c_str());
 }
 
 int parseCount(const std::string& option, const char* text) {
@@ -201,6 +212,8 @@ Options parseOptions(int argc, char** argv) {
             o.allPairsMaxCount = parseCount(option, value);
         } else if (option == "--budget") {
             o.budget = parsePositive(option, value);
+        } else if (option == "--h") {
+            o.stepSeconds = parseStep(value);
         } else if (option == "--bullet-scale") {
             o.bulletScale = parsePositive(option, value);
         } else {
@@ -216,7 +229,7 @@ bool wanted(const Options& o, const char* engine) {
 
 // ------------------------------------------------------------------ scenes
 
-// One step of every engine advances this much: the preset's h / substeps, as one
+// One step of every engine advances this much: the preset's h / substeps (or --h), as one
 // solver step of ours (substeps = 1), one stepSimulation(h, 0), one dWorldQuickStep.
 struct Setup {
     scenes::Scene scene;
@@ -226,7 +239,7 @@ struct Setup {
     bool settles = true;  // a pile: the start is settled first (--settle)
 };
 
-Setup makeSetup(const std::string& kind, int count) {
+Setup makeSetup(const std::string& kind, int count, double stepSeconds) {
     Setup s;
     if (kind == "gas") {
         s.scene = bench::loadPreset(bench::presetContaining("gas"));
@@ -248,7 +261,7 @@ Setup makeSetup(const std::string& kind, int count) {
             s.oneRadius = false;
         }
     }
-    s.scene.params.timeStep = s.scene.params.solverStep();
+    s.scene.params.timeStep = stepSeconds > 0.0 ? stepSeconds : s.scene.params.solverStep();
     s.scene.params.substeps = 1;
     try {
         s.world = scenes::buildWorld(s.scene);
@@ -628,7 +641,7 @@ std::vector<Result> runOne(const Options& o, const std::string& scene, int count
                            History& history) {
     std::map<std::string, std::string>& dropped = history.dropped;
     const auto built = std::chrono::steady_clock::now();
-    Setup setup = makeSetup(scene, count);
+    Setup setup = makeSetup(scene, count, o.stepSeconds);
     const double h = setup.scene.params.timeStep;
     const int settleSteps = setup.settles ? int(std::lround(o.settle / h)) : 0;
     const int warmUpSteps =
@@ -822,7 +835,7 @@ int main(int argc, char** argv) {
         curves;
     std::vector<std::string> curveOrder;
     for (const SceneChoice& scene : o.scenes) {
-        const Setup sample = makeSetup(scene.name, 1000);
+        const Setup sample = makeSetup(scene.name, 1000, o.stepSeconds);
         const physics::Params& p = sample.scene.params;
         std::printf(
             "### %s (%s): %s, h = 1/%.0f s per step, α = %s, β = %s, ε = %s m/s, μ = %s, "
