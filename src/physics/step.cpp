@@ -32,6 +32,10 @@ constexpr int kSkinRetry = 16;
 // Below this many spheres a step takes microseconds: handing out its stages to
 // other threads would cost more than it saves.
 constexpr std::size_t kParallelMinSpheres = 4096;
+// Automatic threads (Params::threads = 0) start where a second thread pays: on two
+// cores, two threads ran 0.86-1.08x as fast as one at 16k spheres and 1.03-1.14x at
+// 64k (spheres_bench_solver, the pile).
+constexpr std::size_t kAutomaticParallelMinSpheres = 32768;
 constexpr int kMostAutomaticThreads = 8;
 
 // m: how far beyond touching the next build reaches.
@@ -145,6 +149,7 @@ void sharePairsOut(World& world, int threads) {
 int solverThreads(const World& world, const Params& params) {
     if (world.size() < kParallelMinSpheres) return 1;
     if (params.threads > 0) return std::min(params.threads, kMostSolverThreads);
+    if (world.size() < kAutomaticParallelMinSpheres) return 1;
     static const int cores = int(std::thread::hardware_concurrency());
     return std::clamp(cores, 1, kMostAutomaticThreads);
 }

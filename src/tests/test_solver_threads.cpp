@@ -9,6 +9,8 @@
 #include <cstdlib>
 #include <map>
 #include <set>
+#include <string>
+#include <thread>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -96,6 +98,22 @@ TEST(SolverThreads, PositionMethodLeavesNoSphereInAWallOfTheBoxOnAnyThreadCount)
         }
         EXPECT_LE(deepest, 1e-12) << threads << " threads";
     }
+}
+
+// Automatic threads (threads = 0) start where a second thread pays, 32768 spheres (on
+// two cores, two threads were slower than one at 16k); a count set by hand applies
+// from 4096 spheres.
+TEST(SolverThreads, AutomaticThreadsStartWhereASecondThreadPays) {
+    const int cores = std::clamp(int(std::thread::hardware_concurrency()), 1, 8);
+    const auto threadsAt = [](int count, const std::string& threads) {
+        const scenes::Scene scene = pile({"radius=0.02", "count=" + std::to_string(count), "threads=" + threads});
+        return physics::solverThreads(scenes::buildWorld(scene), scene.params);
+    };
+    EXPECT_EQ(threadsAt(16000, "0"), 1);
+    EXPECT_EQ(threadsAt(32767, "0"), 1);
+    EXPECT_EQ(threadsAt(32768, "0"), cores);
+    EXPECT_EQ(threadsAt(4096, "2"), 2);
+    EXPECT_EQ(threadsAt(4095, "2"), 1);
 }
 
 TEST(SolverThreads, EveryMethodAndOrderReachesTheSameStateOnAnyThreadCount) {
