@@ -1,6 +1,7 @@
 #include "physics/step.h"
 
 #include <algorithm>
+#include <array>
 #include <cassert>
 #include <cmath>
 #include <thread>
@@ -102,21 +103,65 @@ void reorder(std::vector<SpherePair>& pairs, PairOrder order, std::uint64_t seed
     for (std::size_t k = pairs.size(); k > 1; --k) std::swap(pairs[k - 1], pairs[random.below(k)]);
 }
 
+// Equal slabs across one axis (0: x, 1: y) of the spheres' centres, as many as threads.
+struct Slabs {
+    int axis = 0;
+    int count = 1;
+    double lo = 0.0;        // m, where the first slab starts
+    double perMetre = 0.0;  // slabs per metre along the axis
+
+    std::uint32_t of(const glm::dvec3& centre) const {
+        const double slab = (centre[axis] - lo) * perMetre;
+        return std::isfinite(slab) ? std::uint32_t(std::clamp(slab, 0.0, count - 1.0)) : 0u;
+    }
+};
+
+// Slabs across x (first) and across y (second) of the spheres' centres, `count` each.
+std::array<Slabs, 2> slabsAcrossXAndY(const World& world, int count) {
+    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};  // m
+    for (const glm::dvec3& p : world.position) {
+        for (int axis = 0; axis < 2; ++axis) {
+            if (!std::isfinite(p[axis])) continue;
+            lo[axis] = std::min(lo[axis], p[axis]);
+            hi[axis] = std::max(hi[axis], p[axis]);
+        }
+    }
+    std::array<Slabs, 2> slabs;
+    for (int axis = 0; axis < 2; ++axis) {
+        const double extent = hi[axis] - lo[axis];  // m
+        slabs[std::size_t(axis)] = {axis, count, lo[axis], extent > 0.0 ? count / extent : 0.0};
+    }
+    return slabs;
+}
+
+// How many times the slab changes from a sphere number to the next, looked at after
+// every kSlabChangeStride-th number: an estimate, enough to compare two ways to cut.
+constexpr std::size_t kSlabChangeStride = 4;
+std::size_t slabChanges(const World& world, const Slabs& slabs) {
+    std::size_t changes = 0;
+    for (std::size_t i = 1; i < world.size(); i += kSlabChangeStride) {
+        changes += slabs.of(world.position[i]) != slabs.of(world.position[i - 1]);
+    }
+    return changes;
+}
+
+// Slabs of x or of y, whichever keeps the longer runs of consecutive sphere numbers in
+// one slab. The passes visit the pairs by number, so the threads keep pace with each
+// other and wait where one's run of numbers meets the other's: the scenes' lattices
+// number the spheres row by row along x, layer by layer up z, so slabs of x cut every
+// row (a wait every few dozen pairs), slabs of y each layer once. Not z: each thread
+// would have whole layers and wait for the one below (ranges of numbers measured 1.0x).
+Slabs shareSlabs(const World& world, int threads) {
+    const std::array<Slabs, 2> slabs = slabsAcrossXAndY(world, threads);
+    return slabChanges(world, slabs[1]) < slabChanges(world, slabs[0]) ? slabs[1] : slabs[0];
+}
+
 // Shares visitOrder's pairs out between `threads` threads (Workspace::sharedPairs): by
-// the slab of x, of equal width, that holds the first sphere.
+// the slab (shareSlabs) that holds the first sphere.
 void sharePairsOut(World& world, int threads) {
     Workspace& ws = world.workspace;
-    double lo = INFINITY, hi = -INFINITY;  // m
-    for (const glm::dvec3& p : world.position) {
-        if (!std::isfinite(p.x)) continue;
-        lo = std::min(lo, p.x);
-        hi = std::max(hi, p.x);
-    }
-    const double slabsPerMetre = hi > lo ? threads / (hi - lo) : 0.0;
-    const auto threadOf = [&](std::uint32_t sphere) {
-        const double slab = (world.position[sphere].x - lo) * slabsPerMetre;
-        return std::isfinite(slab) ? std::uint32_t(std::clamp(slab, 0.0, threads - 1.0)) : 0u;
-    };
+    const Slabs slabs = shareSlabs(world, threads);
+    const auto threadOf = [&](std::uint32_t sphere) { return slabs.of(world.position[sphere]); };
     ws.shareThreads = threads;
     ws.shareStart.assign(std::size_t(threads) + 1, 0);
     ws.threadOfPair.resize(ws.visitOrder.size());

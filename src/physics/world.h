@@ -97,7 +97,7 @@ struct Workspace {
     std::vector<TaskScratch> tasks;         // one per parallel task
     // With several threads the pairs are shared out: thread t visits
     // sharedPairs[shareStart[t], shareStart[t + 1]), the pairs whose first sphere lies in
-    // its slab of x, in pass order. Where a pair's sphere met a pair of another thread
+    // its slab (of x or y, step.cpp's shareSlabs), in pass order. Where a pair's sphere met a pair of another thread
     // last, it waits for that pair (PairNeed), so every sphere still meets its pairs in
     // pass order: the result of one thread, bit for bit.
     struct PairNeed {

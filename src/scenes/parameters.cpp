@@ -207,10 +207,10 @@ std::vector<Parameter> makeTable() {
                             "Threads the solver uses; 0 (auto): one per core (at most 8) from "
                             "32768 spheres, where a second thread starts to pay, and one below. "
                             "The result is the same, bit for bit, for any count and pair order: "
-                            "each thread takes the pairs of its slab of x, and waits where a sphere "
-                            "met another thread's pair last, so each sphere still meets its "
-                            "partners in the pair order. Scenes under 4096 spheres use one thread "
-                            "whatever the count.",
+                            "each thread takes the pairs of its slab of the box, and waits where "
+                            "a sphere met another thread's pair last, so each sphere still meets "
+                            "its partners in the pair order. Scenes under 4096 spheres use one "
+                            "thread whatever the count.",
                             param<&Params::threads>())),
         choice("broadphase", "broad phase", {"grid", "allpairs"},
                static_cast<double>(kDefaults.broadPhase),

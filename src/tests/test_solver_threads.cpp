@@ -169,7 +169,7 @@ TEST(SolverThreads, LoggedContactsAreTheSameOnAnyThreadCount) {
     EXPECT_EQ(hashes.size(), 1u);
 }
 
-// Shared out between three threads, each thread has the pairs of its slab of x, in
+// Shared out between three threads, each thread has the pairs of its slab, in
 // pass order, and waits where a sphere met another thread's pair last: for exactly
 // that pair. Every pair of the pass order is in one share.
 TEST(SharedPairs, WaitForThePairThatMetTheirSpheresBefore) {
@@ -215,6 +215,43 @@ TEST(SharedPairs, WaitForThePairThatMetTheirSpheresBefore) {
         }
         EXPECT_GT(waits, 0u) << "slabs meet";
         EXPECT_LT(waits, ws.visitOrder.size() / 4) << "slabs meet only at their borders (" << order << ")";
+    }
+}
+
+// The share-out cuts the box across x or y, whichever cuts the runs of sphere numbers
+// less: the pile's lattice numbers its spheres row by row along x, so its shares are
+// slabs of y, and with x and y swapped slabs of x. Either way the spheres whose pairs
+// a thread takes come in long runs of numbers, broken mostly where the landing mixed
+// the row on the border (about 190 changes of thread in this pile); slabs across the
+// rows change thread at every row as well (about 360), and the threads wait for each
+// other as often.
+TEST(SharedPairs, EachThreadTakesLongRunsOfSphereNumbers) {
+    const physics::World landed = run(pile({}), 60);
+    for (bool swapped : {false, true}) {
+        physics::World world = landed;
+        if (swapped) {
+            for (glm::dvec3& p : world.position) std::swap(p.x, p.y);  // the box is square in x and y
+        }
+        world.workspace = physics::Workspace{};
+        const physics::Params params = pile({"threads=2"}).params;
+        physics::StepStats stats;
+        physics::findOrderedPairs(world, params, stats);
+        const physics::Workspace& ws = world.workspace;
+        ASSERT_EQ(ws.shareThreads, 2);
+        std::vector<int> threadOf(world.size(), -1);  // of each first sphere
+        for (std::uint32_t t = 0; t < 2; ++t) {
+            for (std::uint32_t k = ws.shareStart[t]; k < ws.shareStart[t + 1]; ++k) threadOf[ws.sharedPairs[k].i] = int(t);
+        }
+        std::size_t changes = 0;
+        int last = -1;
+        for (int t : threadOf) {
+            if (t < 0) continue;
+            changes += last >= 0 && t != last;
+            last = t;
+        }
+        const char* how = swapped ? "x and y swapped" : "as generated";
+        EXPECT_LT(changes, world.size() / 20) << how;
+        EXPECT_GT(changes, 2u) << how << ": both threads have pairs all along the numbers";
     }
 }
 
