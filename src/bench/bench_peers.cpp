@@ -126,12 +126,20 @@ double parsePositive(const std::string& option, const char* text) {
     return value;
 }
 
-// s: a time step written as seconds (0.004) or as a fraction (1/60).
+// s: a time step written as seconds (0.004) or as a fraction (1/60), from 1 us to 1 s.
 double parseStep(const std::string& text) {
+    const auto number = [](const std::string& part) {
+        char* end = nullptr;
+        const double value = std::strtod(part.c_str(), &end);
+        return !part.empty() && *end == '\0' ? value : NAN;
+    };
     const std::size_t slash = text.find('/');
-    if (slash == std::string::npos) return parsePositive("--h", text.c_str());
-    const double over = parsePositive("--h", text.substr(0, slash).c_str());
-    return over / parsePositive("--h", text.substr(slash + 1).c_str());
+    const double h = slash == std::string::npos
+                         ? number(text)
+                         : number(text.substr(0, slash)) / number(text.substr(slash + 1));
+    if (!(h >= 1e-6 && h <= 1.0))
+        usageError("--h " + text + ": expected seconds from 1e-6 to 1, such as 0.004 or 1/60");
+    return h;
 }
 
 int parseCount(const std::string& option, const char* text) {
