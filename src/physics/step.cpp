@@ -34,9 +34,9 @@ constexpr int kSkinRetry = 16;
 // other threads would cost more than it saves.
 constexpr std::size_t kParallelMinSpheres = 4096;
 // Automatic threads (Params::threads = 0) start where a second thread pays: on two
-// cores, two threads ran 0.86-1.08x as fast as one at 16k spheres and 1.03-1.14x at
-// 64k (spheres_bench_solver, the pile).
-constexpr std::size_t kAutomaticParallelMinSpheres = 32768;
+// cores, two threads ran 0.97-1.04x as fast as one at 6k spheres, 1.06-1.07x at 8k and
+// 1.11-1.18x at 16k (spheres_bench_solver, the pile, two runs).
+constexpr std::size_t kAutomaticParallelMinSpheres = 8192;
 constexpr int kMostAutomaticThreads = 8;
 
 // m: how far beyond touching the next build reaches.
@@ -103,43 +103,46 @@ void reorder(std::vector<SpherePair>& pairs, PairOrder order, std::uint64_t seed
     for (std::size_t k = pairs.size(); k > 1; --k) std::swap(pairs[k - 1], pairs[random.below(k)]);
 }
 
-// Equal slabs across one axis (0: x, 1: y) of the spheres' centres, as many as threads.
+// Slabs across one axis (0: x, 1: y) of the spheres' centres, as many as threads, cut
+// where each holds about as many centres (a far-flung sphere cannot empty a slab).
 struct Slabs {
     int axis = 0;
     int count = 1;
-    double lo = 0.0;        // m, where the first slab starts
-    double perMetre = 0.0;  // slabs per metre along the axis
+    std::array<double, kMostSolverThreads - 1> cuts{};  // m, ascending: slab s ends at cuts[s]
 
     std::uint32_t of(const glm::dvec3& centre) const {
-        const double slab = (centre[axis] - lo) * perMetre;
-        return std::isfinite(slab) ? std::uint32_t(std::clamp(slab, 0.0, count - 1.0)) : 0u;
+        const double c = centre[axis];  // m
+        if (!std::isfinite(c)) return 0u;
+        return std::uint32_t(std::upper_bound(cuts.data(), cuts.data() + (count - 1), c) - cuts.data());
     }
 };
 
-// Slabs across x (first) and across y (second) of the spheres' centres, `count` each.
-std::array<Slabs, 2> slabsAcrossXAndY(const World& world, int count) {
-    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};  // m
-    for (const glm::dvec3& p : world.position) {
-        for (int axis = 0; axis < 2; ++axis) {
-            if (!std::isfinite(p[axis])) continue;
-            lo[axis] = std::min(lo[axis], p[axis]);
-            hi[axis] = std::max(hi[axis], p[axis]);
-        }
+// The most centres whose coordinates place the cuts: enough for cuts at about the
+// right quantiles, few enough to cost nothing next to the share-out.
+constexpr std::size_t kSlabSample = 4096;
+
+// `count` slabs across `axis`, cut at the quantiles of an even sample of the centres
+// (`sample` is scratch). A centre that is not finite goes to the first slab.
+Slabs slabsAcross(const World& world, int axis, int count, std::vector<double>& sample) {
+    sample.clear();
+    const std::size_t stride = world.size() / kSlabSample + 1;
+    for (std::size_t i = 0; i < world.size(); i += stride) {
+        if (std::isfinite(world.position[i][axis])) sample.push_back(world.position[i][axis]);
     }
-    std::array<Slabs, 2> slabs;
-    for (int axis = 0; axis < 2; ++axis) {
-        const double extent = hi[axis] - lo[axis];  // m
-        slabs[std::size_t(axis)] = {axis, count, lo[axis], extent > 0.0 ? count / extent : 0.0};
+    Slabs slabs{axis, count, {}};
+    if (sample.empty()) return slabs;  // every cut at 0 m
+    for (int s = 1; s < count; ++s) {
+        const auto at = sample.begin() + std::ptrdiff_t(sample.size() * std::size_t(s) / std::size_t(count));
+        std::nth_element(sample.begin(), at, sample.end());
+        slabs.cuts[std::size_t(s - 1)] = *at;  // ascending, as s is
     }
     return slabs;
 }
 
-// How many times the slab changes from a sphere number to the next, looked at after
-// every kSlabChangeStride-th number: an estimate, enough to compare two ways to cut.
-constexpr std::size_t kSlabChangeStride = 4;
+// How many times the slab changes from one sphere number to the next.
 std::size_t slabChanges(const World& world, const Slabs& slabs) {
     std::size_t changes = 0;
-    for (std::size_t i = 1; i < world.size(); i += kSlabChangeStride) {
+    for (std::size_t i = 1; i < world.size(); ++i) {
         changes += slabs.of(world.position[i]) != slabs.of(world.position[i - 1]);
     }
     return changes;
@@ -149,11 +152,13 @@ std::size_t slabChanges(const World& world, const Slabs& slabs) {
 // one slab. The passes visit the pairs by number, so the threads keep pace with each
 // other and wait where one's run of numbers meets the other's: the scenes' lattices
 // number the spheres row by row along x, layer by layer up z, so slabs of x cut every
-// row (a wait every few dozen pairs), slabs of y each layer once. Not z: each thread
-// would have whole layers and wait for the one below (ranges of numbers measured 1.0x).
-Slabs shareSlabs(const World& world, int threads) {
-    const std::array<Slabs, 2> slabs = slabsAcrossXAndY(world, threads);
-    return slabChanges(world, slabs[1]) < slabChanges(world, slabs[0]) ? slabs[1] : slabs[0];
+// row (a wait every few dozen pairs), slabs of y each layer once. Not z: for these
+// numbers its slabs are ranges of numbers, whole layers, and each thread would wait for
+// the one below (shares by ranges of numbers measured 1.0x).
+Slabs shareSlabs(World& world, int threads) {
+    std::vector<double>& sample = world.workspace.slabSample;
+    const Slabs x = slabsAcross(world, 0, threads, sample), y = slabsAcross(world, 1, threads, sample);
+    return slabChanges(world, y) < slabChanges(world, x) ? y : x;
 }
 
 // Shares visitOrder's pairs out between `threads` threads (Workspace::sharedPairs): by

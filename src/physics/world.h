@@ -114,6 +114,7 @@ struct Workspace {
     // wallClearance()), lowered by each move of the pair stage, found anew by the wall
     // stage for the spheres it visits.
     std::vector<double> wallClearance;
+    std::vector<double> slabSample;  // m: scratch of the share-out, coordinates that place its slabs
     std::vector<double> taskMove;  // m^2: the largest squared displacement each task saw
     // The contacts of a step whose positions stay put while its passes run (velocity
     // based, response only): found once, used by every pass (findContacts).

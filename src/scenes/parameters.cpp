@@ -205,7 +205,7 @@ std::vector<Parameter> makeTable() {
                     integer("threads", "solver threads", 0, physics::kMostSolverThreads,
                             kDefaults.threads,
                             "Threads the solver uses; 0 (auto): one per core (at most 8) from "
-                            "32768 spheres, where a second thread starts to pay, and one below. "
+                            "8192 spheres, where a second thread starts to pay, and one below. "
                             "The result is the same, bit for bit, for any count and pair order: "
                             "each thread takes the pairs of its slab of the box, and waits where "
                             "a sphere met another thread's pair last, so each sphere still meets "

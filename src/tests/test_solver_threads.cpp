@@ -100,18 +100,18 @@ TEST(SolverThreads, PositionMethodLeavesNoSphereInAWallOfTheBoxOnAnyThreadCount)
     }
 }
 
-// Automatic threads (threads = 0) start where a second thread pays, 32768 spheres (on
-// two cores, two threads were slower than one at 16k); a count set by hand applies
-// from 4096 spheres.
+// Automatic threads (threads = 0) start where a second thread pays, 8192 spheres (on
+// two cores, two threads gained nothing at 6k); a count set by hand applies from 4096
+// spheres. (On a machine of one core, automatic is one thread at any count.)
 TEST(SolverThreads, AutomaticThreadsStartWhereASecondThreadPays) {
     const int cores = std::clamp(int(std::thread::hardware_concurrency()), 1, 8);
     const auto threadsAt = [](int count, const std::string& threads) {
         const scenes::Scene scene = pile({"radius=0.02", "count=" + std::to_string(count), "threads=" + threads});
         return physics::solverThreads(scenes::buildWorld(scene), scene.params);
     };
-    EXPECT_EQ(threadsAt(16000, "0"), 1);
-    EXPECT_EQ(threadsAt(32767, "0"), 1);
-    EXPECT_EQ(threadsAt(32768, "0"), cores);
+    EXPECT_EQ(threadsAt(6000, "0"), 1);
+    EXPECT_EQ(threadsAt(8191, "0"), 1);
+    EXPECT_EQ(threadsAt(8192, "0"), cores);
     EXPECT_EQ(threadsAt(4096, "2"), 2);
     EXPECT_EQ(threadsAt(4095, "2"), 1);
 }
@@ -218,40 +218,62 @@ TEST(SharedPairs, WaitForThePairThatMetTheirSpheresBefore) {
     }
 }
 
+// How two threads share a world's pairs out: how often the thread changes from one
+// first sphere's number to the next, and the fewest pairs a thread has.
+struct ShareOut {
+    std::size_t changes = 0;
+    std::size_t fewestPairs = 0, pairs = 0;
+};
+ShareOut shareOutOf(physics::World world) {
+    world.workspace = physics::Workspace{};
+    const physics::Params params = pile({"threads=2"}).params;
+    physics::StepStats stats;
+    physics::findOrderedPairs(world, params, stats);
+    const physics::Workspace& ws = world.workspace;
+    EXPECT_EQ(ws.shareThreads, 2);
+    std::vector<int> threadOf(world.size(), -1);  // of each first sphere
+    for (std::uint32_t t = 0; t < 2; ++t) {
+        for (std::uint32_t k = ws.shareStart[t]; k < ws.shareStart[t + 1]; ++k) threadOf[ws.sharedPairs[k].i] = int(t);
+    }
+    ShareOut share;
+    int last = -1;
+    for (int t : threadOf) {
+        if (t < 0) continue;
+        share.changes += last >= 0 && t != last;
+        last = t;
+    }
+    share.fewestPairs = std::min(ws.shareStart[1] - ws.shareStart[0], ws.shareStart[2] - ws.shareStart[1]);
+    share.pairs = ws.visitOrder.size();
+    return share;
+}
+
 // The share-out cuts the box across x or y, whichever cuts the runs of sphere numbers
-// less: the pile's lattice numbers its spheres row by row along x, so its shares are
-// slabs of y, and with x and y swapped slabs of x. Either way the spheres whose pairs
-// a thread takes come in long runs of numbers, broken mostly where the landing mixed
-// the row on the border (about 190 changes of thread in this pile); slabs across the
-// rows change thread at every row as well (about 360), and the threads wait for each
-// other as often.
+// less, where each thread gets about half the spheres. The pile's lattice numbers its
+// spheres row by row along x, so its shares are slabs of y, and with x and y swapped
+// slabs of x. Either way the spheres whose pairs a thread takes come in long runs of
+// numbers, broken mostly where the landing mixed the row on the border (about 190
+// changes of thread in the landed pile); slabs across the rows change thread at every
+// row as well (about 360), and the threads wait for each other as often. Also: a
+// lattice of 32 spheres a row (a count of changes taken at every fourth number saw
+// none, on either axis), and a sphere flung far along y (slabs of equal width left the
+// other thread nothing).
 TEST(SharedPairs, EachThreadTakesLongRunsOfSphereNumbers) {
     const physics::World landed = run(pile({}), 60);
-    for (bool swapped : {false, true}) {
-        physics::World world = landed;
-        if (swapped) {
-            for (glm::dvec3& p : world.position) std::swap(p.x, p.y);  // the box is square in x and y
-        }
-        world.workspace = physics::Workspace{};
-        const physics::Params params = pile({"threads=2"}).params;
-        physics::StepStats stats;
-        physics::findOrderedPairs(world, params, stats);
-        const physics::Workspace& ws = world.workspace;
-        ASSERT_EQ(ws.shareThreads, 2);
-        std::vector<int> threadOf(world.size(), -1);  // of each first sphere
-        for (std::uint32_t t = 0; t < 2; ++t) {
-            for (std::uint32_t k = ws.shareStart[t]; k < ws.shareStart[t + 1]; ++k) threadOf[ws.sharedPairs[k].i] = int(t);
-        }
-        std::size_t changes = 0;
-        int last = -1;
-        for (int t : threadOf) {
-            if (t < 0) continue;
-            changes += last >= 0 && t != last;
-            last = t;
-        }
-        const char* how = swapped ? "x and y swapped" : "as generated";
-        EXPECT_LT(changes, world.size() / 20) << how;
-        EXPECT_GT(changes, 2u) << how << ": both threads have pairs all along the numbers";
+    physics::World swapped = landed, flung = landed;
+    for (glm::dvec3& p : swapped.position) std::swap(p.x, p.y);  // the box is square in x and y
+    flung.position[0].y = 50.0;                                     // m, far outside the box
+    const std::pair<const char*, physics::World> worlds[] = {
+        {"landed", landed},
+        {"x and y swapped", swapped},
+        {"32 a row", scenes::buildWorld(pile({"radius=0.0275"}))},
+        {"one sphere flung", flung},
+    };
+    for (const auto& [how, world] : worlds) {
+        const ShareOut share = shareOutOf(world);
+        EXPECT_LT(share.changes, world.size() / 20) << how;
+        EXPECT_GT(share.changes, 2u) << how << ": both threads have pairs all along the numbers";
+        EXPECT_GT(share.pairs, world.size()) << how;
+        EXPECT_GT(share.fewestPairs, share.pairs / 4) << how;
     }
 }
 
