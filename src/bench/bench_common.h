@@ -122,6 +122,14 @@ inline std::string grouped(long long value) {
 }
 
 // A list of whole numbers "1000,4k,16k,1M"; false when a part is not one.
+// Simulated seconds from 0 to 600 (the steps they take are counted in an int): false
+// when `text` is not such a number.
+inline bool parseSimulatedSeconds(const std::string& text, double& seconds) {
+    char* end = nullptr;
+    seconds = std::strtod(text.c_str(), &end);
+    return !text.empty() && *end == '\0' && seconds >= 0.0 && seconds <= 600.0;
+}
+
 inline bool parseCounts(const std::string& text, std::vector<int>& out) {
     out.clear();
     std::size_t start = 0;

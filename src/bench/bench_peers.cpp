@@ -126,6 +126,13 @@ double parsePositive(const std::string& option, const char* text) {
     return value;
 }
 
+double simulatedSeconds(const std::string& option, const char* text) {
+    double seconds = 0.0;
+    if (!bench::parseSimulatedSeconds(text, seconds))
+        usageError(option + " " + text + ": expected simulated seconds from 0 to 600");
+    return seconds;
+}
+
 // s: a time step written as seconds (0.004) or as a fraction (1/60), from 1 us to 1 s.
 double parseStep(const std::string& text) {
     const auto number = [](const std::string& part) {
@@ -207,13 +214,9 @@ Options parseOptions(int argc, char** argv) {
             o.repetitions = int(parsePositive(option, value));
             if (o.repetitions < 1) usageError("--reps: at least 1");
         } else if (option == "--settle") {
-            char* end = nullptr;
-            o.settle = std::strtod(value, &end);
-            if (*end != '\0' || !(o.settle >= 0.0)) usageError("--settle: expected seconds >= 0");
+            o.settle = simulatedSeconds(option, value);
         } else if (option == "--warm-up") {
-            char* end = nullptr;
-            o.warmUp = std::strtod(value, &end);
-            if (*end != '\0' || !(o.warmUp >= 0.0)) usageError("--warm-up: expected seconds >= 0");
+            o.warmUp = simulatedSeconds(option, value);
         } else if (option == "--block") {
             o.block = parsePositive(option, value);
         } else if (option == "--allpairs-max-n") {

@@ -91,7 +91,10 @@ Options parseOptions(int argc, char** argv) {
         else if (option == "--threads") o.threads = countsFrom(option, value);
         else if (option == "--k") o.passes = countsFrom(option, value).front();
         else if (option == "--order") o.order = value;
-        else if (option == "--warm-up") o.warmUp = std::atof(value);
+        else if (option == "--warm-up") {
+            if (!bench::parseSimulatedSeconds(value, o.warmUp))
+                usageError(option + " " + value + ": expected simulated seconds from 0 to 600");
+        }
         else if (option == "--reps") o.repetitions = countsFrom(option, value).front();
         else usageError("unknown option " + option);
     }

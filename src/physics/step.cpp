@@ -121,12 +121,14 @@ struct Slabs {
 // right quantiles, few enough to cost nothing next to the share-out.
 constexpr std::size_t kSlabSample = 4096;
 
-// `count` slabs across `axis`, cut at the quantiles of an even sample of the centres
-// (`sample` is scratch). A centre that is not finite goes to the first slab.
+// `count` slabs across `axis`, cut at the quantiles of a sample of the centres (`sample`
+// is scratch). The sample's numbers are scattered by a multiplicative hash, so that no
+// stride lines up with the rows of a lattice. A centre not finite goes to the first slab.
 Slabs slabsAcross(const World& world, int axis, int count, std::vector<double>& sample) {
     sample.clear();
-    const std::size_t stride = world.size() / kSlabSample + 1;
-    for (std::size_t i = 0; i < world.size(); i += stride) {
+    const std::uint64_t n = world.size(), taken = std::min<std::uint64_t>(n, kSlabSample);
+    for (std::uint64_t k = 0; k < taken; ++k) {
+        const std::uint64_t i = taken == n ? k : (k * 2654435761u) % n;
         if (std::isfinite(world.position[i][axis])) sample.push_back(world.position[i][axis]);
     }
     Slabs slabs{axis, count, {}};
@@ -142,8 +144,11 @@ Slabs slabsAcross(const World& world, int axis, int count, std::vector<double>& 
 // How many times the slab changes from one sphere number to the next.
 std::size_t slabChanges(const World& world, const Slabs& slabs) {
     std::size_t changes = 0;
+    std::uint32_t last = world.size() > 0 ? slabs.of(world.position[0]) : 0u;
     for (std::size_t i = 1; i < world.size(); ++i) {
-        changes += slabs.of(world.position[i]) != slabs.of(world.position[i - 1]);
+        const std::uint32_t slab = slabs.of(world.position[i]);
+        changes += slab != last;
+        last = slab;
     }
     return changes;
 }
@@ -154,11 +159,16 @@ std::size_t slabChanges(const World& world, const Slabs& slabs) {
 // number the spheres row by row along x, layer by layer up z, so slabs of x cut every
 // row (a wait every few dozen pairs), slabs of y each layer once. Not z: for these
 // numbers its slabs are ranges of numbers, whole layers, and each thread would wait for
-// the one below (shares by ranges of numbers measured 1.0x).
+// the one below (shares by ranges of numbers measured 1.0x). An axis with no change at
+// all has every sphere in one slab (all centres at one coordinate): the other wins.
 Slabs shareSlabs(World& world, int threads) {
     std::vector<double>& sample = world.workspace.slabSample;
     const Slabs x = slabsAcross(world, 0, threads, sample), y = slabsAcross(world, 1, threads, sample);
-    return slabChanges(world, y) < slabChanges(world, x) ? y : x;
+    const auto cost = [&](const Slabs& slabs) {
+        const std::size_t changes = slabChanges(world, slabs);
+        return changes > 0 ? changes : world.size();
+    };
+    return cost(y) < cost(x) ? y : x;
 }
 
 // Shares visitOrder's pairs out between `threads` threads (Workspace::sharedPairs): by

@@ -255,18 +255,20 @@ ShareOut shareOutOf(physics::World world) {
 // changes of thread in the landed pile); slabs across the rows change thread at every
 // row as well (about 360), and the threads wait for each other as often. Also: a
 // lattice of 32 spheres a row (a count of changes taken at every fourth number saw
-// none, on either axis), and a sphere flung far along y (slabs of equal width left the
-// other thread nothing).
+// none, on either axis), a sphere flung far along y (slabs of equal width left the
+// other thread nothing), and every centre at x = 0 (slabs of x: no change, one thread).
 TEST(SharedPairs, EachThreadTakesLongRunsOfSphereNumbers) {
     const physics::World landed = run(pile({}), 60);
-    physics::World swapped = landed, flung = landed;
+    physics::World swapped = landed, flung = landed, flat = landed;
     for (glm::dvec3& p : swapped.position) std::swap(p.x, p.y);  // the box is square in x and y
     flung.position[0].y = 50.0;                                     // m, far outside the box
+    for (glm::dvec3& p : flat.position) p.x = 0.0;                  // one slab of x holds all
     const std::pair<const char*, physics::World> worlds[] = {
         {"landed", landed},
         {"x and y swapped", swapped},
         {"32 a row", scenes::buildWorld(pile({"radius=0.0275"}))},
         {"one sphere flung", flung},
+        {"every x at 0", flat},
     };
     for (const auto& [how, world] : worlds) {
         const ShareOut share = shareOutOf(world);
