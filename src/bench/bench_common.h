@@ -121,7 +121,6 @@ inline std::string grouped(long long value) {
     return value < 0 ? "-" + digits : digits;
 }
 
-// A list of whole numbers "1000,4k,16k,1M"; false when a part is not one.
 // Simulated seconds from 0 to 600 (the steps they take are counted in an int): false
 // when `text` is not such a number.
 inline bool parseSimulatedSeconds(const std::string& text, double& seconds) {
@@ -130,6 +129,7 @@ inline bool parseSimulatedSeconds(const std::string& text, double& seconds) {
     return !text.empty() && *end == '\0' && seconds >= 0.0 && seconds <= 600.0;
 }
 
+// A list of whole numbers "1000,4k,16k,1M"; false when a part is not one.
 inline bool parseCounts(const std::string& text, std::vector<int>& out) {
     out.clear();
     std::size_t start = 0;

@@ -97,9 +97,9 @@ struct Workspace {
     std::vector<TaskScratch> tasks;         // one per parallel task
     // With several threads the pairs are shared out: thread t visits
     // sharedPairs[shareStart[t], shareStart[t + 1]), the pairs whose first sphere lies in
-    // its slab (of x or y, step.cpp's shareSlabs), in pass order. Where a pair's sphere met a pair of another thread
-    // last, it waits for that pair (PairNeed), so every sphere still meets its pairs in
-    // pass order: the result of one thread, bit for bit.
+    // its slab (of x or y, step.cpp's shareSlabs), in pass order. Where a pair's sphere
+    // met a pair of another thread last, it waits for that pair (PairNeed), so every
+    // sphere still meets its pairs in pass order: the result of one thread, bit for bit.
     struct PairNeed {
         std::uint32_t thread = 0;  // the other thread
         std::uint32_t done = 0;    // how many of its pairs must be done; 0: no need
