@@ -10,7 +10,12 @@
 // The "hash" column is the state hash after the timed steps of the first
 // repetition: equal for every thread count, or the row says DIFFERENT (and the
 // program exits with 1), since threads must never change the result.
+//
+// With --busy B it compares instead one thread, two and automatic threads on the pile
+// at 16k and 64k spheres, alone and beside B busy processes that it starts and stops
+// itself: what a student's laptop running a browser and a video call does to threads.
 //   usage: spheres_bench_solver --help
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -20,9 +25,16 @@
 #include <string>
 #include <vector>
 
+#ifdef __linux__
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#endif
+
 #include "bench/bench_common.h"
 #include "physics/diagnostics.h"
 #include "physics/step.h"
+#include "physics/thread_team.h"
 
 namespace {
 
@@ -36,7 +48,12 @@ struct Options {
     int repetitions = 3;
     bool mixNumbers = false;  // shuffle the spheres' numbers after the warm-up
     bool chains = false;      // print how much of a pass could run side by side
+    int busy = 0;             // --busy: busy processes beside the loaded runs
+    bool countsGiven = false, threadsGiven = false;  // --n, --threads (--busy has its own defaults)
 };
+
+// The most seconds a busy process of --busy lives, whatever happens to this one.
+constexpr unsigned kBusyLifetime = 900;
 
 const char* const kUsage =
     "usage: spheres_bench_solver [options]\n"
@@ -51,7 +68,10 @@ const char* const kUsage =
     "  --mix-numbers  after the warm-up, shuffle the spheres' numbers (the same places and\n"
     "                 speeds): memory visited out of order, as in a gas that has run long\n"
     "  --chains       also print, per N, how much of a pass could run side by side with\n"
-    "                 the same result (chains of pairs that share a sphere)\n";
+    "                 the same result (chains of pairs that share a sphere)\n"
+    "  --busy B       instead: threads 1, 2 and auto on N = 16k,64k, alone and beside B busy\n"
+    "                 processes (started and stopped here), 2 s per run; prints the ratios\n"
+    "                 (--n, --threads with 'auto' for automatic, --reps apply)\n";
 
 [[noreturn]] void usageError(const std::string& why) {
     std::fprintf(stderr, "spheres_bench_solver: %s\n%s", why.c_str(), kUsage);
@@ -62,6 +82,18 @@ std::vector<int> countsFrom(const std::string& option, const char* text) {
     std::vector<int> counts;
     if (!bench::parseCounts(text, counts)) usageError(option + " " + text + ": expected numbers such as 1k,64k,1M");
     return counts;
+}
+
+// Thread counts such as "1,2,auto" (auto: 0).
+std::vector<int> threadsFrom(const std::string& option, const std::string& text) {
+    std::vector<int> threads;
+    for (std::size_t start = 0; start <= text.size();) {
+        const std::size_t comma = std::min(text.find(',', start), text.size());
+        const std::string part = text.substr(start, comma - start);
+        threads.push_back(part == "auto" ? 0 : countsFrom(option, part.c_str()).front());
+        start = comma + 1;
+    }
+    return threads;
 }
 
 Options parseOptions(int argc, char** argv) {
@@ -87,8 +119,17 @@ Options parseOptions(int argc, char** argv) {
         }
         if (k + 1 >= argc) usageError(option + ": expected a value after it");
         const char* value = argv[++k];
-        if (option == "--n") o.counts = countsFrom(option, value);
-        else if (option == "--threads") o.threads = countsFrom(option, value);
+        if (option == "--n") {
+            o.counts = countsFrom(option, value);
+            o.countsGiven = true;
+        } else if (option == "--threads") {
+            o.threads = threadsFrom(option, value);
+            o.threadsGiven = true;
+        }
+        else if (option == "--busy") {
+            o.busy = countsFrom(option, value).front();
+            if (o.busy > 64) usageError(option + " " + value + ": at most 64 busy processes");
+        }
         else if (option == "--k") o.passes = countsFrom(option, value).front();
         else if (option == "--order") o.order = value;
         else if (option == "--warm-up") {
@@ -215,10 +256,111 @@ Row measure(int count, const Options& options) {
     return row;
 }
 
+// --busy: processes that spin on a core each until this object ends (or for
+// kBusyLifetime seconds, should this process die first).
+class BusyProcesses {
+public:
+    explicit BusyProcesses(int count) {
+#ifdef __linux__
+        for (int k = 0; k < count; ++k) {
+            const pid_t pid = fork();
+            if (pid == 0) {
+                prctl(PR_SET_PDEATHSIG, SIGKILL);
+                alarm(kBusyLifetime);
+                for (volatile unsigned long spin = 0;; spin = spin + 1) {
+                }
+            }
+            if (pid > 0) pids_.push_back(pid);
+        }
+#endif
+        if (int(pids_.size()) != count) {
+            std::fprintf(stderr, "spheres_bench_solver: --busy: could not start %d busy processes\n", count);
+            std::exit(2);
+        }
+    }
+    ~BusyProcesses() {
+#ifdef __linux__
+        for (pid_t pid : pids_) kill(pid, SIGKILL);
+        for (pid_t pid : pids_) waitpid(pid, nullptr, 0);
+#endif
+    }
+    BusyProcesses(const BusyProcesses&) = delete;
+    BusyProcesses& operator=(const BusyProcesses&) = delete;
+
+private:
+    std::vector<int> pids_;
+};
+
+// s of wall time a run of --busy may take at most: a collapsing thread count ends
+// early, with its time per step from the steps it made.
+constexpr double kLongestLoadedRun = 20.0;
+
+struct LoadedRun {
+    std::vector<double> secondsPerStep;  // per repetition
+    physics::StepStats last;             // the last step's: threads, slowerThreads
+};
+
+// The pile of `count` spheres from `start`, `steps` steps with `threads` (0: auto).
+void timeLoadedRun(const physics::World& start, int count, int threads, int steps, const Options& options,
+                   LoadedRun& run) {
+    const scenes::Scene scene = pileOf(count, options, threads);
+    physics::World world = start;
+    const auto begin = std::chrono::steady_clock::now();
+    int done = 0;
+    while (done < steps && bench::secondsSince(begin) < kLongestLoadedRun) {
+        run.last = physics::step(world, scene.params);
+        ++done;
+    }
+    run.secondsPerStep.push_back(bench::secondsSince(begin) / (done * scene.params.substeps));
+}
+
+std::string threadsName(int threads) { return threads == 0 ? "auto" : std::to_string(threads); }
+
+// --busy: each thread count alone and beside `options.busy` busy processes, interleaved.
+int compareUnderLoad(Options options) {
+    if (!options.countsGiven) options.counts = {16000, 64000};
+    if (!options.threadsGiven) options.threads = {1, 2, 0};
+    std::printf("Pile (%s), K = %d, alone and beside %d busy processes, %s, %d usable cores; load average %s\n\n",
+                bench::presetContaining("pile").c_str(), options.passes, options.busy, bench::cpuModel().c_str(),
+                physics::usableCores(), bench::loadAverage().c_str());
+    std::printf("| N | beside | threads | ms per solver step | time / one thread's | threads at the end |\n");
+    std::printf("|---:|---|---:|---:|---:|---|\n");
+    for (int count : options.counts) {
+        scenes::Scene scene = pileOf(count, options, 1);
+        physics::World start = scenes::buildWorld(scene);
+        const auto warmUpStart = std::chrono::steady_clock::now();
+        const int warmUpSteps = int(std::lround(options.warmUp / scene.params.timeStep));
+        for (int k = 0; k < warmUpSteps; ++k) physics::step(start, scene.params);
+        const double perStep = bench::secondsSince(warmUpStart) / std::max(1, warmUpSteps);
+        const int steps = std::max(1, int(2.0 / std::max(perStep, 1e-9)));
+        std::map<int, LoadedRun> alone, loaded;
+        for (int rep = 0; rep < options.repetitions; ++rep) {
+            for (int threads : options.threads) timeLoadedRun(start, count, threads, steps, options, alone[threads]);
+            const BusyProcesses busy(options.busy);
+            for (int threads : options.threads) timeLoadedRun(start, count, threads, steps, options, loaded[threads]);
+        }
+        for (const auto* runs : {&alone, &loaded}) {
+            const double one = runs->count(1) ? bench::median(runs->at(1).secondsPerStep) : std::nan("");
+            for (int threads : options.threads) {
+                const LoadedRun& run = runs->at(threads);
+                const double seconds = bench::median(run.secondsPerStep);
+                std::string end = std::to_string(run.last.threads);
+                if (run.last.slowerThreads > 0) end += " (" + std::to_string(run.last.slowerThreads) + " were slower)";
+                std::printf("| %s | %s | %s | %.3f | %.2f | %s |\n", bench::grouped(count).c_str(),
+                            runs == &alone ? "nothing" : (std::to_string(options.busy) + " busy").c_str(),
+                            threadsName(threads).c_str(), 1e3 * seconds, seconds / one, end.c_str());
+            }
+        }
+        std::fflush(stdout);
+    }
+    return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     const Options options = parseOptions(argc, argv);
+    if (options.busy > 0) return compareUnderLoad(options);
     std::printf("Pile (%s), K = %d, order %s%s, %s; load average %s at the start\n\n",
                 bench::presetContaining("pile").c_str(), options.passes, options.order.c_str(),
                 options.mixNumbers ? ", numbers shuffled after the warm-up" : "",

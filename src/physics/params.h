@@ -44,8 +44,8 @@ struct Params {
     PositionSplit split = PositionSplit::HalfHalf;
     PairOrder order = PairOrder::Index;
     BroadPhase broadPhase = BroadPhase::Grid;
-    // Threads the solver may use, 0: one per core (at most 8) from 8192 spheres, one
-    // below. Any count gives the same result, bit for bit, in every order: a thread
+    // Threads the solver may use, 0: one per usable core (at most 8) from 8192 spheres,
+    // one below, and one while more were measured slower (AutomaticThreads). Any count gives the same result, bit for bit, in every order: a thread
     // waits before a pair until the pair that met one of its spheres before is done.
     // Small worlds (under 4096 spheres) use one whatever the count.
     int threads = 0;

@@ -59,13 +59,8 @@ void forEachSphere(World& world, const Params& params, StepStats& stats, const V
     for (const StepStats& s : taskStats) stats += s;
 }
 
-// A thread tells the others how far it got after at most this many pairs.
+// A share's thread tells the others how far it got after at most this many pairs.
 constexpr std::uint32_t kLongestRun = 32;
-
-// How many pairs one thread has done, on a cache line of its own.
-struct alignas(64) PairProgress {
-    std::atomic<std::uint32_t> done{0};
-};
 
 // Whether the passes run on several threads, each its share of the pairs.
 inline bool pairsSharedOut(const World& world, const Params& params) {
@@ -79,42 +74,120 @@ inline const std::vector<SpherePair>& pairsAsVisited(const World& world, const P
     return pairsSharedOut(world, params) ? world.workspace.sharedPairs : world.workspace.visitOrder;
 }
 
+// One pass over the pairs shared out between threads (Workspace::sharedPairs), with
+// the result of the pass order: each share's pairs in order, each pair after the
+// pairs of other shares that met its spheres before (Workspace::pairNeeds). A share
+// is advanced by one thread at a time, normally its own; a thread that waits for a
+// share that nobody is advancing (its thread has no core: other processes took them)
+// advances it itself after a short spin, so that a wait costs at most the rest of
+// one run of pairs, never a scheduler's time slice. No waits go round in a circle:
+// the earliest pair not done in the pass order has every need met.
+template <class Visit>
+class SharedPass {
+public:
+    SharedPass(const World& world, int threads, const Visit& visit)
+        : ws_(world.workspace), pairs_(world.workspace.sharedPairs.data()), visit_(visit),
+          spin_(spinningPays(threads)), shares_(static_cast<std::size_t>(threads)) {}
+
+    // Task `share`: returns once every pair of the share is done, by whichever thread.
+    void finish(std::uint32_t share, StepStats& stats) {
+        Seen seen{};
+        awaitDone(share, size(share), seen, stats, true);
+    }
+
+private:
+    // A share's word: 2 x (pairs done) + 1 while a thread advances it.
+    struct alignas(64) Share {
+        WatchedWord word;
+    };
+    static std::uint32_t doneIn(unsigned word) { return word >> 1; }
+    static bool taken(unsigned word) { return (word & 1u) != 0; }
+
+    // What a thread last read of each share's pairs done (they only grow).
+    struct Seen {
+        std::uint32_t done[kMostSolverThreads];
+    };
+
+    std::uint32_t size(std::uint32_t s) const { return ws_.shareStart[s + 1] - ws_.shareStart[s]; }
+    bool met(const Workspace::PairNeed& need, const Seen& seen) const { return need.done <= seen.done[need.thread]; }
+    bool ready(std::uint32_t k, const Seen& seen) const {
+        return met(ws_.pairNeeds[2 * k], seen) && met(ws_.pairNeeds[2 * k + 1], seen);
+    }
+
+    // Returns once `count` pairs of share s are done. Advances the share when nobody
+    // else does: at once if it is this thread's own, after a spin if not.
+    void awaitDone(std::uint32_t s, std::uint32_t count, Seen& seen, StepStats& stats, bool own) {
+        WatchedWord& word = shares_[s].word;
+        for (unsigned w = word.load();; w = word.load()) {
+            seen.done[s] = doneIn(w);
+            if (doneIn(w) >= count) return;
+            if (taken(w)) {
+                word.awaitChange(w, spin_);
+            } else if ((own || word.spinForChange(w, spin_) == w) && word.compareExchange(w, w | 1u)) {
+                advance(s, count, seen, stats);
+            }
+        }
+    }
+
+    // The first need of pair k not met (refreshing `seen`), or none.
+    const Workspace::PairNeed* unmetNeed(std::uint32_t k, Seen& seen) const {
+        for (const Workspace::PairNeed* need : {&ws_.pairNeeds[2 * k], &ws_.pairNeeds[2 * k + 1]}) {
+            if (met(*need, seen)) continue;
+            seen.done[need->thread] = doneIn(shares_[need->thread].word.load());
+            if (!met(*need, seen)) return need;
+        }
+        return nullptr;
+    }
+
+    // With share s taken: its pairs until `count` are done. Where a pair must wait for
+    // another share, s is given back while that one is awaited (and advanced, if
+    // nobody does), then taken again unless another thread has taken it meanwhile.
+    void advance(std::uint32_t s, std::uint32_t count, Seen& seen, StepStats& stats) {
+        WatchedWord& word = shares_[s].word;
+        const std::uint32_t first = ws_.shareStart[s], last = ws_.shareStart[s + 1];
+        std::uint32_t k = first + seen.done[s];
+        while (k - first < count) {
+            if (const Workspace::PairNeed* need = unmetNeed(k, seen)) {
+                const unsigned givenBack = 2 * (k - first);
+                word.store(givenBack);
+                awaitDone(need->thread, need->done, seen, stats, false);
+                if (!word.compareExchange(givenBack, givenBack | 1u)) return;
+                continue;
+            }
+            // A run of pairs whose needs are met already, told done at its end.
+            std::uint32_t end = k + 1;
+            while (end < last && end - k < kLongestRun && ready(end, seen)) ++end;
+            visit_(pairs_, k, end, stats);
+            word.store(2 * (end - first) + 1);
+            k = end;
+        }
+        word.store(2 * (k - first));
+    }
+
+    const Workspace& ws_;
+    const SpherePair* pairs_;
+    const Visit& visit_;
+    const bool spin_;  // waits spin before they sleep (spinningPays)
+    std::vector<Share> shares_;
+};
+
 // visit(pairs, first, last, stats) on ranges [first, last) of pairs = pairsAsVisited()
 // that together give the result of visiting them in pass order: on one thread the pass
-// order itself; on several, each thread its share, pair by pair, each after the pairs
-// of other threads that met its spheres before.
+// order itself; on several, SharedPass.
 template <class Visit>
 void forEachPairInPassOrder(World& world, const Params& params, StepStats& stats, const Visit& visit) {
     const Workspace& ws = world.workspace;
     const int threads = threadsFor(world, params);
-    const SpherePair* pairs = pairsAsVisited(world, params).data();
     if (!pairsSharedOut(world, params)) {
-        visit(pairs, 0u, std::uint32_t(ws.visitOrder.size()), stats);
+        visit(ws.visitOrder.data(), 0u, std::uint32_t(ws.visitOrder.size()), stats);
         return;
     }
     std::vector<StepStats> taskStats(static_cast<std::size_t>(threads));
-    std::vector<PairProgress> progress(static_cast<std::size_t>(threads));
-    runTasks(threads, threads, [&](int thread) {
+    SharedPass<Visit> pass(world, threads, visit);
+    runTasks(threads, threads, [&](int share) {
         StepStats local;  // neighbours in taskStats share cache lines: count apart
-        std::uint32_t seen[kMostSolverThreads] = {};  // what this thread last read of each other's progress
-        const auto ready = [&](std::uint32_t k) {
-            return ws.pairNeeds[2 * k].done <= seen[ws.pairNeeds[2 * k].thread] &&
-                   ws.pairNeeds[2 * k + 1].done <= seen[ws.pairNeeds[2 * k + 1].thread];
-        };
-        std::atomic<std::uint32_t>& done = progress[std::size_t(thread)].done;
-        const std::uint32_t first = ws.shareStart[std::size_t(thread)], last = ws.shareStart[std::size_t(thread) + 1];
-        for (std::uint32_t k = first; k < last;) {
-            for (const Workspace::PairNeed& need : {ws.pairNeeds[2 * k], ws.pairNeeds[2 * k + 1]}) {
-                if (need.done > seen[need.thread]) seen[need.thread] = awaitAtLeast(progress[need.thread].done, need.done);
-            }
-            // A run of pairs whose needs are met already, told done at its end.
-            std::uint32_t end = k + 1;
-            while (end < last && end - k < kLongestRun && ready(end)) ++end;
-            visit(pairs, k, end, local);
-            done.store(end - first, std::memory_order_release);
-            k = end;
-        }
-        taskStats[std::size_t(thread)] = local;
+        pass.finish(std::uint32_t(share), local);
+        taskStats[std::size_t(share)] = local;
     });
     for (const StepStats& s : taskStats) stats += s;
 }

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cassert>
+#include <chrono>
 #include <cmath>
-#include <thread>
 #include <utility>
 
 #include <glm/geometric.hpp>
@@ -206,12 +206,27 @@ void sharePairsOut(World& world, int threads) {
 
 }  // namespace
 
+namespace {
+
+// The threads automatic mode starts with: one per core this process may use.
+int automaticMany() {
+    static const int cores = usableCores();
+    return std::min(cores, kMostAutomaticThreads);
+}
+
+// Whether automatic mode chooses this world's threads (AutomaticThreads).
+bool threadsChosenAutomatically(const World& world, const Params& params) {
+    return params.threads == 0 && world.size() >= kAutomaticParallelMinSpheres && automaticMany() > 1;
+}
+
+}  // namespace
+
 int solverThreads(const World& world, const Params& params) {
     if (world.size() < kParallelMinSpheres) return 1;
     if (params.threads > 0) return std::min(params.threads, kMostSolverThreads);
-    if (world.size() < kAutomaticParallelMinSpheres) return 1;
-    static const int cores = int(std::thread::hardware_concurrency());
-    return std::clamp(cores, 1, kMostAutomaticThreads);
+    if (!threadsChosenAutomatically(world, params)) return 1;
+    const int chosen = world.workspace.automaticThreads.current();
+    return chosen > 0 ? chosen : automaticMany();
 }
 
 StepStats& StepStats::operator+=(const StepStats& o) {
@@ -393,11 +408,21 @@ StepStats step(World& world, const Params& params) {
     StepStats stats;
     world.contacts.clear();
     const double h = params.solverStep();
+    AutomaticThreads& automatic = world.workspace.automaticThreads;
     for (int s = 0; s < params.substeps; ++s) {
+        // A step that logs its contacts runs on one thread whatever the choice: not timed.
+        const bool timed = threadsChosenAutomatically(world, params) && !world.recordContacts;
+        if (timed) automatic.next(automaticMany());
+        const auto start = std::chrono::steady_clock::now();
         std::fill(world.contactState.begin(), world.contactState.end(), ContactState::Free);
         stats += solverStep(world, params, h);
         world.time += h;
         ++world.stepCount;
+        stats.threads = threadsFor(world, params);
+        if (timed) {
+            automatic.record(stats.threads, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        }
+        stats.slowerThreads = timed ? automatic.slowerCount() : 0;
     }
     return stats;
 }

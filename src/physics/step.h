@@ -21,6 +21,10 @@ struct StepStats {
     // find first: contacts, wall clearances, and the velocity method's cancelling).
     double broadPhaseSeconds = 0.0;
     double passesSeconds = 0.0;
+    // The threads the last solver step used, and with automatic threads a count that
+    // was measured slower than it (AutomaticThreads), 0 none. Set by step(), not summed.
+    int threads = 1;
+    int slowerThreads = 0;
     StepStats& operator+=(const StepStats& o);
 };
 

@@ -9,13 +9,37 @@
 #include <thread>
 #include <vector>
 
+#ifdef __linux__
+#include <sched.h>
+#endif
+
 namespace physics {
 namespace {
 
 // A solver step hands out a dozen stages, each a fraction of a millisecond long:
 // waking a sleeping thread would cost as much as the stage. Workers therefore spin
-// this long for the next stage before they sleep.
+// this long for the next stage before they sleep (when the threads fit the cores:
+// else a spin takes the core from a thread that has work).
 constexpr auto kSpinTime = std::chrono::microseconds(200);
+// A task watching another's progress (WatchedWord) spins this long before it sleeps:
+// most such waits are for a few pairs, a microsecond or two.
+constexpr auto kWatchSpinTime = std::chrono::microseconds(20);
+
+// Polls done() until it holds (true) or `time` has passed (false), telling the core
+// that this is a spin (pause). Never sched_yield: with other processes on the cores,
+// the scheduler takes a yield as "run everyone else first", a time slice each
+// (milliseconds) instead of a microsecond; a waiter that must wait longer sleeps.
+template <class Done>
+bool spinUntil(const Done& done, std::chrono::microseconds time) {
+    const auto deadline = std::chrono::steady_clock::now() + time;
+    for (unsigned polls = 1;; ++polls) {
+        if (done()) return true;
+        if (polls % 64 == 0 && std::chrono::steady_clock::now() >= deadline) return false;
+#if defined(__x86_64__) || defined(__i386__)
+        __builtin_ia32_pause();
+#endif
+    }
+}
 
 class Team {
 public:
@@ -38,64 +62,69 @@ public:
             workers_.emplace_back([this, id, seen] { work(id, seen); });
         }
         {
-            // Under the lock, with the generation: a worker reads them under it too, so
-            // it sees the helper count of the generation it wakes for, never the next
-            // run's (which would make it drain and count itself done twice).
             std::lock_guard<std::mutex> lock(mutex_);
             function_ = function;
             context_ = context;
             taskCount_ = tasks;
             nextTask_.store(0);
             helpers_ = helpers;
-            pending_.store(helpers);
+            spin_ = spinningPays(helpers + 1);
+            open_ = true;
             ++generation_;
         }
         wake_.notify_all();
         drain();
-        awaitHelpers();
+        // Every task is taken. A worker that has not joined yet (the cores are busy with
+        // other processes, say) is not waited for: it will skip this run.
+        {
+            std::lock_guard<std::mutex> lock(mutex_);
+            open_ = false;
+        }
+        awaitJoinedWorkers();
     }
 
 private:
+    std::chrono::microseconds spinTime() const { return spin_ ? kSpinTime : std::chrono::microseconds(0); }
+
     void drain() {
         for (int t = nextTask_.fetch_add(1); t < taskCount_; t = nextTask_.fetch_add(1)) function_(context_, t);
     }
 
-    void awaitHelpers() {
-        const auto spinUntil = std::chrono::steady_clock::now() + kSpinTime;
-        while (pending_.load() > 0 && std::chrono::steady_clock::now() < spinUntil) std::this_thread::yield();
+    void awaitJoinedWorkers() {
+        if (spinUntil([this] { return active_.load() == 0; }, spinTime())) return;
         std::unique_lock<std::mutex> lock(mutex_);
-        done_.wait(lock, [this] { return pending_.load() == 0; });
+        finished_.wait(lock, [this] { return active_.load() == 0; });
     }
 
-    // Waits for a generation after `seen`; false when the team is stopping. `helpers`:
-    // how many workers that generation's run asked for.
-    bool awaitWork(std::uint64_t& seen, int& helpers) {
-        const auto spinUntil = std::chrono::steady_clock::now() + kSpinTime;
-        while (generation_.load() == seen && std::chrono::steady_clock::now() < spinUntil) {
-            std::this_thread::yield();
+    // Waits for a run after generation `seen` that this worker may join, and joins it
+    // (under the lock that closes it); false when the team is stopping.
+    bool join(int id, std::uint64_t& seen) {
+        for (;;) {
+            spinUntil([&] { return generation_.load() != seen; }, spinTime());
+            std::unique_lock<std::mutex> lock(mutex_);
+            wake_.wait(lock, [&] { return generation_.load() != seen; });
+            seen = generation_.load();
+            if (stopping_) return false;
+            if (open_ && id < helpers_) {  // not over yet, and it asked for this many threads
+                ++active_;
+                return true;
+            }
         }
-        std::unique_lock<std::mutex> lock(mutex_);
-        wake_.wait(lock, [&] { return generation_.load() != seen; });
-        seen = generation_.load();
-        helpers = helpers_;
-        return !stopping_;
     }
 
     void work(int id, std::uint64_t seen) {
-        int helpers = 0;
-        while (awaitWork(seen, helpers)) {
-            if (id >= helpers) continue;  // this run needs fewer threads
+        while (join(id, seen)) {
             drain();
-            if (pending_.fetch_sub(1) == 1) {
+            if (active_.fetch_sub(1) == 1) {
                 std::lock_guard<std::mutex> lock(mutex_);
-                done_.notify_one();
+                finished_.notify_one();
             }
         }
     }
 
     std::mutex runMutex_;  // runs from several threads take turns
     std::mutex mutex_;
-    std::condition_variable wake_, done_;
+    std::condition_variable wake_, finished_;
     std::vector<std::thread> workers_;
     std::atomic<std::uint64_t> generation_{0};
     bool stopping_ = false;
@@ -104,7 +133,9 @@ private:
     int taskCount_ = 0;
     int helpers_ = 0;
     std::atomic<int> nextTask_{0};
-    std::atomic<int> pending_{0};
+    std::atomic<bool> spin_{true};  // the last run's threads fit the cores: waits spin first
+    bool open_ = false;           // workers may join the run (under mutex_)
+    std::atomic<int> active_{0};  // workers that joined the run and have not finished
 };
 
 }  // namespace
@@ -114,12 +145,42 @@ void runTasksOnTeam(int threads, int tasks, TaskFunction function, const void* c
     team.run(threads, tasks, function, context);
 }
 
-unsigned awaitAtLeast(const std::atomic<unsigned>& counter, unsigned value) {
-    for (int spins = 0;; ++spins) {
-        const unsigned now = counter.load(std::memory_order_acquire);
-        if (now >= value) return now;
-        if (spins > 64) std::this_thread::yield();
+void WatchedWord::store(unsigned value) {
+    word_.store(value);  // seq_cst, as the sleepers' count below and in awaitChange:
+    if (sleepers_.load() > 0) {  // either this sees a sleeper, or the sleeper sees the word
+        std::lock_guard<std::mutex> lock(mutex_);
+        changed_.notify_all();
     }
+}
+
+unsigned WatchedWord::spinForChange(unsigned seen, bool spin) const {
+    unsigned now = seen;
+    spinUntil([&] { return (now = word_.load()) != seen; }, spin ? kWatchSpinTime : std::chrono::microseconds(0));
+    return now;
+}
+
+unsigned WatchedWord::awaitChange(unsigned seen, bool spin) const {
+    const unsigned now = spinForChange(seen, spin);
+    if (now != seen) return now;
+    std::unique_lock<std::mutex> lock(mutex_);
+    sleepers_.fetch_add(1);
+    unsigned changed = seen;
+    changed_.wait(lock, [&] { return (changed = word_.load()) != seen; });
+    sleepers_.fetch_sub(1);
+    return changed;
+}
+
+bool spinningPays(int threads) {
+    static const int cores = usableCores();
+    return threads <= cores;
+}
+
+int usableCores() {
+#ifdef __linux__
+    cpu_set_t allowed;
+    if (sched_getaffinity(0, sizeof allowed, &allowed) == 0) return std::max(1, CPU_COUNT(&allowed));
+#endif
+    return std::max(1, int(std::thread::hardware_concurrency()));
 }
 
 }  // namespace physics

@@ -4,6 +4,8 @@
 // result: the stages give threads work on disjoint spheres, or make a task wait
 // until the one that met a sphere before it is done, and sum what they count after.
 #include <atomic>
+#include <condition_variable>
+#include <mutex>
 
 namespace physics {
 
@@ -17,9 +19,10 @@ void runTasksOnTeam(int threads, int tasks, TaskFunction function, const void* c
 
 // task(0) ... task(tasks - 1): in order on the caller with one thread or one task,
 // else on the team. (A template, so that no std::function allocates per stage.)
-// Tasks may wait for each other (awaitAtLeast) when tasks <= threads: the team has
-// threads - 1 workers besides the caller, so a task that no thread has taken yet
-// always has an idle thread on its way to take it.
+// A task may wait for another (WatchedWord) only if it can do that task's work
+// itself when no thread has taken it: the caller's thread may be the only one that
+// runs (the workers may not get a core before the tasks are done; then they skip
+// the call).
 template <class Task>
 void runTasks(int threads, int tasks, const Task& task) {
     if (threads <= 1 || tasks <= 1) {
@@ -30,9 +33,39 @@ void runTasks(int threads, int tasks, const Task& task) {
                    &task);
 }
 
-// Returns the value of `counter` (written by another task of the same runTasks call)
-// once it has reached `value`. Waiting spins (the wait is for a few pairs), then
-// yields, so that more threads than cores still make progress.
-unsigned awaitAtLeast(const std::atomic<unsigned>& counter, unsigned value);
+// A word that the tasks of one runTasks call publish to and watch (how far a
+// task has got). A watcher spins for a few microseconds (most waits are for a few
+// pairs), then sleeps until the word changes: when other processes share the
+// cores, a sleeping watcher leaves its core to the thread it waits for instead of
+// competing with it for time slices.
+class WatchedWord {
+public:
+    unsigned load() const { return word_.load(); }
+    // Sets the word and wakes its sleeping watchers.
+    void store(unsigned value);
+    // Sets the word to `desired` if it is `expected` (no watcher needs waking: take
+    // only what a store will give back).
+    bool compareExchange(unsigned expected, unsigned desired) { return word_.compare_exchange_strong(expected, desired); }
+    // The word once it differs from `seen`: spins (if `spin`), then sleeps.
+    unsigned awaitChange(unsigned seen, bool spin) const;
+    // The word once it differs from `seen`, or after the spin (then it may be `seen`).
+    unsigned spinForChange(unsigned seen, bool spin) const;
+
+private:
+    std::atomic<unsigned> word_{0};
+    mutable std::atomic<int> sleepers_{0};
+    mutable std::mutex mutex_;
+    mutable std::condition_variable changed_;
+};
+
+// Whether a thread waiting for one of `threads` threads should spin before it sleeps:
+// only while they fit the usable cores (more, and the spin takes the core from a
+// thread that has work).
+bool spinningPays(int threads);
+
+// The cores this process may run on: its CPU affinity mask where the system has
+// one (a container or `taskset` may allow fewer than the machine has), else the
+// hardware's count; at least 1.
+int usableCores();
 
 }  // namespace physics

@@ -7,6 +7,8 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "physics/automatic_threads.h"
+
 namespace physics {
 
 // A plane is a point and a unit normal pointing into the free side (slide 3). With a
@@ -122,6 +124,8 @@ struct Workspace {
     std::vector<SphereContact> pairContacts;   // valid where pairTouches
     std::vector<std::uint32_t> wallStart;      // sphere i's wall contacts: [wallStart[i], wallStart[i + 1])
     std::vector<WallContact> wallContacts;     // by sphere, then plane
+    // Params::threads = 0: the count in use, measured against the other (step()).
+    AutomaticThreads automaticThreads;
 };
 
 struct World {

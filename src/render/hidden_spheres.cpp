@@ -39,7 +39,7 @@ constexpr int kTasksPerThread = 4;
 constexpr int kMostThreads = 8;
 
 int threadsFor(std::size_t spheres, int asked) {
-    static const int cores = int(std::thread::hardware_concurrency());
+    static const int cores = physics::usableCores();
     if (asked > 0) return std::min(asked, physics::kMostSolverThreads);
     return spheres < kParallelMinSpheres ? 1 : std::clamp(cores, 1, kMostThreads);
 }

@@ -204,8 +204,10 @@ std::vector<Parameter> makeTable() {
         zeroMeaning("auto",
                     integer("threads", "solver threads", 0, physics::kMostSolverThreads,
                             kDefaults.threads,
-                            "Threads the solver uses; 0 (auto): one per core (at most 8) from "
-                            "8192 spheres, where a second thread starts to pay, and one below. "
+                            "Threads the solver uses; 0 (auto): one per usable core (at most 8) from "
+                            "8192 spheres, where a second thread starts to pay, and one below; "
+                            "auto tries one thread now and then and keeps it while more were "
+                            "slower (other programs busy on the cores). "
                             "The result is the same, bit for bit, for any count and pair order: "
                             "each thread takes the pairs of its slab of the box, and waits where "
                             "a sphere met another thread's pair last, so each sphere still meets "

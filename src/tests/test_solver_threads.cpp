@@ -15,6 +15,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "physics/automatic_threads.h"
 #include "physics/diagnostics.h"
 #include "physics/solver_stages.h"
 #include "physics/step.h"
@@ -104,7 +105,7 @@ TEST(SolverThreads, PositionMethodLeavesNoSphereInAWallOfTheBoxOnAnyThreadCount)
 // two cores, two threads gained nothing at 6k); a count set by hand applies from 4096
 // spheres. (On a machine of one core, automatic is one thread at any count.)
 TEST(SolverThreads, AutomaticThreadsStartWhereASecondThreadPays) {
-    const int cores = std::clamp(int(std::thread::hardware_concurrency()), 1, 8);
+    const int cores = std::min(physics::usableCores(), 8);
     const auto threadsAt = [](int count, const std::string& threads) {
         const scenes::Scene scene = pile({"radius=0.02", "count=" + std::to_string(count), "threads=" + threads});
         return physics::solverThreads(scenes::buildWorld(scene), scene.params);
@@ -114,6 +115,117 @@ TEST(SolverThreads, AutomaticThreadsStartWhereASecondThreadPays) {
     EXPECT_EQ(threadsAt(8192, "0"), cores);
     EXPECT_EQ(threadsAt(4096, "2"), 2);
     EXPECT_EQ(threadsAt(4095, "2"), 1);
+}
+
+// A task watching another's word sleeps once its spin is over, and wakes when the
+// word changes: also when it sleeps long before the change (20 ms, far beyond the
+// spin), and not when the same value is stored again.
+TEST(ThreadTeam, AWatcherWakesWhenTheWordChanges) {
+    for (const int delayMs : {0, 20}) {
+        physics::WatchedWord word;
+        std::atomic<unsigned> seen{0};
+        std::atomic<bool> woke{false};
+        std::thread watcher([&] {
+            seen = word.awaitChange(0, true);
+            woke = true;
+        });
+        std::this_thread::sleep_for(std::chrono::milliseconds(delayMs));
+        word.store(0);
+        std::this_thread::sleep_for(std::chrono::milliseconds(delayMs));
+        EXPECT_FALSE(woke.load()) << "woke while the word was unchanged";
+        word.store(5);
+        watcher.join();
+        EXPECT_EQ(seen.load(), 5u);
+    }
+    physics::WatchedWord word;
+    word.store(3);
+    EXPECT_EQ(word.spinForChange(3, true), 3u) << "gives up after its spin";
+    EXPECT_FALSE(word.compareExchange(2, 7));
+    EXPECT_TRUE(word.compareExchange(3, 7));
+    EXPECT_EQ(word.load(), 7u);
+}
+
+// A share whose thread never comes (another process has its core) is advanced by
+// the thread that waits for it: here the caller alone finishes share 0, whose pair k
+// needs pair k of share 1, and visits every pair after the pair it needs.
+TEST(ThreadTeam, AThreadThatWaitsForAShareNobodyAdvancesAdvancesItItself) {
+    constexpr std::uint32_t kPerShare = 100;
+    physics::World world;
+    physics::Workspace& ws = world.workspace;
+    ws.sharedPairs.assign(2 * kPerShare, physics::SpherePair{});
+    ws.shareStart = {0, kPerShare, 2 * kPerShare};
+    ws.pairNeeds.assign(4 * kPerShare, physics::Workspace::PairNeed{});
+    for (std::uint32_t k = 0; k < kPerShare; ++k) ws.pairNeeds[2 * k] = {1, k + 1};  // share 1 done >= k + 1
+    std::vector<std::uint32_t> visited;
+    const auto visit = [&](const physics::SpherePair*, std::uint32_t first, std::uint32_t last, physics::StepStats&) {
+        for (std::uint32_t k = first; k < last; ++k) visited.push_back(k);
+    };
+    physics::SharedPass<decltype(visit)> pass(world, 2, visit);
+    physics::StepStats stats;
+    pass.finish(0, stats);  // no other thread: share 1 has nobody
+    ASSERT_EQ(visited.size(), 2 * kPerShare) << "share 0, and all of share 1 that it needed";
+    std::vector<std::size_t> at(2 * kPerShare);
+    for (std::size_t n = 0; n < visited.size(); ++n) at[visited[n]] = n;
+    for (std::uint32_t k = 0; k < kPerShare; ++k) {
+        EXPECT_LT(at[kPerShare + k], at[k]) << "pair " << k << " of share 0 came before the pair it needs";
+        if (k > 0) EXPECT_LT(at[k - 1], at[k]) << "share 0 out of order";
+        if (k > 0) EXPECT_LT(at[kPerShare + k - 1], at[kPerShare + k]) << "share 1 out of order";
+    }
+    pass.finish(1, stats);  // already done: returns at once
+    EXPECT_EQ(visited.size(), 2 * kPerShare);
+}
+
+// Automatic threads measure both counts and keep the faster. Fed wall times as a
+// loaded machine gives them (one thread faster), then as a quiet one (two faster).
+TEST(AutomaticThreads, GoesBackToOneThreadWhenTwoWereSlowerAndReturnsWhenTheyPayAgain) {
+    using physics::AutomaticThreads;
+    AutomaticThreads automatic;
+    const auto runSteps = [&](int steps, double oneSeconds, double twoSeconds, std::map<int, int>& used) {
+        for (int k = 0; k < steps; ++k) {
+            automatic.next(2);
+            const int threads = automatic.current();
+            ++used[threads];
+            automatic.record(threads, threads == 1 ? oneSeconds : twoSeconds);
+        }
+    };
+    std::map<int, int> used;
+    runSteps(AutomaticThreads::kFirstTry, 0.010, 0.030, used);
+    EXPECT_EQ(used[2], AutomaticThreads::kFirstTry) << "the cores' count first";
+    runSteps(AutomaticThreads::kSamples, 0.010, 0.030, used);
+    EXPECT_EQ(used[1], AutomaticThreads::kSamples) << "then one thread, tried";
+    EXPECT_EQ(automatic.current(), 1) << "one was faster: it stays";
+    EXPECT_EQ(automatic.slowerCount(), 2) << "the readouts say 'threads: 1 (2 were slower)'";
+
+    used.clear();
+    runSteps(AutomaticThreads::kStepsBetweenTries + AutomaticThreads::kSamples, 0.010, 0.030, used);
+    EXPECT_EQ(used[2], AutomaticThreads::kSamples) << "two tried again after kStepsBetweenTries steps";
+    EXPECT_EQ(automatic.current(), 1) << "still slower: one stays";
+
+    used.clear();
+    runSteps(AutomaticThreads::kStepsBetweenTries + AutomaticThreads::kSamples, 0.010, 0.006, used);
+    EXPECT_EQ(automatic.current(), 2) << "the load has gone: two are faster again";
+    EXPECT_EQ(automatic.slowerCount(), 0);
+    used.clear();
+    runSteps(AutomaticThreads::kStepsBetweenTries + AutomaticThreads::kSamples, 0.010, 0.006, used);
+    EXPECT_EQ(used[1], AutomaticThreads::kSamples) << "one thread tried now and then";
+    EXPECT_EQ(automatic.current(), 2);
+}
+
+// A median, not a mean: one slow step of two threads (a rebuild of the pairs costs
+// ten steps) just before one thread is tried does not make two look slower.
+TEST(AutomaticThreads, OneSlowStepDoesNotDecide) {
+    physics::AutomaticThreads automatic;
+    int oneThreadSteps = 0;
+    for (int step = 0; step < 110; ++step) {
+        automatic.next(2);
+        const int threads = automatic.current();
+        oneThreadSteps += threads == 1;
+        const double rebuild = step == physics::AutomaticThreads::kFirstTry - 3 ? 10.0 : 1.0;
+        automatic.record(threads, (threads == 1 ? 0.010 : 0.006) * rebuild);
+    }
+    EXPECT_EQ(oneThreadSteps, physics::AutomaticThreads::kSamples) << "one thread was tried once";
+    EXPECT_EQ(automatic.current(), 2);
+    EXPECT_EQ(automatic.slowerCount(), 0);
 }
 
 TEST(SolverThreads, EveryMethodAndOrderReachesTheSameStateOnAnyThreadCount) {

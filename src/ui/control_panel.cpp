@@ -172,6 +172,14 @@ void frameTimings(const Readouts& r) {
             "(the broad phase: a grid, or all N(N-1)/2 pairs; the pair tests are its distance tests, none when no sphere "
             "moved far enough to need new pairs), then the K collision passes over the "
             "candidates. Switch the broad phase to compare.");
+    if (s.slowerThreads > 0) {
+        ImGui::Text("solver threads %d (%d were slower)", s.threads, s.slowerThreads);
+    } else {
+        ImGui::Text("solver threads %d", s.threads);
+    }
+    tooltip("The threads of the last solver step. With 'solver threads' on auto the solver "
+            "tries one thread now and then, and keeps it while more were slower (other "
+            "programs busy on the same cores). Any count gives the same result.");
 }
 
 void readoutsBody(const Readouts& r, PanelActions& actions) {
