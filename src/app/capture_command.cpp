@@ -330,9 +330,9 @@ void UiOverlay::layout(Simulation& simulation) {
     panelPixels_ = ui::panelWidth(panel_, ImGui::GetIO().DisplaySize.x);
     // No wall times: they would make equal runs differ.
     ui::Readouts readouts = makeReadouts(simulation, ui::FrameTimes{});
-    ui::PanelActions actions = ui::drawControlPanel(
-        simulation.editableScene(), simulation.timeScale, readouts, panel_, presets_);
-    ui::drawReadouts(readouts, actions);
+    ui::PanelActions actions =
+        ui::drawControlPanel(simulation.scene(), simulation.timeScale, readouts, panel_, presets_);
+    ui::drawReadouts(readouts, panel_, actions);
     ImGui::Render();
 }
 

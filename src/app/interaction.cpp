@@ -6,6 +6,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "scenes/parameters.h"
+
 namespace app {
 namespace {
 
@@ -124,6 +126,32 @@ std::optional<glm::dvec3> SphereDrag::move(const physics::World& world, const re
 glm::dvec3 SphereDrag::release() {
     active_ = false;
     return tracker_.velocity();
+}
+
+std::string checkSphereFields(const physics::World& world, const SphereFields& f) {
+    const auto finite = [](const glm::dvec3& x) { return std::isfinite(x.x) && std::isfinite(x.y) && std::isfinite(x.z); };
+    const auto number = [](double x) { return scenes::formatNumber(x); };
+    if (!finite(f.p) || !finite(f.v) || !std::isfinite(f.r) || !std::isfinite(f.m)) {
+        return "cannot edit: every value must be a finite number";
+    }
+    if (f.r < kEditRadius[0] || f.r > kEditRadius[1]) {
+        return "cannot edit: r = " + number(f.r) + " m is outside " + number(kEditRadius[0]) + " to " +
+               number(kEditRadius[1]) + " m";
+    }
+    if (f.m < kEditMass[0] || f.m > kEditMass[1]) {
+        return "cannot edit: m = " + number(f.m) + " kg is outside " + number(kEditMass[0]) + " to " +
+               number(kEditMass[1]) + " kg";
+    }
+    if (glm::length(f.v) > kEditSpeed) {
+        return "cannot edit: |v| = " + number(glm::length(f.v)) + " m/s is above " + number(kEditSpeed) + " m/s";
+    }
+    double room = std::numeric_limits<double>::infinity();  // m: the largest radius that fits at p
+    for (int k = 0; k < world.boxPlaneCount; ++k) room = std::min(room, clearance(world.planes[std::size_t(k)], f.p, 0.0));
+    if (room <= 0.0) return "cannot edit: p lies outside the box";
+    if (f.r > room + kInsideSlack) {
+        return "cannot edit: r = " + number(f.r) + " m does not fit at this p: at most " + number(room) + " m there";
+    }
+    return "";
 }
 
 void placeSphere(physics::World& world, std::size_t index, const glm::dvec3& p, const glm::dvec3& v) {

@@ -88,6 +88,17 @@ struct SphereFields {
     double m = 1.0;     // kg
 };
 
+// The ranges an edited sphere must keep: the radius parameter's (m), a mass (kg) the
+// impulses stay well within double precision for, and the fastest shot (m/s).
+constexpr double kEditRadius[2] = {0.005, 0.5};
+constexpr double kEditMass[2] = {1e-3, 1e3};
+constexpr double kEditSpeed = 100.0;
+
+// "" when `fields` may be put into a sphere of `world`: finite numbers within the
+// ranges above, and the sphere wholly inside the box; else one line naming the value
+// and its limit ("r = 5 m does not fit at p: at most 1.2 m there").
+std::string checkSphereFields(const physics::World& world, const SphereFields& fields);
+
 // Puts sphere `index` at p with velocity v (a drag, an edit) and makes the next
 // step rebuild its candidate pairs.
 void placeSphere(physics::World& world, std::size_t index, const glm::dvec3& p, const glm::dvec3& v);

@@ -88,11 +88,23 @@ bool InteractionInput::toggleCompare(double now) {
         say(now, "side by side: off");
         return true;
     }
+    return applyCompare(now);
+}
+
+bool InteractionInput::applyCompare(double now) {
     if (const std::string error = session_.startComparison({tools_.compareText}); !error.empty()) {
         say(now, "cannot compare: %s", error.c_str());
         return false;
     }
-    say(now, "side by side: both restarted from the scene's initial state");
+    const Comparison& comparison = *session_.comparison();
+    const std::string primary = comparison.primaryLabel(session_.run(0).scene());
+    if (primary == comparison.label()) {
+        say(now, "side by side: %s in both views: the overrides change nothing, so the two views are the same",
+            primary.c_str());
+    } else {
+        say(now, "side by side: %s against %s, both restarted from the scene's initial state", primary.c_str(),
+            comparison.label().c_str());
+    }
     foldReadouts_ = true;
     return true;
 }
@@ -103,10 +115,14 @@ void InteractionInput::toggleExplainer() {
 
 bool InteractionInput::apply(const ToolActions& a, const ViewLayout& views, const render::Camera& camera, double now) {
     if (a.deselect) session_.select(-1);
-    if (a.edited) session_.editSelected(a.fields);
+    if (a.edited) {
+        tools_.inspectorRefusal = session_.editSelected(a.fields);
+        tools_.refusedSphere = session_.selected();
+    }
     if (a.shoot) shoot(views, camera, false, now);
     if (a.toggleExplainer) tools_.explainer = !tools_.explainer;
     if (a.scrub) session_.scrubTo(a.scrubTo);
+    if (a.applyCompare) return applyCompare(now);
     return a.toggleCompare && toggleCompare(now);
 }
 

@@ -29,6 +29,9 @@ public:
     void shoot(const ViewLayout& views, const render::Camera& camera, bool throughMouse, double now);
     // V: side by side on or off (both restart); true when the views changed shape.
     bool toggleCompare(double now);
+    // Side by side with the overrides' field, on or again; says what the views differ
+    // in, or that they do not. False when refused (the runs stay as they were).
+    bool applyCompare(double now);
     // E: the explainer, for the selected sphere.
     void toggleExplainer();
     // The tool windows' actions; true when the views changed shape.
@@ -42,8 +45,10 @@ public:
     // "name=value,..." given on the command line: side by side from the start.
     std::string startComparison(const std::vector<std::string>& lists);
 
-private:
+    // The message centred above the timeline bar, for a few seconds from `now`.
     void say(double now, const char* format, ...) __attribute__((format(printf, 3, 4)));
+
+private:
 
     Session& session_;
     ToolWindowsState tools_;

@@ -10,6 +10,7 @@
 #include "app/contact_explanation.h"
 #include "app/session.h"
 #include "app/view_labels.h"
+#include "ui/wrapped_text.h"
 
 namespace app {
 namespace {
@@ -63,7 +64,6 @@ bool scalarField(const char* label, double& value, bool editable) {
     return ImGui::InputScalar(label, ImGuiDataType_Double, &value, nullptr, nullptr, "%.4g", flags);
 }
 
-bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 // "vs #40, pass 2, bounce" or "floor, pass 1, static" for a contact of `selected`.
 std::string contactTitle(const physics::ContactEvent& event, int selected, int boxPlaneCount) {
@@ -135,7 +135,11 @@ void drawTimelineBar(const glm::vec4& scene, const TimelineInfo& timeline, bool 
             "Turning it on restarts both.");
     ImGui::SameLine();
     ImGui::SetNextItemWidth(std::max(ImGui::GetContentRegionAvail().x, ImGui::GetFontSize() * 6.0f));
-    ImGui::InputTextWithHint("##compare", "name=value,...", &state.compareText);
+    if (ImGui::InputTextWithHint("##compare", "name=value,...", &state.compareText,
+                                 ImGuiInputTextFlags_EnterReturnsTrue)) {
+        actions.applyCompare = true;  // Enter: side by side (again) with these overrides
+    }
+    tooltip("name=value overrides for the right view; Enter applies them (and turns side by side on).");
     ImGui::End();
 }
 
@@ -150,7 +154,9 @@ void drawMessage(const glm::vec4& scene, const ToolWindowsState& state) {
                  kFixed | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoInputs | ImGuiWindowFlags_AlwaysAutoResize);
     const bool refused = state.message.find("cannot") != std::string::npos;  // "cannot ...", "A: cannot ..."
     ImGui::PushStyleColor(ImGuiCol_Text, refused ? kNoteColor : kResultColor);
+    ImGui::PushTextWrapPos(std::min(0.9f * scene.z, ImGui::GetFontSize() * 40.0f));  // long ones wrap, never cut
     ImGui::TextUnformatted(state.message.c_str());
+    ImGui::PopTextWrapPos();
     ImGui::PopStyleColor();
     ImGui::End();
 }
@@ -173,14 +179,13 @@ float drawInspector(const Placement& placement, const physics::World& world, int
     changed |= scalarField("m (kg)", fields.m, paused);
     ImGui::PopItemWidth();
     if (changed) {
-        if (!finite(fields.p) || !finite(fields.v) || !std::isfinite(fields.r) || !std::isfinite(fields.m)) {
-            state.message = "cannot edit: every value must be a finite number";
-        } else if (!(fields.r > 0.0) || !(fields.m > 0.0)) {
-            state.message = "cannot edit: the radius and the mass must be positive";
-        } else {
-            actions.edited = true;
-            actions.fields = fields;
-        }
+        actions.edited = true;
+        actions.fields = fields;
+    }
+    if (!state.inspectorRefusal.empty() && state.refusedSphere == selected) {  // beside the fields; they kept their values
+        ImGui::PushStyleColor(ImGuiCol_Text, kNoteColor);
+        ui::textWrappedAtSpaces(state.inspectorRefusal);
+        ImGui::PopStyleColor();
     }
     const physics::ContactState contact =
         i < world.contactState.size() ? world.contactState[i] : physics::ContactState::Free;
@@ -242,7 +247,7 @@ void drawExplainer(const Placement& placement, const ExplainerInput& input, Tool
                              : line.kind == ExplanationLine::Kind::Note   ? kNoteColor
                                                                           : ImGui::GetStyleColorVec4(ImGuiCol_Text);
         ImGui::PushStyleColor(ImGuiCol_Text, color);
-        ImGui::TextWrapped("%s", line.text.c_str());
+        ui::textWrappedAtSpaces(line.text);
         ImGui::PopStyleColor();
     }
     ImGui::End();

@@ -30,6 +30,8 @@ struct ToolWindowsState {
     float shootSpeed = 10.0f;           // m/s
     std::string compareText = "method=velocity";  // name=value[,name=value] for the second view
     std::string message;                // the last result or refusal
+    std::string inspectorRefusal;       // why the inspector's last edit was refused, shown under its fields
+    int refusedSphere = -1;             // the sphere it was about
 };
 
 struct ToolActions {
@@ -38,6 +40,7 @@ struct ToolActions {
     SphereFields fields;
     bool shoot = false;
     bool toggleCompare = false;
+    bool applyCompare = false;  // Enter in the overrides' field
     bool toggleExplainer = false;
     bool scrub = false;        // restore timeline entry `scrubTo`
     std::size_t scrubTo = 0;

@@ -97,6 +97,26 @@ void Session::sceneChanged() {
     startAgain();
 }
 
+std::string Session::setParameter(const scenes::Parameter& p, double value) {
+    if (p.applies == scenes::Applies::Live) return scenes::setValue(p, primary_.editableScene(), value);
+    scenes::Scene scene = primary_.scene();
+    if (const std::string error = scenes::setValue(p, scene, value); !error.empty()) return error;
+    try {
+        const double timeScale = primary_.timeScale;
+        primary_.setScene(std::move(scene));
+        primary_.timeScale = timeScale;
+    } catch (const std::exception& e) {
+        std::string reason = e.what();  // "generate[0]: the region holds only ...": the file's path is not news here
+        if (reason.rfind("generate[", 0) == 0 && reason.find("]: ") != std::string::npos) {
+            reason.erase(0, reason.find("]: ") + 3);
+        }
+        return std::string(p.name) + " = " + scenes::formatNumber(value) + " refused (it stays " +
+               scenes::formatValue(p, primary_.scene()) + "): " + reason;
+    }
+    startAgain();
+    return "";
+}
+
 void Session::noteContacts() {
     const physics::World& world = primary_.world();
     std::vector<physics::ContactEvent> events;
@@ -108,7 +128,14 @@ void Session::noteContacts() {
 
 void Session::startAgain() {
     latest_ = {};
-    if (comparison_) comparison_->restartFrom(primary_.scene());
+    if (comparison_) {
+        try {
+            comparison_->restartFrom(primary_.scene());
+        } catch (const std::exception& e) {
+            note_ = std::string("side by side stopped: ") + e.what();
+            stopComparison();
+        }
+    }
     rewind_[0].clear();
     rewind_[1].clear();
     stale_[0] = stale_[1] = false;
@@ -139,8 +166,9 @@ void Session::keep() {
     for (int k = 0; k < runCount(); ++k) rewind_[k].push(run(k).world(), selected_);
 }
 
-void Session::editSelected(const SphereFields& fields) {
-    if (selected_ < 0) return;
+std::string Session::editSelected(const SphereFields& fields) {
+    if (selected_ < 0) return "no sphere is selected";
+    if (const std::string refusal = checkSphereFields(primary_.world(), fields); !refusal.empty()) return refusal;
     const auto i = static_cast<std::size_t>(selected_);
     forEachWorld([&](physics::World& world) {
         if (i >= world.size()) return;
@@ -149,6 +177,7 @@ void Session::editSelected(const SphereFields& fields) {
         world.mass[i] = fields.m;
     });
     edited();
+    return "";
 }
 
 bool Session::beginDrag(int view, std::size_t index, const render::Ray& ray, const glm::vec3& facing, double time) {

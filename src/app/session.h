@@ -14,6 +14,7 @@
 #include "app/rewind_buffer.h"
 #include "app/simulation.h"
 #include "render/frame_snapshot.h"
+#include "scenes/parameters.h"
 
 namespace app {
 
@@ -34,14 +35,29 @@ public:
     // ---- stepping: both runs, the same real seconds; frames that stepped are kept ----
     int advance(double realSeconds);
     void singleStep();
-    void restart();       // both runs, from the scene; the timeline starts again
-    void sceneChanged();  // after the primary's setScene (which restarted it): the same, no selection
+    // Both runs from the scene; the timeline starts again. Side by side stops when its
+    // overrides no longer apply to the scene (takeNote() says so).
+    void restart();
+    // After the primary's setScene (which restarted it): the same, no selection.
+    void sceneChanged();
+    // What happened that the user did not ask for (side by side stopped), once; or "".
+    std::string takeNote() { return std::move(note_); }
+
+    // ---- the panel's edits ----
+    // Sets parameter `p` of the primary's scene to `value` as the panel does: a Live
+    // one at the next step, a Restart one by restarting. A value the table refuses, or
+    // one whose scene cannot be built (a count the region cannot hold, a radius too
+    // large for it), is refused: the scene, the worlds and the timeline stay as they
+    // were. Returns "" or the one-line reason.
+    std::string setParameter(const scenes::Parameter& p, double value);
 
     // ---- the selected sphere (-1: none) ----
     int selected() const { return selected_; }
     void select(int index);
     // Puts the fields into every run (sphere `selected()`), and keeps the new state.
-    void editSelected(const SphereFields& fields);
+    // Refused, with every run unchanged, when checkSphereFields refuses them: "" or
+    // the one-line reason.
+    std::string editSelected(const SphereFields& fields);
 
     // ---- mouse: grab `index` of run `view` where `ray` meets the plane through its
     // centre facing the camera; drag it (every run); throw it on release ----
@@ -96,6 +112,7 @@ private:
     SphereDrag drag_;
     Contacts latest_;
     bool catchEveryStep_ = false;
+    std::string note_;
     int dragView_ = 0;
     bool stale_[2] = {false, false};  // edited since the last step: Simulation::diagnostics() is old
 };

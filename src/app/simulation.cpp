@@ -9,12 +9,15 @@ namespace app {
 Simulation::Simulation(scenes::Scene scene) : scene_(std::move(scene)) { restart(); }
 
 void Simulation::setScene(scenes::Scene scene) {
+    physics::World world = scenes::buildWorld(scene);  // throws with everything unchanged
     scene_ = std::move(scene);
-    restart();
+    startFrom(std::move(world));
 }
 
-void Simulation::restart() {
-    world_ = scenes::buildWorld(scene_);
+void Simulation::restart() { startFrom(scenes::buildWorld(scene_)); }
+
+void Simulation::startFrom(physics::World world) {
+    world_ = std::move(world);
     accumulator_ = 0.0;
     lastStats_ = {};
     behind_ = false;

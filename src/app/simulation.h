@@ -21,6 +21,8 @@ public:
 
     // Rebuilds the world from the scene (same seed, same initial state).
     void restart();
+    // Builds the world from `scene`, then takes both; throws (scenes::SceneError) when
+    // the scene cannot be built, with the scene and the world unchanged.
     void setScene(scenes::Scene scene);
 
     // Real seconds since the last frame: scaled by timeScale, accumulated, and spent
@@ -74,6 +76,7 @@ public:
     static constexpr int kMaxStepsPerFrame = 32;
 
 private:
+    void startFrom(physics::World world);  // the clock, history, alarms... start again
     void stepOnce();
     // Around every stepOnce(): false from beforeStep() when the world holds a value
     // that is not finite (then the step must not run); afterStep() feeds the alarms,

@@ -14,6 +14,7 @@
 #include "app/frame_builder.h"
 #include "app/interaction_input.h"
 #include "app/interaction_windows.h"
+#include "app/output_files.h"
 #include "app/scene_source.h"
 #include "app/session.h"
 #include "app/simulation.h"
@@ -53,6 +54,9 @@ private:
     void apply(const ui::PanelActions& actions);
     void loadPreset(int index);
     void loadFile(const std::string& path);
+    void notify(ui::PanelState::FileButton at, const std::string& text, bool error);
+    template <class Write>
+    std::string writeOutput(ui::PanelState::FileButton at, const char* stem, const char* extension, const Write& write);
     void rebuildFont();
     void resetCamera();
     void fitCamera();
@@ -86,6 +90,7 @@ WindowApp::WindowApp(std::unique_ptr<platform::Window> window, scenes::Scene sce
     simulation_.paused = options.paused;
     simulation_.wallBudget = kStepBudgetSeconds;
     panel_.scenePath = resolveScenePath(options.scene);
+    panel_.outputFolder = outputFolder();
     for (std::size_t k = 0; k < presets_.size(); ++k) {
         if (scenes::presetPath(presets_[k]) == panel_.scenePath) panel_.presetIndex = static_cast<int>(k);
     }
@@ -208,36 +213,72 @@ void WindowApp::loadFile(const std::string& path) {
         const double timeScale = simulation_.timeScale;
         simulation_.setScene(scenes::loadScene(path));
         simulation_.timeScale = timeScale;
-        session_.sceneChanged();
         panel_.scenePath = path;
         panel_.presetIndex = -1;
-        panel_.message.clear();
+        panel_.scrollToTop = true;
+        panel_.refusal.clear();
+        session_.sceneChanged();
+        notify(ui::PanelState::FileButton::Scene, "loaded " + path, false);
         resetCamera();
     } catch (const std::exception& e) {
-        panel_.message = e.what();  // a broken file is reported in the panel, the demo goes on
+        // A broken file is reported under the Load button; the demo goes on with the scene it had.
+        notify(ui::PanelState::FileButton::Scene, e.what(), true);
     }
+}
+
+void WindowApp::notify(ui::PanelState::FileButton at, const std::string& text, bool error) {
+    panel_.noticeAt = at;
+    panel_.notice = text;
+    panel_.noticeIsError = error;
+}
+
+// A new file in the output folder, written by `write(path)` (false: it failed); the
+// notice goes under the button `at`. Returns the path, or "" when nothing was written.
+template <class Write>
+std::string WindowApp::writeOutput(ui::PanelState::FileButton at, const char* stem, const char* extension,
+                                   const Write& write) {
+    std::string error;
+    const std::string path = freshPath(panel_.outputFolder, stem, extension, error);
+    if (path.empty()) {
+        notify(at, error, true);
+        return "";
+    }
+    try {
+        if (!write(path)) {
+            notify(at, "cannot write " + path, true);
+            return "";
+        }
+    } catch (const std::exception& e) {
+        notify(at, e.what(), true);
+        return "";
+    }
+    notify(at, "wrote " + path, false);
+    return path;
 }
 
 void WindowApp::apply(const ui::PanelActions& a) {
     if (a.togglePause) simulation_.paused = !simulation_.paused;
     if (a.step) session_.singleStep();
     if (a.restart) session_.restart();
+    for (const ui::PanelActions::Edit& edit : a.edits) {
+        // Refused: the slider shows the value it had, and why under it.
+        panel_.refusal = session_.setParameter(*edit.parameter, edit.value);
+        panel_.refusedName = std::string(edit.parameter->name);
+    }
     if (a.resetCamera) resetCamera();
     if (a.fontChanged) rebuildFont();
     if (a.screenshot) screenshotRequested_ = true;
     if (a.preset >= 0) loadPreset(a.preset);
     if (!a.loadPath.empty()) loadFile(a.loadPath);
-    if (!a.savePath.empty()) {
-        try {
-            scenes::saveScene(a.savePath, simulation_.scene(), simulation_.world());
-            panel_.message = "saved " + a.savePath;
-        } catch (const std::exception& e) {
-            panel_.message = e.what();
-        }
+    if (a.saveState) {
+        writeOutput(ui::PanelState::FileButton::Scene, "state", "json", [&](const std::string& path) {
+            scenes::saveScene(path, simulation_.scene(), simulation_.world());
+            return true;
+        });
     }
     if (a.exportCsv) {
-        const std::string path = "spheres_plots.csv";
-        panel_.message = simulation_.history().writeCsv(path) ? "wrote " + path : "cannot write " + path;
+        writeOutput(ui::PanelState::FileButton::Plots, "plots", "csv",
+                    [&](const std::string& path) { return simulation_.history().writeCsv(path); });
     }
 }
 
@@ -285,9 +326,8 @@ void WindowApp::frame(double dt) {
     drawScene();
     ui::Readouts readouts = makeReadouts(simulation_, timing_);
     readouts.diagnostics = session_.diagnostics(0);  // measured again after an edit or a step back
-    ui::PanelActions actions =
-        ui::drawControlPanel(simulation_.editableScene(), simulation_.timeScale, readouts, panel_, presets_);
-    ui::drawReadouts(readouts, actions);
+    ui::PanelActions actions = ui::drawControlPanel(simulation_.scene(), simulation_.timeScale, readouts, panel_, presets_);
+    ui::drawReadouts(readouts, panel_, actions);
     if (input_.takeFoldReadouts()) ImGui::SetWindowCollapsed("Readouts", true);  // the views' labels carry them
     const float panel = ui::panelWidth(panel_, ImGui::GetMainViewport()->WorkSize.x);
     const ToolActions tools = drawInteractionWindows(session_, layout(), panel, input_.tools());
@@ -295,10 +335,11 @@ void WindowApp::frame(double dt) {
     imguiRenderer_.render(ImGui::GetDrawData());
     apply(actions);
     if (input_.apply(tools, layout(), camera_, window_->time())) fitCamera();
+    if (const std::string note = session_.takeNote(); !note.empty()) input_.say(window_->time(), "%s", note.c_str());
     if (screenshotRequested_) {
-        char name[64];
-        std::snprintf(name, sizeof name, "spheres_%llu.png", static_cast<unsigned long long>(std::time(nullptr)));
-        panel_.message = saveScreenshot(name) ? std::string("screenshot: ") + name : "cannot write the screenshot";
+        const std::string path = writeOutput(ui::PanelState::FileButton::Screenshot, "screenshot", "png",
+                                             [&](const std::string& p) { return saveScreenshot(p); });
+        if (!path.empty()) input_.say(window_->time(), "screenshot: %s", path.c_str());  // F12: the panel may be folded
         screenshotRequested_ = false;
     }
 }

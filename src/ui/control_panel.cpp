@@ -6,6 +6,7 @@
 #include <imgui_stdlib.h>
 
 #include "scenes/parameters.h"
+#include "ui/wrapped_text.h"
 
 namespace ui {
 namespace {
@@ -15,6 +16,7 @@ const ImVec4 kAlarmLit{1.0f, 0.30f, 0.25f, 1.0f};     // red, readable on the da
 const ImVec4 kAlarmDimmed{0.72f, 0.42f, 0.40f, 1.0f};  // fired earlier
 const ImVec4 kHintColor{0.85f, 0.78f, 0.70f, 1.0f};
 const ImVec4 kMeasuredColor{0.55f, 0.85f, 1.0f, 1.0f};
+const ImVec4 kRefusalColor{1.0f, 0.62f, 0.30f, 1.0f};  // orange: refused, nothing changed
 
 void tooltip(std::string_view text) {
     if (!ImGui::IsItemHovered() || text.empty()) return;
@@ -32,9 +34,15 @@ std::string labelOf(const scenes::Parameter& p) {
     return label + "##" + std::string(p.name);
 }
 
-// One widget for one table entry; returns true when the value was committed.
-bool parameterWidget(const scenes::Parameter& p, scenes::Scene& scene) {
-    double value = p.get(scene);
+void wrappedColored(const ImVec4& color, const std::string& text);
+
+// The slider (or list) of one table entry. Its edit goes into `actions`: a Live one
+// while it is dragged, a Restart one when it is let go (meanwhile `state` holds the
+// value shown). Under it, why its last edit was refused.
+void parameterWidget(const scenes::Parameter& p, const scenes::Scene& scene, PanelState& state,
+                     PanelActions& actions) {
+    const bool pending = state.pendingName == p.name;
+    double value = pending ? state.pendingValue : p.get(scene);
     bool changed = false;
     const std::string label = labelOf(p);
     if (p.kind == scenes::ParameterKind::Choice) {
@@ -62,15 +70,31 @@ bool parameterWidget(const scenes::Parameter& p, scenes::Scene& scene) {
                                       "%.4g", logarithmic ? ImGuiSliderFlags_Logarithmic : 0);
     }
     tooltip(p.tooltip);
-    // A restart parameter is committed when the slider is let go, not on every drag frame.
-    const bool commit = p.applies == scenes::Applies::Live ? changed : ImGui::IsItemDeactivatedAfterEdit();
-    if (changed) p.set(scene, value);
-    return commit && p.applies == scenes::Applies::Restart;
+    if (p.applies == scenes::Applies::Live || p.kind == scenes::ParameterKind::Choice) {
+        if (changed) actions.edits.push_back({&p, value});
+    } else {
+        // A restart rebuilds the world: only when the slider is let go, not on every drag frame.
+        if (changed) {
+            state.pendingName = std::string(p.name);
+            state.pendingValue = value;
+        }
+        if (ImGui::IsItemDeactivated() && state.pendingName == p.name) {
+            if (ImGui::IsItemDeactivatedAfterEdit()) actions.edits.push_back({&p, state.pendingValue});
+            state.pendingName.clear();
+        }
+    }
+    if (state.refusedName == p.name && !state.refusal.empty()) wrappedColored(kRefusalColor, state.refusal);
+}
+
+// Under a button that reads or writes a file: what it did, or why not.
+void fileNotice(const PanelState& state, PanelState::FileButton button) {
+    if (state.noticeAt != button || state.notice.empty()) return;
+    wrappedColored(state.noticeIsError ? kRefusalColor : kMeasuredColor, state.notice);
 }
 
 void wrappedColored(const ImVec4& color, const std::string& text) {
     ImGui::PushStyleColor(ImGuiCol_Text, color);
-    ImGui::TextWrapped("%s", text.c_str());
+    textWrappedAtSpaces(text);
     ImGui::PopStyleColor();
 }
 
@@ -129,7 +153,7 @@ void runSection(double& timeScale, const Readouts& r, PanelActions& actions) {
     if (r.behindRealTime) ImGui::TextColored({1.0f, 0.55f, 0.2f, 1.0f}, "behind real time: lower the time scale or N");
 }
 
-void sceneSection(scenes::Scene& scene, PanelState& state, const std::vector<std::string>& presets,
+void sceneSection(const scenes::Scene& scene, PanelState& state, const std::vector<std::string>& presets,
                   PanelActions& actions) {
     const char* current = state.presetIndex >= 0 ? presets[static_cast<std::size_t>(state.presetIndex)].c_str() : "(file)";
     if (ImGui::BeginCombo("preset ([ ])", current)) {
@@ -141,15 +165,23 @@ void sceneSection(scenes::Scene& scene, PanelState& state, const std::vector<std
         ImGui::EndCombo();
     }
     for (const scenes::Parameter& p : scenes::parameterTable()) {
-        if (p.applies == scenes::Applies::Restart && p.availableIn(scene) && parameterWidget(p, scene)) {
-            actions.restart = true;
-        }
+        if (p.applies == scenes::Applies::Restart && p.availableIn(scene)) parameterWidget(p, scene, state, actions);
     }
-    ImGui::InputText("file", &state.scenePath);
+    ImGui::TextUnformatted("scene file");
+    ImGui::SetNextItemWidth(-FLT_MIN);  // the whole width: a path is long
+    ImGui::InputText("##file", &state.scenePath);
+    tooltip(state.scenePath);
     if (ImGui::Button("Load")) actions.loadPath = state.scenePath;
+    tooltip("Loads the scene file named above (a path, or a preset's name).");
     ImGui::SameLine();
-    if (ImGui::Button("Save state")) actions.savePath = state.scenePath;
-    tooltip("Saves the current positions, velocities and parameters as a scene file.");
+    if (ImGui::Button("Save state")) actions.saveState = true;
+    tooltip("Saves the current positions, velocities and parameters as a new scene file in the output folder "
+            "(never over an existing file); Load reads it back.");
+    fileNotice(state, PanelState::FileButton::Scene);
+    if (!state.outputFolder.empty()) {
+        wrappedColored(ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled), "files go to " + state.outputFolder);
+        tooltip("Saved states, exported plots and screenshots are written here, each under a new name.");
+    }
 }
 
 // Where the last frame's time went, and the last step's profile (window only).
@@ -182,7 +214,7 @@ void frameTimings(const Readouts& r) {
             "programs busy on the same cores). Any count gives the same result.");
 }
 
-void readoutsBody(const Readouts& r, PanelActions& actions) {
+void readoutsBody(const Readouts& r, const PanelState& state, PanelActions& actions) {
     const physics::Diagnostics& d = r.diagnostics;
     if (r.timing.fps > 0.0) {
         frameTimings(r);
@@ -225,6 +257,8 @@ void readoutsBody(const Readouts& r, PanelActions& actions) {
                          overlay, FLT_MAX, FLT_MAX, ImVec2(ImGui::GetContentRegionAvail().x, height));
     }
     if (ImGui::Button("Export plots as CSV")) actions.exportCsv = true;
+    tooltip("Writes the plots' samples with their times as a new CSV file in the output folder.");
+    fileNotice(state, PanelState::FileButton::Plots);
 }
 
 void viewSection(PanelState& state, PanelActions& actions) {
@@ -252,6 +286,7 @@ void viewSection(PanelState& state, PanelActions& actions) {
     if (ImGui::Button("Reset view (C)")) actions.resetCamera = true;
     ImGui::SameLine();
     if (ImGui::Button("Screenshot (F12)")) actions.screenshot = true;
+    fileNotice(state, PanelState::FileButton::Screenshot);
 }
 
 }  // namespace
@@ -261,7 +296,7 @@ float panelWidth(const PanelState& state, float displayWidth) {
     return std::min(ImGui::GetFontSize() * 25.0f, displayWidth * 0.45f);
 }
 
-PanelActions drawControlPanel(scenes::Scene& scene, double& timeScale, const Readouts& readouts,
+PanelActions drawControlPanel(const scenes::Scene& scene, double& timeScale, const Readouts& readouts,
                               PanelState& state, const std::vector<std::string>& presetNames) {
     PanelActions actions;
     if (!state.visible) return actions;
@@ -269,6 +304,10 @@ PanelActions drawControlPanel(scenes::Scene& scene, double& timeScale, const Rea
     ImGui::SetNextWindowPos(viewport->WorkPos, ImGuiCond_Always);
     ImGui::SetNextWindowSize(ImVec2(panelWidth(state, viewport->WorkSize.x), viewport->WorkSize.y), ImGuiCond_Always);
     ImGui::Begin("Rigid spheres", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+    if (state.scrollToTop) {  // a new scene: its title and text are what the class reads first
+        ImGui::SetScrollY(0.0f);
+        state.scrollToTop = false;
+    }
     ImGui::PushItemWidth(ImGui::GetFontSize() * 9.5f);
     ImGui::TextWrapped("%s", scene.title.c_str());
     if (!scene.slide.empty()) {  // wrapped: a long slide line must not be cut off
@@ -283,19 +322,18 @@ PanelActions drawControlPanel(scenes::Scene& scene, double& timeScale, const Rea
     if (ImGui::CollapsingHeader("Lecture parameters", ImGuiTreeNodeFlags_DefaultOpen)) {
         for (const scenes::Parameter& p : scenes::parameterTable()) {
             if (p.applies != scenes::Applies::Live || !p.availableIn(scene)) continue;
-            parameterWidget(p, scene);
+            parameterWidget(p, scene, state, actions);
             if (p.name == "beta") measuredRestitution(readouts);
         }
     }
     if (ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) sceneSection(scene, state, presetNames, actions);
     if (ImGui::CollapsingHeader("View and overlays")) viewSection(state, actions);
-    if (!state.message.empty()) ImGui::TextWrapped("%s", state.message.c_str());
     ImGui::PopItemWidth();
     ImGui::End();
     return actions;
 }
 
-void drawReadouts(const Readouts& readouts, PanelActions& actions) {
+void drawReadouts(const Readouts& readouts, const PanelState& state, PanelActions& actions) {
     const ImGuiViewport* viewport = ImGui::GetMainViewport();
     const float margin = ImGui::GetFontSize() * 0.5f;
     ImGui::SetNextWindowPos(ImVec2(viewport->WorkPos.x + viewport->WorkSize.x - margin, viewport->WorkPos.y + margin),
@@ -306,7 +344,7 @@ void drawReadouts(const Readouts& readouts, PanelActions& actions) {
     ImGui::SetNextWindowCollapsed(viewport->WorkSize.x < 1000.0f, ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowBgAlpha(0.82f);
     ImGui::Begin("Readouts", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize);
-    readoutsBody(readouts, actions);
+    readoutsBody(readouts, state, actions);
     ImGui::End();
 }
 

@@ -10,6 +10,7 @@
 
 #include "physics/diagnostics.h"
 #include "physics/step.h"
+#include "scenes/parameters.h"
 #include "scenes/scene.h"
 
 namespace ui {
@@ -30,9 +31,22 @@ struct PanelState {
     bool showTrails = false;       // fading trails of the centres
     bool overlaysOnTop = true;     // seen through spheres in small scenes (app::overlaysOnTop)
     int selectedSphere = -1;       // a picked sphere, -1 none: overlays and measured beta^2 follow it
-    std::string scenePath;     // the load / save field
-    std::string message;       // the last action's result (screenshot path, errors)
+    std::string scenePath;     // the load field
     int presetIndex = -1;      // into the preset list; -1: a file
+    bool scrollToTop = false;  // a new scene: show its title and text
+    // A restart parameter while its slider is held: the value shown, applied on release.
+    std::string pendingName;
+    double pendingValue = 0.0;
+    // The last refused edit, shown under the parameter it was about.
+    std::string refusedName;
+    std::string refusal;
+    // The last file written or read, or why not, shown under the button that did it;
+    // files are written into outputFolder (a full path).
+    enum class FileButton { None, Scene, Plots, Screenshot };
+    FileButton noticeAt = FileButton::None;
+    std::string notice;
+    bool noticeIsError = false;
+    std::string outputFolder;
 };
 
 // Where the last frame's wall time went. A software GL draws after the draw calls
@@ -81,7 +95,13 @@ struct Readouts {
 };
 
 struct PanelActions {
-    bool restart = false;       // a restart parameter changed, or the button
+    // A table parameter set in the panel: Live ones while dragged, Restart ones on release.
+    struct Edit {
+        const scenes::Parameter* parameter = nullptr;
+        double value = 0.0;
+    };
+    std::vector<Edit> edits;
+    bool restart = false;       // the button
     bool togglePause = false;
     bool step = false;
     bool resetCamera = false;
@@ -90,15 +110,16 @@ struct PanelActions {
     bool fontChanged = false;   // uiScale changed: rebuild the font
     int preset = -1;            // load this preset
     std::string loadPath;       // load this scene file
-    std::string savePath;       // save the current state here
+    bool saveState = false;     // save the current state (into the output folder)
 };
 
-// The parameters panel, docked on the left; returns what the app must do.
-PanelActions drawControlPanel(scenes::Scene& scene, double& timeScale, const Readouts& readouts,
+// The parameters panel, docked on the left; returns what the app must do (it never
+// changes the scene itself: the app applies the edits, and may refuse them).
+PanelActions drawControlPanel(const scenes::Scene& scene, double& timeScale, const Readouts& readouts,
                               PanelState& state, const std::vector<std::string>& presetNames);
 
 // The readouts (numbers and plots), floating at the top right of the scene view.
-void drawReadouts(const Readouts& readouts, PanelActions& actions);
+void drawReadouts(const Readouts& readouts, const PanelState& state, PanelActions& actions);
 
 // Width of the docked panel in ImGui units (window coordinates) for a display of
 // `displayWidth`, at the current font size; 0 when the panel is hidden.

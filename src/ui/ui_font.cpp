@@ -34,6 +34,10 @@ void applyStyle(float uiScale) {
     ImGui::StyleColorsDark(&style);
     style.WindowRounding = 0.0f;
     style.FrameRounding = 3.0f;
+    // A see-through grab: the value printed under it stays readable (μ = 0.5 sits
+    // mid-slider, where the grab covered its digits).
+    style.Colors[ImGuiCol_SliderGrab].w = 0.45f;
+    style.Colors[ImGuiCol_SliderGrabActive].w = 0.7f;
     style.ScaleAllSizes(uiScale);
     ImGui::GetStyle() = style;
 }

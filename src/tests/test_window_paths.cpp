@@ -1,0 +1,219 @@
+// The window's own code paths, headless: what the panel and the inspector call
+// (Session::setParameter, Session::editSelected, Session::restart, stepping). Every
+// preset x every parameter of the table x {min, max, 3 between, 2 out of range}, and
+// every field of the inspector likewise: the session stays alive (nothing throws, so
+// nothing ends the window), no value that is not finite enters the state, every
+// refusal is a message and leaves the value as it was.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "app/interaction.h"
+#include "app/interaction_input.h"
+#include "app/session.h"
+#include "app/simulation.h"
+#include "scenes/parameters.h"
+#include "scenes/presets.h"
+#include "scenes/scene_json.h"
+
+namespace {
+
+// min, max, three between (evenly, or evenly in log for a wide positive range), and
+// two out of range; for a choice every index and one beyond each end.
+std::vector<double> valuesToTry(const scenes::Parameter& p) {
+    if (p.kind == scenes::ParameterKind::Choice) {
+        std::vector<double> values{-1.0, double(p.choices.size())};
+        for (std::size_t k = 0; k < p.choices.size(); ++k) values.push_back(double(k));
+        return values;
+    }
+    const bool logarithmic = p.min > 0.0 && p.max / p.min > 100.0;
+    std::vector<double> values{p.min, p.max};
+    for (double f : {0.25, 0.5, 0.75}) {
+        double v = logarithmic ? p.min * std::pow(p.max / p.min, f) : p.min + f * (p.max - p.min);
+        if (p.kind == scenes::ParameterKind::Integer) v = std::round(v);
+        values.push_back(v);
+    }
+    const double span = std::max(1.0, p.max - p.min);
+    values.push_back(p.min - 0.5 * span);
+    values.push_back(p.max + 0.5 * span);
+    return values;
+}
+
+bool finiteState(const physics::World& world) {
+    for (std::size_t i = 0; i < world.size(); ++i) {
+        for (int a = 0; a < 3; ++a) {
+            if (!std::isfinite(world.position[i][a]) || !std::isfinite(world.velocity[i][a])) return false;
+        }
+    }
+    return true;
+}
+
+// A few steps of the window (a frame of 1/30 s, then a single step).
+void stepLikeTheWindow(app::Session& session) {
+    session.advance(1.0 / 30.0);
+    session.singleStep();
+}
+
+struct Tally {
+    int tried = 0, refused = 0;
+};
+
+TEST(WindowPaths, EveryParameterOfEveryPresetIsAppliedOrRefusedWithAMessage) {
+    Tally tally;
+    for (const std::string& name : scenes::listPresets()) {
+        app::Simulation simulation(scenes::loadScene(scenes::presetPath(name)));
+        app::Session session(simulation);
+        for (const scenes::Parameter& p : scenes::parameterTable()) {
+            if (!p.availableIn(simulation.scene())) continue;
+            const double original = p.get(simulation.scene());
+            for (double value : valuesToTry(p)) {
+                SCOPED_TRACE(name + ": " + std::string(p.name) + " = " + scenes::formatNumber(value));
+                const std::string before = scenes::formatValue(p, simulation.scene());
+                const bool inRange = scenes::checkValue(p, value).empty();
+                std::string refusal;
+                ++tally.tried;
+                ASSERT_NO_THROW(refusal = session.setParameter(p, value));
+                if (!refusal.empty()) {
+                    ++tally.refused;
+                    EXPECT_EQ(scenes::formatValue(p, simulation.scene()), before) << "refused, yet changed";
+                } else {
+                    EXPECT_TRUE(inRange) << "out of range, yet taken";
+                    EXPECT_EQ(p.get(simulation.scene()), value);
+                }
+                ASSERT_NO_THROW(session.restart());
+                ASSERT_NO_THROW(stepLikeTheWindow(session));
+                ASSERT_TRUE(finiteState(simulation.world())) << "a value not finite entered the state";
+            }
+            ASSERT_EQ(session.setParameter(p, original), "") << name << ": " << p.name << " back to the preset's";
+        }
+    }
+    // Every out-of-range value at least (two per parameter) was refused.
+    EXPECT_GT(tally.refused, tally.tried / 5);
+    std::printf("window paths: %d values tried, %d refused with a message\n", tally.tried, tally.refused);
+}
+
+// The first finding of the student's session: the pile's N dragged to 7 483. Refused
+// where it was entered, with the limit; the pile, its timeline and settings stay.
+TEST(WindowPaths, ACountThePileCannotHoldIsRefusedWithItsLimitAndTheRunGoesOn) {
+    app::Simulation simulation(scenes::loadScene(scenes::presetPath("11_pile")));
+    app::Session session(simulation);
+    stepLikeTheWindow(session);
+    const std::uint64_t steps = simulation.world().stepCount;
+    const scenes::Parameter& count = *scenes::findParameter("count");
+    const std::string refusal = session.setParameter(count, 7483);
+    EXPECT_NE(refusal.find("count = 7483 refused (it stays 1000): the region holds only 1764"), std::string::npos) << refusal;
+    EXPECT_EQ(count.get(simulation.scene()), 1000.0);
+    EXPECT_EQ(simulation.world().size(), 1000u);
+    EXPECT_EQ(simulation.world().stepCount, steps) << "the running pile was not restarted";
+    EXPECT_EQ(session.setParameter(count, 1500), "");
+    EXPECT_EQ(simulation.world().size(), 1500u);
+}
+
+// Each field of the inspector: x, y, z of p and v, r, m; the same values as above.
+struct Field {
+    const char* name;
+    double lo, hi;  // the range the window takes for it
+    double* (*of)(app::SphereFields&);
+};
+
+TEST(WindowPaths, EveryInspectorFieldOfEveryPresetIsAppliedOrRefusedWithAMessage) {
+    Tally tally;
+    for (const std::string& name : scenes::listPresets()) {
+        const scenes::Scene scene = scenes::loadScene(scenes::presetPath(name));
+        if (!scene.box) continue;  // the fields of p are tried within the box
+        app::Simulation simulation(scene);
+        app::Session session(simulation);
+        if (simulation.world().size() == 0) continue;  // the rain starts empty: nothing to select
+        const glm::dvec3 half = 0.5 * scene.box->size;
+        const std::vector<Field> fields{
+            {"p.x", -half.x, half.x, [](app::SphereFields& f) { return &f.p.x; }},
+            {"p.y", -half.y, half.y, [](app::SphereFields& f) { return &f.p.y; }},
+            {"p.z", 0.0, scene.box->size.z, [](app::SphereFields& f) { return &f.p.z; }},
+            {"v.x", -app::kEditSpeed, app::kEditSpeed, [](app::SphereFields& f) { return &f.v.x; }},
+            {"v.y", -app::kEditSpeed, app::kEditSpeed, [](app::SphereFields& f) { return &f.v.y; }},
+            {"v.z", -app::kEditSpeed, app::kEditSpeed, [](app::SphereFields& f) { return &f.v.z; }},
+            {"r", app::kEditRadius[0], app::kEditRadius[1], [](app::SphereFields& f) { return &f.r; }},
+            {"m", app::kEditMass[0], app::kEditMass[1], [](app::SphereFields& f) { return &f.m; }},
+        };
+        for (const Field& field : fields) {
+            const double span = field.hi - field.lo;
+            for (double value : {field.lo, field.hi, field.lo + 0.25 * span, field.lo + 0.5 * span,
+                                 field.lo + 0.75 * span, field.lo - 0.5 * span - 1.0, field.hi + 0.5 * span + 1.0,
+                                 std::nan("")}) {
+                SCOPED_TRACE(name + ": " + field.name + " = " + scenes::formatNumber(value));
+                session.restart();
+                session.select(0);
+                const physics::World& world = simulation.world();
+                app::SphereFields edit{world.position[0], world.velocity[0], world.radius[0], world.mass[0]};
+                *field.of(edit) = value;
+                const std::uint64_t hashBefore = physics::stateHash(world);
+                std::string refusal;
+                ++tally.tried;
+                ASSERT_NO_THROW(refusal = session.editSelected(edit));
+                if (!refusal.empty()) {
+                    ++tally.refused;
+                    EXPECT_EQ(physics::stateHash(world), hashBefore) << "refused, yet changed";
+                } else {
+                    EXPECT_TRUE(app::checkSphereFields(world, edit).empty());
+                    EXPECT_EQ(*field.of(edit), value);
+                }
+                ASSERT_NO_THROW(stepLikeTheWindow(session));
+                ASSERT_TRUE(finiteState(simulation.world())) << "a value not finite entered the state";
+            }
+        }
+    }
+    EXPECT_GT(tally.refused, tally.tried / 5);
+    std::printf("inspector paths: %d values tried, %d refused with a message\n", tally.tried, tally.refused);
+}
+
+// The second finding: r = 5 m in a box about 3 m wide is refused with the radius that fits.
+TEST(WindowPaths, TheInspectorRefusesARadiusTheBoxCannotHoldAndSaysWhatFits) {
+    app::Simulation simulation(scenes::loadScene(scenes::presetPath("11_pile")));
+    app::Session session(simulation);
+    session.select(0);
+    const physics::World& world = simulation.world();
+    const double radius = world.radius[0];
+    app::SphereFields edit{world.position[0], world.velocity[0], 5.0, world.mass[0]};
+    EXPECT_NE(session.editSelected(edit).find("r = 5 m is outside 0.005 to 0.5 m"), std::string::npos);
+    edit.r = 0.5;  // in range, but sphere 0 sits near the floor
+    const std::string refusal = session.editSelected(edit);
+    EXPECT_NE(refusal.find("does not fit at this p: at most"), std::string::npos) << refusal;
+    EXPECT_EQ(world.radius[0], radius);
+}
+
+}  // namespace
+
+namespace {
+
+// Side by side: Enter in the overrides' field applies the new overrides while it is
+// on; overrides that change nothing say that the two views are the same.
+TEST(WindowPaths, SideBySideTakesNewOverridesOnEnterAndSaysWhenTheViewsAreTheSame) {
+    app::Simulation simulation(scenes::loadScene(scenes::presetPath("08_newtons_cradle")));
+    app::Session session(simulation);
+    app::InteractionInput input(session);
+    input.tools().compareText = "method=velocity";  // the default override: the cradle's own method
+    ASSERT_TRUE(input.applyCompare(0.0));
+    ASSERT_NE(session.comparison(), nullptr);
+    EXPECT_NE(input.tools().message.find("method = velocity in both views"), std::string::npos)
+        << input.tools().message;
+    EXPECT_NE(input.tools().message.find("the two views are the same"), std::string::npos) << input.tools().message;
+
+    input.tools().compareText = "order=reversed,passes=1";  // edited, then Enter (the cradle runs 1 pass too)
+    app::ToolActions enter;
+    enter.applyCompare = true;
+    input.apply(enter, app::ViewLayout{}, render::Camera{}, 1.0);
+    EXPECT_EQ(session.comparison()->label(), "order = reversed, passes = 1");
+    EXPECT_EQ(session.run(1).scene().params.passes, 1);
+    EXPECT_NE(input.tools().message.find("order = index, passes = 1 against order = reversed, passes = 1"),
+              std::string::npos)
+        << input.tools().message;
+
+    input.tools().compareText = "order=sideways";  // refused: the runs stay as they were
+    input.apply(enter, app::ViewLayout{}, render::Camera{}, 3.0);
+    EXPECT_NE(input.tools().message.find("cannot compare"), std::string::npos) << input.tools().message;
+    EXPECT_EQ(session.comparison()->label(), "order = reversed, passes = 1");
+}
+
+}  // namespace
