@@ -71,6 +71,7 @@ ui::Readouts makeReadouts(const Simulation& simulation, const ui::FrameTimes& ti
     for (Series s : {Series::Kinetic, Series::Potential, Series::Modified, Series::Contacts}) {
         r.plots.emplace_back(History::name(s), &history.values(s));
     }
+    r.plotTimes = &history.times();
     r.bouncesSinceRestart = simulation.bouncesSinceRestart();
     for (const AlarmLine& line : simulation.alarms().lines(simulation.world().time)) {
         r.alarms.push_back({line.text, line.hint, line.lit});

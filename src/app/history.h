@@ -22,6 +22,7 @@ public:
     // Oldest first, for ImGui::PlotLines.
     const std::vector<float>& values(Series series) const { return ordered_[static_cast<int>(series)]; }
     std::size_t size() const { return times_.size(); }
+    const std::vector<double>& times() const { return times_; }  // s, of the samples, oldest first
     static const char* name(Series series);  // with its unit
     // Writes time and every series as CSV; false when the file cannot be written.
     bool writeCsv(const std::string& path) const;

@@ -1,5 +1,6 @@
 #include "ui/control_panel.h"
 
+#include <algorithm>
 #include <cstdio>
 
 #include <imgui.h>
@@ -214,6 +215,34 @@ void frameTimings(const Readouts& r) {
             "programs busy on the same cores). Any count gives the same result.");
 }
 
+// A scrolling plot of `samples` against `times` (s), oldest first, its latest value
+// printed on it; hovering shows the time and the value there (ImGui's PlotLines would
+// show the sample's index).
+void plotAgainstTime(const char* name, const std::vector<float>& samples, const std::vector<double>& times) {
+    const ImVec2 size(ImGui::GetContentRegionAvail().x, ImGui::GetFontSize() * 2.5f);
+    ImGui::InvisibleButton((std::string("##") + name).c_str(), size);
+    const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+    ImDrawList& draw = *ImGui::GetWindowDrawList();
+    draw.AddRectFilled(lo, hi, ImGui::GetColorU32(ImGuiCol_FrameBg), ImGui::GetStyle().FrameRounding);
+    const auto [least, most] = std::minmax_element(samples.begin(), samples.end());
+    const float range = *most > *least ? *most - *least : 1.0f;
+    const float pad = ImGui::GetStyle().FramePadding.y;
+    std::vector<ImVec2> points(samples.size());
+    const float dx = samples.size() > 1 ? (hi.x - lo.x) / float(samples.size() - 1) : 0.0f;
+    for (std::size_t k = 0; k < samples.size(); ++k) {
+        points[k] = {lo.x + dx * float(k), hi.y - pad - (samples[k] - *least) / range * (hi.y - lo.y - 2.0f * pad)};
+    }
+    draw.AddPolyline(points.data(), int(points.size()), ImGui::GetColorU32(ImGuiCol_PlotLines), 0, 1.0f);
+    char text[64];
+    std::snprintf(text, sizeof text, "%.4g", samples.back());
+    draw.AddText({0.5f * (lo.x + hi.x - ImGui::CalcTextSize(text).x), lo.y + pad}, ImGui::GetColorU32(ImGuiCol_Text),
+                 text);
+    if (!ImGui::IsItemHovered() || samples.size() < 2) return;
+    const auto k = std::size_t(std::clamp((ImGui::GetIO().MousePos.x - lo.x) / dx + 0.5f, 0.0f, float(samples.size() - 1)));
+    draw.AddLine({points[k].x, lo.y}, {points[k].x, hi.y}, ImGui::GetColorU32(ImGuiCol_PlotLinesHovered));
+    ImGui::SetTooltip("t = %.3f s: %.6g", times[k], double(samples[k]));
+}
+
 void readoutsBody(const Readouts& r, const PanelState& state, PanelActions& actions) {
     const physics::Diagnostics& d = r.diagnostics;
     if (r.timing.fps > 0.0) {
@@ -247,14 +276,10 @@ void readoutsBody(const Readouts& r, const PanelState& state, PanelActions& acti
     ImGui::Text("deepest penetration %.2f %% of r", 100.0 * d.maxPenetration);
     ImGui::Text("state hash %016llx", static_cast<unsigned long long>(d.hash));
     tooltip("Same scene, same seed, same parameters: same hash. Compare runs with it.");
-    const float height = ImGui::GetFontSize() * 2.5f;
     for (const auto& [name, samples] : r.plots) {
-        if (samples->empty()) continue;
-        char overlay[64];
-        std::snprintf(overlay, sizeof overlay, "%.4g", samples->back());
+        if (samples->empty() || !r.plotTimes || r.plotTimes->size() != samples->size()) continue;
         ImGui::TextUnformatted(name);
-        ImGui::PlotLines((std::string("##") + name).c_str(), samples->data(), static_cast<int>(samples->size()), 0,
-                         overlay, FLT_MAX, FLT_MAX, ImVec2(ImGui::GetContentRegionAvail().x, height));
+        plotAgainstTime(name, *samples, *r.plotTimes);
     }
     if (ImGui::Button("Export plots as CSV")) actions.exportCsv = true;
     tooltip("Writes the plots' samples with their times as a new CSV file in the output folder.");

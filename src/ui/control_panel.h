@@ -73,6 +73,7 @@ struct Readouts {
     physics::StepStats stats;
     physics::Diagnostics diagnostics;
     std::vector<std::pair<const char*, const std::vector<float>*>> plots;  // name, samples
+    const std::vector<double>* plotTimes = nullptr;  // s, the samples' times, oldest first
 
     std::uint64_t bouncesSinceRestart = 0;  // contacts answered as a bounce, all passes
     // Invariant alarms (app/alarms.h), most serious first.
