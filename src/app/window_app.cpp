@@ -286,7 +286,7 @@ void WindowApp::drawScene() {
     const auto start = std::chrono::steady_clock::now();
     renderer_.style.showBox = panel_.showBox;
     renderer_.style.showGrid = panel_.showGrid;
-    renderer_.style.overlayOnTop = panel_.overlaysOnTop;
+    renderer_.style.overlayOnTop = overlaysOnTop(panel_, simulation_.world().size());  // as capture draws them
     renderer_.style.lineScale = window_->contentScale().x;
     panel_.selectedSphere = session_.selected();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
