@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "render/image_io.h"
@@ -77,6 +78,45 @@ TEST(WindowInteraction, SelectOpensTheInspectorAndTheExplainer) {
     // The explainer: at the bottom left of the scene, above the timeline bar.
     EXPECT_LT(fraction(load(plain), kSceneX0 + 20, 670, kSceneX0 + 400, 700, notSky), 0.3);
     EXPECT_GT(fraction(load(selected), kSceneX0 + 20, 670, kSceneX0 + 400, 700, notSky), 0.8);
+}
+
+bool haveXdotool() { return std::system("command -v xdotool >/dev/null 2>&1") == 0; }
+
+bool orange(glm::u8vec4 p) { return p.x > 200 && p.y > 120 && p.y < 190 && p.z < 110; }  // the panel's refusals
+
+// A student drags the pile's N to a count the region cannot hold (typed here, Ctrl +
+// click on the slider): the window stays open, says why under the slider, and the
+// pile keeps running; F12 then writes a screenshot and Esc ends the session (exit 0).
+// Keys are held for 0.3 s: ImGui misses a key pressed and released within one frame.
+TEST(WindowInteraction, ACountThePileCannotHoldIsRefusedUnderItsSliderAndTheWindowStays) {
+    if (!haveXvfb() || !haveXdotool()) GTEST_SKIP() << "xvfb-run or xdotool not found";
+    const fs::path folder = fs::path(SPHERES_TEST_OUTPUT_DIR) / "window_refusal";
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    {
+        std::ofstream script(folder / "student.sh");
+        script << "'" SPHERES_EXECUTABLE "' --scene 11_pile & pid=$!\n"
+                  "w=$(timeout 30 xdotool search --sync --onlyvisible --name 'Rigid Spheres')\n"
+                  "xdotool windowfocus --sync $w; sleep 3\n"
+                  "xdotool mousemove 88 715 sleep 0.3 keydown ctrl click 1 keyup ctrl sleep 0.5 key ctrl+a\n"
+                  "xdotool type --delay 50 7483\n"  // type takes every argument after it as text
+                  "xdotool keydown Return sleep 0.3 keyup Return sleep 0.5 mousemove 700 300 sleep 2 \\\n"
+                  "  keydown F12 sleep 0.3 keyup F12 sleep 2 keydown Escape sleep 0.3 keyup Escape\n"
+                  "wait $pid\n";
+    }
+    const std::string command = "cd '" + folder.string() +
+                                "' && timeout 90 xvfb-run -a -s '-screen 0 1280x800x24' sh student.sh >/dev/null 2>&1";
+    const int status = std::system(command.c_str());
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 0) << "the window ended by itself, or did not end on Esc";
+    const fs::path shot = folder / "spheres_output" / "screenshot_0001.png";
+    ASSERT_TRUE(fs::exists(shot)) << "F12 wrote no screenshot: the window was gone";
+    const render::Image image = load(shot.string());
+    // The refusal, in orange, under the N slider (the panel's lower left).
+    EXPECT_GT(fraction(image, 5, 725, 420, 795, orange), 0.02);
+    EXPECT_LT(fraction(image, 5, 40, 420, 700, orange), 0.001) << "orange elsewhere in the panel";
+    // The pile is still there, in the view.
+    EXPECT_GT(fraction(image, kSceneX0, 400, 1280, 720, saturated), 0.08);
 }
 
 TEST(WindowInteraction, RefusedOptionsExitWithCodeTwo) {
