@@ -18,6 +18,7 @@ constexpr float kOutlineExtra = 3.0f;   // px wider than the line it outlines
 constexpr float kTrailWidth = 3.0f;     // px
 constexpr float kPointSize = 11.0f;     // px
 constexpr double kTimeSlack = 1e-9;     // s, for sums of steps that should be equal
+constexpr std::size_t kCrowdedMarks = 50;  // more contact or penetration marks: thinner, no outline
 
 std::uint64_t pairKey(std::uint32_t sphere, std::int32_t other) {
     return (std::uint64_t(sphere) << 32) | std::uint32_t(other);
@@ -202,12 +203,16 @@ void appendContacts(const physics::World& world, render::FrameSnapshot& snapshot
         if (!finite(e.point) || !finite(e.normal) || e.i >= world.size()) continue;
         latest.push_back(&e);
     }
-    // Many contacts (a pile): thinner marks, so that the spheres still show between them.
-    const float scale = latest.size() > 50 ? 0.5f : 1.0f;
+    // Many contacts (a pile): thinner marks without their dark outline, so that the
+    // spheres still show between them (and a software GL draws a third fewer lines).
+    const bool crowded = latest.size() > kCrowdedMarks;
+    const float scale = crowded ? 0.5f : 1.0f;
     for (const physics::ContactEvent* e : latest) {
         const double length = 0.9 * world.radius[e->i];  // m, into the sphere the normal points to
         const glm::dvec3 tip = e->point + length * e->normal;
-        snapshot.addLine(glm::vec3(e->point), glm::vec3(tip), kOutlineColor, scale * kArrowWidth + kOutlineExtra);
+        if (!crowded) {
+            snapshot.addLine(glm::vec3(e->point), glm::vec3(tip), kOutlineColor, scale * kArrowWidth + kOutlineExtra);
+        }
         snapshot.addLine(glm::vec3(e->point), glm::vec3(tip), kNormalColor, scale * kArrowWidth);
         appendDot(snapshot, e->point, kContactPointColor, scale * (e->bounce ? kPointSize : 0.7f * kPointSize));
     }
@@ -231,12 +236,19 @@ void appendTrails(const OverlayState& state, const physics::World& world, render
         for (const Trail& trail : state.trails()) {
             if (trail.sphere >= snapshot.colors.size() || trail.points.size() < 2) continue;
             const glm::u8vec4 base = snapshot.colors[trail.sphere];
+            std::size_t from = 0;  // the segment runs from the last point drawn to
             for (std::size_t k = 1; k < trail.points.size(); ++k) {
                 const double opacity = 0.9 * (1.0 - (now - trail.times[k]) / kTrailSeconds);
-                const glm::dvec3& a = trail.points[k - 1];
+                const glm::dvec3& a = trail.points[from];
                 const glm::dvec3& b = trail.points[k];
-                // At rest, a segment is a point: nothing to draw.
-                if (opacity <= 0.0 || !finite(a) || !finite(b) || glm::distance(a, b) < 1e-5) continue;
+                if (!finite(a) || !finite(b)) {
+                    from = k;
+                    continue;
+                }
+                // A sphere at rest, or jittering in place, moves less than a pixel: its
+                // points are joined into one segment, drawn once it is long enough.
+                if (opacity <= 0.0 || glm::distance(a, b) < kShortestTrailSegment) continue;
+                from = k;
                 if (rim) {
                     snapshot.addLine(glm::vec3(a), glm::vec3(b), withOpacity(kOutlineColor, 0.6 * opacity),
                                      kTrailWidth + 2.0f);
@@ -273,14 +285,18 @@ std::vector<Overlap> currentOverlaps(const physics::World& world, physics::Works
 }
 
 void appendPenetration(const std::vector<Overlap>& overlaps, render::FrameSnapshot& snapshot) {
-    std::size_t drawn = 0;
+    // m: an overlap whose exaggerated segment would be shorter, about a pixel, is not drawn.
+    constexpr double kShortestSegment = 1e-3;
+    std::vector<const Overlap*> shown;
     for (const Overlap& o : overlaps) {
-        if (drawn >= kMaxDrawnContacts) break;
-        if (o.depth < 1e-6) continue;  // m: a projected contact, touching
-        ++drawn;
-        const glm::dvec3 half = (0.5 * kPenetrationExaggeration * o.depth) * o.normal;
-        const glm::vec3 a(o.point - half), b(o.point + half);
-        snapshot.addLine(a, b, kOutlineColor, 6.0f + kOutlineExtra);
+        if (shown.size() >= kMaxDrawnContacts) break;
+        if (kPenetrationExaggeration * o.depth >= kShortestSegment) shown.push_back(&o);
+    }
+    const bool crowded = shown.size() > kCrowdedMarks;  // without outlines, as the contacts
+    for (const Overlap* o : shown) {
+        const glm::dvec3 half = (0.5 * kPenetrationExaggeration * o->depth) * o->normal;
+        const glm::vec3 a(o->point - half), b(o->point + half);
+        if (!crowded) snapshot.addLine(a, b, kOutlineColor, 6.0f + kOutlineExtra);
         snapshot.addLine(a, b, kPenetrationColor, 6.0f);
     }
 }

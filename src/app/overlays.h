@@ -51,6 +51,7 @@ constexpr double kPenetrationExaggeration = 10.0;  // the red segment is this ma
 constexpr double kImpulseFadeSeconds = 0.5;     // s of simulated time
 constexpr double kTrailSeconds = 1.5;           // s of simulated time kept
 constexpr double kTrailSampleSeconds = 1.0 / 60.0;  // s between trail points (at most one per step)
+constexpr double kShortestTrailSegment = 2e-3;  // m: shorter steps of a trail are joined (a pixel or so)
 constexpr std::size_t kMaxTrailSpheres = 200;   // the first ones (or the selected sphere only)
 constexpr std::size_t kMaxArrowSpheres = 2000;  // velocity arrows: the first ones
 constexpr std::size_t kMaxRecordSpheres = 5000;  // above: contacts are not recorded (too many)
