@@ -5,10 +5,10 @@
 
 #include <CLI/CLI.hpp>
 
-#include "app/capture_command.h"
-#include "app/scene_source.h"
-#include "app/simulate_command.h"
-#include "app/window_app.h"
+#include "app/commands/capture_command.h"
+#include "app/run/scene_source.h"
+#include "app/commands/simulate_command.h"
+#include "app/window/window_app.h"
 #include "scenes/presets.h"
 #include "scenes/scene.h"
 #include "scenes/scene_json.h"

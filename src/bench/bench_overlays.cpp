@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "app/frame_builder.h"
-#include "app/simulation.h"
+#include "app/views/frame_builder.h"
+#include "app/run/simulation.h"
 #include "bench/bench_common.h"
 #include "platform/headless_context.h"
 #include "render/camera.h"

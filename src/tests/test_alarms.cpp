@@ -8,8 +8,8 @@
 #include <limits>
 #include <string>
 
-#include "app/alarms.h"
-#include "app/simulation.h"
+#include "app/teaching/alarms.h"
+#include "app/run/simulation.h"
 #include "physics/diagnostics.h"
 #include "scenes/presets.h"
 #include "scenes/scene_json.h"

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "app/scene_source.h"
+#include "app/run/scene_source.h"
 #include "physics/diagnostics.h"
 #include "render/palette.h"
 #include "test_capture_support.h"

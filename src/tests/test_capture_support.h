@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "app/capture_command.h"
+#include "app/commands/capture_command.h"
 #include "physics/step.h"
 #include "platform/headless_context.h"
 #include "render/camera.h"

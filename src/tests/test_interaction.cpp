@@ -6,10 +6,10 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 
-#include "app/interaction.h"
-#include "app/session.h"
-#include "app/view_layout.h"
-#include "app/simulation.h"
+#include "app/run/interaction.h"
+#include "app/run/session.h"
+#include "app/views/view_layout.h"
+#include "app/run/simulation.h"
 #include "physics/diagnostics.h"
 #include "render/camera.h"
 #include "scenes/scene.h"

@@ -6,11 +6,11 @@
 #include <string>
 #include <vector>
 
-#include "app/capture_command.h"
-#include "app/comparison.h"
-#include "app/scene_source.h"
-#include "app/session.h"
-#include "app/simulation.h"
+#include "app/commands/capture_command.h"
+#include "app/run/comparison.h"
+#include "app/run/scene_source.h"
+#include "app/run/session.h"
+#include "app/run/simulation.h"
 #include "physics/diagnostics.h"
 #include "test_capture_support.h"
 

@@ -7,7 +7,7 @@
 #include <glm/geometric.hpp>
 #include <string>
 
-#include "app/contact_explanation.h"
+#include "app/teaching/contact_explanation.h"
 #include "physics/collision_response.h"
 #include "physics/step.h"
 #include "scenes/scene.h"

@@ -6,10 +6,10 @@
 #include <cstdint>
 #include <vector>
 
-#include "app/rewind_buffer.h"
-#include "app/scene_source.h"
-#include "app/session.h"
-#include "app/simulation.h"
+#include "app/run/rewind_buffer.h"
+#include "app/run/scene_source.h"
+#include "app/run/session.h"
+#include "app/run/simulation.h"
 #include "physics/diagnostics.h"
 #include "physics/step.h"
 #include "scenes/parameters.h"

@@ -9,11 +9,11 @@
 #include <fstream>
 #include <glm/geometric.hpp>
 
-#include "app/capture_command.h"
-#include "app/frame_builder.h"
-#include "app/overlays.h"
-#include "app/scene_source.h"
-#include "app/simulation.h"
+#include "app/commands/capture_command.h"
+#include "app/views/frame_builder.h"
+#include "app/teaching/overlays.h"
+#include "app/run/scene_source.h"
+#include "app/run/simulation.h"
 #include "test_capture_support.h"
 #include "ui/control_panel.h"
 

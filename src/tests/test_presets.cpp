@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "app/simulation.h"
+#include "app/run/simulation.h"
 #include "physics/diagnostics.h"
 #include "physics/step.h"
 #include "scenes/parameters.h"

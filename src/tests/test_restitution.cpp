@@ -6,8 +6,8 @@
 #include <cmath>
 #include <string>
 
-#include "app/restitution.h"
-#include "app/simulation.h"
+#include "app/teaching/restitution.h"
+#include "app/run/simulation.h"
 #include "physics/step.h"
 #include "scenes/presets.h"
 #include "scenes/scene_json.h"

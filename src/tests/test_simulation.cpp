@@ -1,7 +1,7 @@
 // The app's fixed-step clock: accumulator, clamp, wall-time budget.
 #include <gtest/gtest.h>
 
-#include "app/simulation.h"
+#include "app/run/simulation.h"
 #include "scenes/presets.h"
 #include "scenes/scene_json.h"
 

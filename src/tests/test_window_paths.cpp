@@ -10,10 +10,10 @@
 #include <string>
 #include <vector>
 
-#include "app/interaction.h"
-#include "app/interaction_input.h"
-#include "app/session.h"
-#include "app/simulation.h"
+#include "app/run/interaction.h"
+#include "app/window/interaction_input.h"
+#include "app/run/session.h"
+#include "app/run/simulation.h"
 #include "scenes/parameters.h"
 #include "scenes/presets.h"
 #include "scenes/scene_json.h"

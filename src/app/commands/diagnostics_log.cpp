@@ -1,0 +1,69 @@
+#include "app/commands/diagnostics_log.h"
+
+#include <cstdio>
+
+#include "app/run/scene_source.h"
+
+namespace app {
+namespace {
+
+bool endsWith(const std::string& s, const std::string& suffix) {
+    return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+std::string format(const char* pattern, double value) {
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, pattern, value);
+    return buffer;
+}
+
+}  // namespace
+
+std::string hexHash(std::uint64_t hash) {
+    char buffer[20];
+    std::snprintf(buffer, sizeof buffer, "%016llx", static_cast<unsigned long long>(hash));
+    return buffer;
+}
+
+DiagnosticsLog::DiagnosticsLog(const std::string& path) {
+    if (endsWith(path, ".jsonl")) {
+        csv_ = false;
+    } else if (!endsWith(path, ".csv")) {
+        throw UsageError("--out " + path + ": the file must end in .csv or .jsonl");
+    }
+    file_.open(path);
+    if (!file_) throw UsageError("--out " + path + ": cannot open the file for writing");
+    file_.precision(17);
+    if (csv_) {
+        file_ << "step,time_s,kinetic_J,potential_J,total_J,modified_J,px,py,pz,"
+                 "sphere_contacts,wall_contacts,max_penetration_r,hash\n";
+    }
+}
+
+void DiagnosticsLog::write(std::uint64_t step, double time, const physics::Diagnostics& d) {
+    if (csv_) {
+        file_ << step << ',' << time << ',' << d.kinetic << ',' << d.potential << ',' << d.total
+              << ',' << d.modified << ',' << d.momentum.x << ',' << d.momentum.y << ','
+              << d.momentum.z << ',' << d.sphereContacts << ',' << d.wallContacts << ','
+              << d.maxPenetration << ',' << hexHash(d.hash) << '\n';
+        return;
+    }
+    file_ << "{\"step\":" << step << ",\"time_s\":" << time << ",\"kinetic_J\":" << d.kinetic
+          << ",\"potential_J\":" << d.potential << ",\"total_J\":" << d.total
+          << ",\"modified_J\":" << d.modified << ",\"momentum\":[" << d.momentum.x << ','
+          << d.momentum.y << ',' << d.momentum.z << "],\"sphere_contacts\":" << d.sphereContacts
+          << ",\"wall_contacts\":" << d.wallContacts << ",\"max_penetration_r\":"
+          << d.maxPenetration << ",\"hash\":\"" << hexHash(d.hash) << "\"}\n";
+}
+
+std::string summarize(const physics::Diagnostics& d) {
+    return "E_kin " + format("%.6g", d.kinetic) + " J, E_pot " + format("%.6g", d.potential) +
+           " J, E " + format("%.6g", d.total) + " J, E~ " + format("%.6g", d.modified) +
+           " J | p (" + format("%.3g", d.momentum.x) + ", " + format("%.3g", d.momentum.y) + ", " +
+           format("%.3g", d.momentum.z) + ") kg m/s | contacts " +
+           std::to_string(d.sphereContacts) + " sphere + " + std::to_string(d.wallContacts) +
+           " wall | max penetration " + format("%.2f", 100.0 * d.maxPenetration) + " % r | hash " +
+           hexHash(d.hash);
+}
+
+}  // namespace app

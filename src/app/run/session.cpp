@@ -1,0 +1,280 @@
+#include "app/run/session.h"
+
+#include <chrono>
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include <glm/geometric.hpp>
+
+namespace app {
+namespace {
+
+constexpr int kRingSegments = 48;
+constexpr float kRingRadius = 1.25f;        // times the sphere's radius
+constexpr glm::u8vec4 kRingColor{255, 225, 0, 255};
+constexpr glm::u8vec4 kRingOutline{20, 22, 30, 255};
+constexpr float kRingWidth = 4.0f;          // px
+constexpr float kOutlineWidth = 8.0f;       // px
+
+}  // namespace
+
+Session::Session(Simulation& primary) : primary_(primary) { keep(); }
+
+template <class Edit>
+void Session::forEachWorld(Edit edit) {
+    for (int k = 0; k < runCount(); ++k) edit(run(k).editableWorld());
+}
+
+std::string Session::startComparison(const std::vector<std::string>& lists) {
+    const std::vector<std::string> overrides = splitOverrides(lists);
+    if (const std::string error = checkOverrides(primary_.scene(), overrides); !error.empty()) return error;
+    try {
+        comparison_ = std::make_unique<Comparison>(primary_.scene(), overrides);
+    } catch (const std::exception& e) {
+        return e.what();
+    }
+    restart();
+    return "";
+}
+
+void Session::stopComparison() {
+    comparison_.reset();
+    rewind_[1].clear();
+    stale_[1] = false;
+}
+
+void Session::prepareToStep() {
+    if (comparison_) comparison_->follow(primary_);
+}
+
+int Session::advance(double realSeconds) {
+    prepareToStep();
+    // Simulation::advance keeps world.contacts of its last step only. To see every
+    // step's, feed it slices of half a step: then each call runs at most one step.
+    const double scale = primary_.timeScale;
+    const bool slice = catchEveryStep_ && selected_ >= 0 && !primary_.paused && scale > 0.0;
+    const double piece = slice ? 0.5 * primary_.params().timeStep / scale : realSeconds;  // s
+    int steps = 0, otherSteps = 0;
+    const auto start = std::chrono::steady_clock::now();
+    auto withinBudget = [&] {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() <=
+               primary_.wallBudget;
+    };
+    for (double left = realSeconds; left > 0.0 && steps < Simulation::kMaxStepsPerFrame && withinBudget();) {
+        const double seconds = std::min(piece, left);
+        left = slice ? left - seconds : 0.0;
+        const int ran = primary_.advance(seconds);
+        if (comparison_) comparison_->simulation().wallBudget = primary_.wallBudget;
+        otherSteps += comparison_ ? comparison_->simulation().advance(seconds) : 0;
+        steps += ran;
+        if (ran > 0) noteContacts();
+    }
+    if (steps > 0 || otherSteps > 0) {
+        stale_[0] = stale_[1] = false;
+        keep();
+    }
+    return steps;
+}
+
+void Session::singleStep() {
+    prepareToStep();
+    primary_.singleStep();
+    if (comparison_) comparison_->simulation().singleStep();
+    stale_[0] = stale_[1] = false;
+    noteContacts();
+    keep();
+}
+
+void Session::restart() {
+    primary_.restart();
+    startAgain();
+}
+
+void Session::sceneChanged() {
+    selected_ = -1;
+    startAgain();
+}
+
+std::string Session::setParameter(const scenes::Parameter& p, double value) {
+    if (p.applies == scenes::Applies::Live) return scenes::setValue(p, primary_.editableScene(), value);
+    scenes::Scene scene = primary_.scene();
+    if (const std::string error = scenes::setValue(p, scene, value); !error.empty()) return error;
+    try {
+        const double timeScale = primary_.timeScale;
+        primary_.setScene(std::move(scene));
+        primary_.timeScale = timeScale;
+    } catch (const std::exception& e) {
+        std::string reason = e.what();  // "generate[0]: the region holds only ...": the file's path is not news here
+        if (reason.rfind("generate[", 0) == 0 && reason.find("]: ") != std::string::npos) {
+            reason.erase(0, reason.find("]: ") + 3);
+        }
+        return std::string(p.name) + " = " + scenes::formatNumber(value) + " refused (it stays " +
+               scenes::formatValue(p, primary_.scene()) + "): " + reason;
+    }
+    startAgain();
+    return "";
+}
+
+void Session::noteContacts() {
+    const physics::World& world = primary_.world();
+    std::vector<physics::ContactEvent> events;
+    for (const physics::ContactEvent& event : world.contacts) {
+        if (static_cast<int>(event.i) == selected_ || event.other == selected_) events.push_back(event);
+    }
+    if (!events.empty()) latest_ = {std::move(events), world.time, world.stepCount};
+}
+
+void Session::startAgain() {
+    latest_ = {};
+    if (comparison_) {
+        try {
+            comparison_->restartFrom(primary_.scene());
+        } catch (const std::exception& e) {
+            note_ = std::string("side by side stopped: ") + e.what();
+            stopComparison();
+        }
+    }
+    rewind_[0].clear();
+    rewind_[1].clear();
+    stale_[0] = stale_[1] = false;
+    drag_.release();
+    if (selected_ >= 0 && static_cast<std::size_t>(selected_) >= primary_.world().size()) selected_ = -1;
+    keep();
+}
+
+void Session::select(int index) {
+    const int previous = selected_;
+    selected_ = index >= 0 && static_cast<std::size_t>(index) < primary_.world().size() ? index : -1;
+    if (selected_ != previous) latest_ = {};
+}
+
+void Session::edited() {
+    touched();
+    keep();
+}
+
+void Session::touched() {
+    for (int k = 0; k < runCount(); ++k) {
+        run(k).markEnergyInjected();  // not the solver's doing: no energy alarm
+        stale_[k] = true;
+    }
+}
+
+void Session::keep() {
+    for (int k = 0; k < runCount(); ++k) rewind_[k].push(run(k).world(), selected_);
+}
+
+std::string Session::editSelected(const SphereFields& fields) {
+    if (selected_ < 0) return "no sphere is selected";
+    if (const std::string refusal = checkSphereFields(primary_.world(), fields); !refusal.empty()) return refusal;
+    const auto i = static_cast<std::size_t>(selected_);
+    forEachWorld([&](physics::World& world) {
+        if (i >= world.size()) return;
+        placeSphere(world, i, fields.p, fields.v);
+        world.radius[i] = fields.r;
+        world.mass[i] = fields.m;
+    });
+    edited();
+    return "";
+}
+
+bool Session::beginDrag(int view, std::size_t index, const render::Ray& ray, const glm::vec3& facing, double time) {
+    dragView_ = view < runCount() ? view : 0;
+    if (!drag_.begin(run(dragView_).world(), index, ray, facing, time)) return false;
+    select(static_cast<int>(index));
+    return true;
+}
+
+void Session::dragTo(const render::Ray& ray, double time) {
+    const auto centre = drag_.move(run(dragView_).world(), ray, time);
+    if (!centre) return;
+    const glm::dvec3 velocity = drag_.velocity();
+    forEachWorld([&](physics::World& world) { placeSphere(world, drag_.index(), *centre, velocity); });
+    touched();
+}
+
+glm::dvec3 Session::endDrag() {
+    if (!drag_.active()) return glm::dvec3(0.0);
+    const std::size_t index = drag_.index();
+    const glm::dvec3 velocity = drag_.release();
+    forEachWorld([&](physics::World& world) {
+        if (index < world.size()) placeSphere(world, index, world.position[index], velocity);
+    });
+    edited();
+    return velocity;
+}
+
+std::string Session::shoot(const render::Ray& aim, double speed) {
+    double radius = 0.0, mass = 0.0;
+    typicalSphere(primary_.world(), &radius, &mass);
+    Shot shots[2];
+    for (int k = 0; k < runCount(); ++k) {
+        const std::string refusal = planShot(run(k).world(), aim, speed, radius, mass, &shots[k]);
+        if (!refusal.empty()) return runCount() > 1 ? std::string(k == 0 ? "A: " : "B: ") + refusal : refusal;
+    }
+    for (int k = 0; k < runCount(); ++k) addShot(run(k).editableWorld(), shots[k]);
+    select(static_cast<int>(primary_.world().size() - 1));
+    edited();
+    return "";
+}
+
+void Session::scrubTo(std::size_t index) {
+    if (timeline().empty()) return;
+    for (int k = 0; k < runCount(); ++k) {
+        run(k).paused = true;
+        rewind_[k].restore(index, run(k).editableWorld());
+    }
+    touched();
+    if (selected_ >= 0 && static_cast<std::size_t>(selected_) >= primary_.world().size()) selected_ = -1;
+    // The latest contacts at or before the frame shown (frames keep the selected sphere's).
+    latest_ = {};
+    for (std::size_t k = timeline().cursor() + 1; k-- > 0;) {
+        const WorldState& state = timeline().at(k);
+        if (state.contacts.empty()) continue;
+        for (const physics::ContactEvent& event : state.contacts) {
+            if (static_cast<int>(event.i) == selected_ || event.other == selected_) latest_.events.push_back(event);
+        }
+        if (latest_.events.empty()) continue;
+        latest_.time = state.time;
+        latest_.steps = state.stepCount;
+        break;
+    }
+}
+
+physics::Diagnostics Session::diagnostics(int k) const {
+    const Simulation& simulation = run(k);
+    return stale_[k] ? physics::measure(simulation.world(), simulation.params()) : simulation.diagnostics();
+}
+
+void Session::appendSelection(int k, const render::Camera& camera, render::FrameSnapshot& snapshot) const {
+    const physics::World& world = run(k).world();
+    if (selected_ < 0 || static_cast<std::size_t>(selected_) >= world.size()) return;
+    const auto i = static_cast<std::size_t>(selected_);
+    const glm::vec3 centre(world.position[i]);
+    const float r = float(world.radius[i]);
+    // In front of the sphere, facing the eye: seen whenever the sphere's front is.
+    const glm::vec3 toEye = glm::normalize(camera.position() - centre);
+    const glm::vec3 side = glm::normalize(glm::cross(toEye, std::abs(toEye.z) < 0.9f ? glm::vec3(0, 0, 1) : glm::vec3(1, 0, 0)));
+    const glm::vec3 up = glm::cross(side, toEye);
+    const glm::vec3 middle = centre + 0.9f * r * toEye;
+    const float ring = kRingRadius * r;
+    for (const auto& [color, width] : {std::pair{kRingOutline, kOutlineWidth}, std::pair{kRingColor, kRingWidth}}) {
+        for (int s = 0; s < kRingSegments; ++s) {
+            const float a0 = 6.2831853f * float(s) / kRingSegments, a1 = 6.2831853f * float(s + 1) / kRingSegments;
+            snapshot.addLine(middle + ring * (std::cos(a0) * side + std::sin(a0) * up),
+                             middle + ring * (std::cos(a1) * side + std::sin(a1) * up), color, width);
+        }
+    }
+    // While dragging: a plumb line to the floor, so that the height reads at a glance.
+    if (drag_.active() && world.boxPlaneCount > 0) {
+        const physics::Plane& floor = world.planes[0];
+        const double height = glm::dot(world.position[i] - floor.point, floor.normal);
+        const glm::vec3 foot(world.position[i] - height * floor.normal);
+        snapshot.addLine(centre, foot, kRingColor, 2.0f);
+        snapshot.addPoint(foot, kRingColor, 10.0f);
+    }
+}
+
+}  // namespace app

@@ -1,0 +1,147 @@
+#include "app/run/simulation.h"
+
+#include <chrono>
+#include <exception>
+#include <utility>
+
+namespace app {
+
+Simulation::Simulation(scenes::Scene scene) : scene_(std::move(scene)) { restart(); }
+
+void Simulation::setScene(scenes::Scene scene) {
+    physics::World world = scenes::buildWorld(scene);  // throws with everything unchanged
+    scene_ = std::move(scene);
+    startFrom(std::move(world));
+}
+
+void Simulation::restart() { startFrom(scenes::buildWorld(scene_)); }
+
+void Simulation::startFrom(physics::World world) {
+    world_ = std::move(world);
+    accumulator_ = 0.0;
+    lastStats_ = {};
+    behind_ = false;
+    history_.clear();
+    overlays_.reset();
+    alarms_.clear();
+    restitution_.reset();
+    bounces_ = 0;
+    skipEnergyCheck_ = false;
+    lastStepTime_ = world_.time;
+    updateRecording();
+    measureNow();
+}
+
+void Simulation::resetOverlays() {
+    overlays_.reset();
+    restitution_.forgetFlights();
+    skipEnergyCheck_ = true;
+}
+
+void Simulation::setOverlayFlags(const OverlayFlags& flags) {
+    overlayFlags_ = flags;
+    updateRecording();
+}
+
+void Simulation::setSelectedSphere(int index) {
+    selected_ = index;
+    updateRecording();
+}
+
+void Simulation::updateRecording() {
+    const bool measuring = !measuredSpheres(world_, selected_).empty();
+    world_.recordContacts =
+        (overlayFlags_.needsContacts() || measuring) && world_.size() <= kMaxRecordSpheres;
+    if (!world_.recordContacts) world_.contacts.clear();
+}
+
+int Simulation::advance(double realSeconds) {
+    if (paused) return 0;
+    // A step is due when the accumulator holds h up to rounding: without the slack,
+    // frames of exactly h would now and then run no step and then two.
+    const double h = scene_.params.timeStep;
+    const double due = h * (1.0 - 1e-9);
+    accumulator_ += realSeconds * timeScale;
+    const auto start = std::chrono::steady_clock::now();
+    int steps = 0;
+    while (accumulator_ >= due && steps < kMaxStepsPerFrame) {
+        if (!beforeStep() || !guardedStep()) break;
+        afterStep();
+        accumulator_ -= h;
+        ++steps;
+        if (paused) break;  // an alarm stopped it
+        if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > wallBudget) break;
+    }
+    behind_ = !paused && accumulator_ >= due;
+    if (behind_ || paused) accumulator_ = 0.0;
+    if (steps > 0) measureNow();
+    return steps;
+}
+
+void Simulation::singleStep() {
+    if (beforeStep() && guardedStep()) afterStep();
+    measureNow();
+}
+
+bool Simulation::guardedStep() {
+    try {
+        stepOnce();
+        return true;
+    } catch (const std::exception&) {
+        // A value that turned NaN within the step's first substeps makes the broad
+        // phase of the next one fail (it cannot size a grid around it): say which.
+        if (alarms_.checkFinite(world_)) throw;
+        paused = true;
+        return false;
+    }
+}
+
+bool Simulation::beforeStep() {
+    updateRecording();  // the sphere count may have changed
+    if (!alarms_.checkFinite(world_)) {
+        paused = true;
+        return false;
+    }
+    // The clock went back (a rewind restored an earlier state): trails and impulses
+    // drawn from the later state would no longer match it.
+    if (world_.time < lastStepTime_) {
+        overlays_.reset();
+        restitution_.forgetFlights();
+    }
+    energyBefore_ = physics::modifiedEnergy(world_, scene_.params);
+    sizeBefore_ = world_.size();
+    return true;
+}
+
+void Simulation::afterStep() {
+    bounces_ += lastStats_.collisions;
+    const double energyAfter = physics::modifiedEnergy(world_, scene_.params);
+    // A sphere added or removed, or energy the app put in, is not the solver's doing.
+    const bool checkEnergy = !skipEnergyCheck_ && world_.size() == sizeBefore_;
+    skipEnergyCheck_ = false;
+    if (!alarms_.checkStep(world_, scene_.params, checkEnergy ? energyBefore_ : energyAfter, energyAfter)) {
+        paused = true;
+        return;
+    }
+    overlays_.afterStep(world_, overlayFlags_, selected_);
+    restitution_.afterStep(world_, scene_.params, selected_);
+    lastStepTime_ = world_.time;
+}
+
+void Simulation::stepOnce() {
+    lastStats_ = physics::step(world_, scene_.params);
+    scenes::emitDue(scene_, world_);  // the course's emitter, after the step as in simulate
+}
+
+void Simulation::measureNow() {
+    // The broad phase cannot place a position that is not finite: measure nothing then.
+    if (!alarms_.checkFinite(world_)) {
+        paused = true;
+        return;
+    }
+    diagnostics_ = physics::measure(world_, scene_.params);
+    alarms_.checkMeasurement(diagnostics_, scene_.params, world_.time);
+    history_.add(world_.time, diagnostics_, bounces_);
+}
+
+}  // namespace app

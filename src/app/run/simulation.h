@@ -1,0 +1,109 @@
+#pragma once
+// The state the app owns: the scene (its parameters are what the UI edits), the
+// world built from it, and the fixed-step clock. The window and the capture mode
+// both advance it through advance(), so they step exactly alike.
+#include <cstdint>
+#include <limits>
+
+#include "app/teaching/alarms.h"
+#include "app/run/history.h"
+#include "app/teaching/overlays.h"
+#include "app/teaching/restitution.h"
+#include "physics/diagnostics.h"
+#include "physics/step.h"
+#include "scenes/scene.h"
+
+namespace app {
+
+class Simulation {
+public:
+    explicit Simulation(scenes::Scene scene);
+
+    // Rebuilds the world from the scene (same seed, same initial state).
+    void restart();
+    // Builds the world from `scene`, then takes both; throws (scenes::SceneError) when
+    // the scene cannot be built, with the scene and the world unchanged.
+    void setScene(scenes::Scene scene);
+
+    // Real seconds since the last frame: scaled by timeScale, accumulated, and spent
+    // in whole steps of h. At most kMaxStepsPerFrame run per call, and no more once
+    // wallBudget is spent; time beyond that is dropped (the "spiral of death" guard)
+    // and behindRealTime() says so.
+    // Returns the number of steps run. Does nothing while paused.
+    int advance(double realSeconds);
+    void singleStep();  // one step of h, paused or not
+
+    const scenes::Scene& scene() const { return scene_; }
+    scenes::Scene& editableScene() { return scene_; }  // live parameters apply at the next step
+    const physics::World& world() const { return world_; }
+    physics::World& editableWorld() { return world_; }
+    const physics::Params& params() const { return scene_.params; }
+
+    bool paused = false;
+    double timeScale = 1.0;  // simulated seconds per real second
+    // s of wall time one advance() may spend stepping, after its first step; the
+    // window sets it so a slow scene runs in slow motion instead of freezing the frame.
+    // Unlimited by default: capture and tests step exactly as many steps as time asks.
+    double wallBudget = std::numeric_limits<double>::infinity();
+
+    const physics::StepStats& lastStepStats() const { return lastStats_; }
+    bool behindRealTime() const { return behind_; }
+    const History& history() const { return history_; }
+    const physics::Diagnostics& diagnostics() const { return diagnostics_; }
+
+    // What the view shows (buildSnapshot sets it every frame): contacts are recorded
+    // (world.recordContacts) only while an overlay or the restitution meter needs
+    // them, trails only while shown.
+    void setOverlayFlags(const OverlayFlags& flags);
+    const OverlayFlags& overlayFlags() const { return overlayFlags_; }
+    // The sphere the overlays and the restitution meter focus on; -1: none.
+    void setSelectedSphere(int index);
+    int selectedSphere() const { return selected_; }
+    const OverlayState& overlays() const { return overlays_; }
+
+    const Alarms& alarms() const { return alarms_; }
+    const RestitutionMeter& restitution() const { return restitution_; }
+    // Contacts answered as a bounce (speed above epsilon), every pass and substep, since restart.
+    std::uint64_t bouncesSinceRestart() const { return bounces_; }
+    // The app itself put energy in (a drag, a throw, an emitted sphere): the next
+    // step's energy check is skipped instead of raising the alarm.
+    void markEnergyInjected() { skipEnergyCheck_ = true; }
+    // The app moved spheres by hand (a rewind, a teleport): the trails and impulses
+    // start afresh and a bounce in progress is not measured. Measured ratios, the
+    // bounce counter and the alarms stay until restart.
+    void resetOverlays();
+
+    static constexpr int kMaxStepsPerFrame = 32;
+
+private:
+    void startFrom(physics::World world);  // the clock, history, alarms... start again
+    void stepOnce();
+    // Around every stepOnce(): false from beforeStep() when the world holds a value
+    // that is not finite (then the step must not run); afterStep() feeds the alarms,
+    // the overlays and the restitution meter. Both pause on a non-finite value.
+    bool beforeStep();
+    bool guardedStep();  // stepOnce(); false (paused) when it failed on a value not finite
+    void afterStep();
+    void measureNow();
+    void updateRecording();
+
+    scenes::Scene scene_;
+    physics::World world_;
+    double accumulator_ = 0.0;  // s of simulated time not yet stepped
+    physics::StepStats lastStats_;
+    bool behind_ = false;
+    History history_;
+    physics::Diagnostics diagnostics_;
+    OverlayFlags overlayFlags_;
+    int selected_ = -1;
+    OverlayState overlays_;
+    Alarms alarms_;
+    RestitutionMeter restitution_;
+    std::uint64_t bounces_ = 0;
+    double energyBefore_ = 0.0;   // J, E~ before the running step
+    std::size_t sizeBefore_ = 0;  // spheres before the running step
+    double lastStepTime_ = 0.0;   // s, world time after the last step
+    bool skipEnergyCheck_ = false;
+};
+
+}  // namespace app

@@ -1,0 +1,182 @@
+#include "app/teaching/alarms.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include <glm/geometric.hpp>
+
+namespace app {
+namespace {
+
+constexpr double kMinEnergyScale = 1e-12;  // J: a world at rest in zero gravity
+
+std::string formatted(const char* format, double a, double b = 0.0, double c = 0.0) {
+    char text[256];
+    std::snprintf(text, sizeof text, format, a, b, c);
+    return text;
+}
+
+}  // namespace
+
+std::optional<NonFinite> findNonFinite(const physics::World& world) {
+    std::optional<NonFinite> found;
+    const char* axes[] = {"x", "y", "z"};
+    for (std::size_t i = 0; i < world.size(); ++i) {
+        std::string field;
+        double value = 0.0;
+        for (int k = 0; k < 3 && field.empty(); ++k) {
+            if (!std::isfinite(world.position[i][k])) {
+                field = std::string("position.") + axes[k];
+                value = world.position[i][k];
+            }
+        }
+        for (int k = 0; k < 3 && field.empty(); ++k) {
+            if (!std::isfinite(world.velocity[i][k])) {
+                field = std::string("velocity.") + axes[k];
+                value = world.velocity[i][k];
+            }
+        }
+        if (field.empty() && !std::isfinite(world.radius[i])) {
+            field = "radius";
+            value = world.radius[i];
+        }
+        if (field.empty() && !std::isfinite(world.mass[i])) {
+            field = "mass";
+            value = world.mass[i];
+        }
+        if (field.empty()) continue;
+        if (!found) found = NonFinite{i, field, value, 0};
+        ++found->count;
+    }
+    return found;
+}
+
+double energyScale(const physics::World& world, const physics::Params& params, double modifiedEnergy) {
+    const double g = glm::length(params.gravity);
+    double resting = 0.0, kinetic = 0.0;
+    for (std::size_t i = 0; i < world.size(); ++i) {
+        resting += world.mass[i] * g * world.radius[i];
+        kinetic += 0.5 * world.mass[i] * glm::dot(world.velocity[i], world.velocity[i]);
+    }
+    return std::max({std::abs(modifiedEnergy), resting, kinetic, kMinEnergyScale});
+}
+
+double energySlack(const physics::World& world, const physics::Params& params) {
+    const double hg = params.solverStep() * glm::length(params.gravity);  // m/s
+    double mass = 0.0;
+    for (const double m : world.mass) mass += m;
+    return 2.0 * mass * hg * hg / 8.0;
+}
+
+bool energyRuleApplies(const physics::Params& params) {
+    return params.alpha <= 1.0 && params.beta <= 1.0 && params.mu <= 1.0;
+}
+
+double relativeEnergyRise(double before, double after, double scale) {
+    return (after - before) / std::max(scale, kMinEnergyScale);
+}
+
+bool energyCreated(double before, double after, double scale, const physics::Params& params, double slack) {
+    return energyRuleApplies(params) && after - before > kEnergyTolerance * std::max(scale, kMinEnergyScale) + slack;
+}
+
+std::string energyHint(const physics::Params& params) {
+    if (params.method == physics::Method::VelocityBased) {
+        return "velocity-based bounce reflects this step's gravity kick: the contact is found after "
+               "v ← v + h g, and the response sends that back too (about 2 g h / s per bounce; "
+               "smaller with more substeps or β < 1)";
+    }
+    return "not expected from the lecture's rules with α, β ≤ 1: report the scene and its parameters";
+}
+
+bool penetrationTooDeep(const physics::Diagnostics& diagnostics) {
+    return diagnostics.maxPenetration > kPenetrationTolerance;
+}
+
+std::string penetrationHint(const physics::Params& params) {
+    switch (params.method) {
+        case physics::Method::ResponseOnly:
+            return "response-only has no position correction (slides 5–6): the contact is found inside "
+                   "the floor and a resting sphere sinks by h² g every step; switch method to position";
+        case physics::Method::VelocityBased:
+            return "velocity based only cancels the approach, never pushes apart: an existing overlap "
+                   "persists or grows; switch method to position to project it out";
+        case physics::Method::PositionBased:
+            break;
+    }
+    return "the passes did not resolve every overlap: raise passes or substeps, or lower h";
+}
+
+// ---------------------------------------------------------------- the record
+
+void Alarms::clear() {
+    states_ = {};
+    nonFinite_.reset();
+}
+
+void Alarms::fire(AlarmKind kind, double time, double amount, std::string hint) {
+    State& s = state(kind);
+    ++s.count;
+    s.lastTime = time;
+    s.worst = std::max(s.worst, amount);
+    s.hint = std::move(hint);
+}
+
+bool Alarms::recordNonFinite(const physics::World& world) {
+    std::optional<NonFinite> found = findNonFinite(world);
+    if (!found) return true;
+    if (!nonFinite_) fire(AlarmKind::NonFinite, world.time, 1.0, "");
+    nonFinite_ = std::move(found);
+    return false;
+}
+
+bool Alarms::checkFinite(const physics::World& world) { return recordNonFinite(world); }
+
+bool Alarms::checkStep(const physics::World& world, const physics::Params& params, double before, double after) {
+    if (!std::isfinite(after) || !std::isfinite(before)) {
+        // E~ sums every position, velocity and mass: the scan says which one.
+        if (!recordNonFinite(world)) return false;
+        return true;  // E~ overflowed on finite values: nothing to name
+    }
+    const double scale = energyScale(world, params, before);
+    if (energyCreated(before, after, scale, params, energySlack(world, params))) {
+        fire(AlarmKind::EnergyCreated, world.time, relativeEnergyRise(before, after, scale), energyHint(params));
+    }
+    return true;
+}
+
+void Alarms::checkMeasurement(const physics::Diagnostics& diagnostics, const physics::Params& params, double time) {
+    if (penetrationTooDeep(diagnostics)) {
+        fire(AlarmKind::Penetration, time, diagnostics.maxPenetration, penetrationHint(params));
+    }
+}
+
+std::vector<AlarmLine> Alarms::lines(double now) const {
+    std::vector<AlarmLine> lines;
+    const auto lit = [&](AlarmKind kind) { return now - state(kind).lastTime <= kAlarmHoldSeconds; };
+    if (nonFinite_) {
+        const NonFinite& n = *nonFinite_;
+        char text[256];
+        std::snprintf(text, sizeof text, "NOT FINITE: sphere %zu, %s = %g%s. Paused: restart (R).", n.sphere,
+                      n.field.c_str(), n.value,
+                      n.count > 1 ? (" (" + std::to_string(n.count) + " spheres)").c_str() : "");
+        lines.push_back({AlarmKind::NonFinite, text, "A value became NaN or infinite; the solver cannot go on.", true});
+    }
+    if (const State& s = state(AlarmKind::EnergyCreated); s.count > 0) {
+        const std::string times = s.count == 1 ? "once" : std::to_string(s.count) + " times";
+        lines.push_back({AlarmKind::EnergyCreated,
+                         formatted("ENERGY CREATED (α, β ≤ 1): E~ rose by up to %.2g %% in one step, ", 100.0 * s.worst) +
+                             times + formatted(", last at t = %.2f s", s.lastTime),
+                         s.hint, lit(AlarmKind::EnergyCreated)});
+    }
+    if (const State& s = state(AlarmKind::Penetration); s.count > 0) {
+        lines.push_back({AlarmKind::Penetration,
+                         formatted("PENETRATION: up to %.0f %% of r (alarm above %.0f %%), last at t = %.2f s",
+                                   100.0 * s.worst, 100.0 * kPenetrationTolerance, s.lastTime),
+                         s.hint, lit(AlarmKind::Penetration)});
+    }
+    return lines;
+}
+
+}  // namespace app

@@ -1,0 +1,259 @@
+#include "app/teaching/contact_explanation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdarg>
+#include <cstdio>
+
+#include <glm/geometric.hpp>
+
+namespace app {
+namespace {
+
+using Line = ExplanationLine;
+
+double reducedMass(double m1, double m2) { return 1.0 / (1.0 / m1 + 1.0 / m2); }  // kg
+
+// Slide 4 and slide 13 for a plane of normal n.
+glm::dvec3 predictPlane(const glm::dvec3& v, const glm::dvec3& n, bool isStatic, const physics::Params& params) {
+    const VelocitySplit s = splitVelocity(v, n);
+    if (!isStatic) return params.alpha * s.par - params.beta * s.perp;
+    const glm::dvec3 stopped = s.normal < 0.0 ? v - s.perp : v;  // no bounce
+    return params.mu * stopped;
+}
+
+// Slides 11-13 for two spheres, in the chosen response model.
+void predictPair(const glm::dvec3 v[2], const double m[2], const glm::dvec3& u, bool isStatic,
+                 const physics::Params& params, glm::dvec3 out[2]) {
+    const double mass = reducedMass(m[0], m[1]);
+    const double s = glm::dot(v[1] - v[0], u);  // m/s, approaching when > 0
+    const bool lecture = params.response == physics::ResponseModel::LectureAttenuation;
+    if (isStatic) {
+        const double jc = s > 0.0 ? mass * s : 0.0;  // kg m/s, perfectly inelastic
+        out[0] = v[0] + (jc / m[0]) * u;
+        out[1] = v[1] - (jc / m[1]) * u;
+        if (lecture) {
+            out[0] *= params.mu;
+            out[1] *= params.mu;
+        } else {
+            const glm::dvec3 relative = out[1] - out[0];
+            const glm::dvec3 impulse = (1.0 - params.mu) * mass * (relative - glm::dot(relative, u) * u);
+            out[0] += impulse / m[0];
+            out[1] -= impulse / m[1];
+        }
+        return;
+    }
+    if (lecture) {
+        const double j = 2.0 * mass * s;  // slide 11
+        const VelocitySplit a = splitVelocity(v[0], u), b = splitVelocity(v[1], u);
+        out[0] = params.alpha * a.par + params.beta * (a.perp + (j / m[0]) * u);
+        out[1] = params.alpha * b.par + params.beta * (b.perp - (j / m[1]) * u);
+        return;
+    }
+    const glm::dvec3 tangential = (v[1] - v[0]) - s * u;
+    const glm::dvec3 impulse = (1.0 + params.beta) * mass * s * u + (1.0 - params.alpha) * mass * tangential;
+    out[0] = v[0] + impulse / m[0];
+    out[1] = v[1] - impulse / m[1];
+}
+
+std::string format(const char* pattern, ...) __attribute__((format(printf, 1, 2)));
+std::string format(const char* pattern, ...) {
+    char text[320];
+    va_list args;
+    va_start(args, pattern);
+    std::vsnprintf(text, sizeof text, pattern, args);
+    va_end(args);
+    return text;
+}
+
+// -0.000 reads as a sign error on a slide: print it as 0.000.
+double clean(double x) { return std::abs(x) < 5e-4 ? 0.0 : x; }
+
+std::string vec(const glm::dvec3& v) { return format("(%.3f, %.3f, %.3f)", clean(v.x), clean(v.y), clean(v.z)); }
+
+void add(std::vector<Line>& lines, Line::Kind kind, std::string text) { lines.push_back({kind, std::move(text)}); }
+
+// "v1⊥ = -2.000 u,  v1∥ = (...)" for sphere `k` ("₁" or "₂"), the normal named `n`.
+std::string splitText(const char* name, const VelocitySplit& s, const char* n) {
+    return format("%s⊥ = %.3f %s,   %s∥ = %s", name, clean(s.normal), n, name, vec(s.par).c_str());
+}
+
+void matchLine(std::vector<Line>& lines, const ContactExplanation& e) {
+    if (e.mismatch <= 1e-9 * std::max(1.0, glm::length(e.velocityBefore[0]) + glm::length(e.velocityBefore[1]))) {
+        add(lines, Line::Kind::Result, "the solver's result: the same");
+    } else {
+        add(lines, Line::Kind::Note,
+            format("the solver's result differs by %.3g m/s: a parameter changed since this step", e.mismatch));
+    }
+}
+
+void planeLines(const ContactExplanation& e, const physics::Params& p, int boxPlaneCount, std::vector<Line>& lines) {
+    add(lines, Line::Kind::Heading,
+        format("Sphere #%u and the %s, pass %d of %d", e.sphere, planeName(e.other, boxPlaneCount).c_str(), e.pass + 1,
+               p.passes));
+    add(lines, Line::Kind::Heading, "Slide 3: detection, (p − a)·n ≤ r");
+    add(lines, Line::Kind::Formula, "n = " + vec(e.normal) + "  (unit, into the free side)");
+    add(lines, Line::Kind::Formula, format("d = r − (p − a)·n = %.4g m  (distance of penetration, slide 8)", e.depth));
+    add(lines, Line::Kind::Heading, "Slide 13: bounce or static contact?");
+    if (e.staticContact) {
+        add(lines, Line::Kind::Formula,
+            format("|v·n| = %.3f m/s ≤ ε = %.3g m/s: static contact (2-b)", std::abs(e.normalSpeed), e.epsilon));
+    } else {
+        add(lines, Line::Kind::Formula,
+            format("v·n = %.3f m/s, |v·n| > ε = %.3g m/s: a bounce (2-a)", clean(e.normalSpeed), e.epsilon));
+    }
+    add(lines, Line::Kind::Heading, "Slide 4: split v = v∥ + v⊥, v⊥ = (v·n) n");
+    add(lines, Line::Kind::Formula, "before:  " + splitText("v", e.before[0], "n"));
+    if (e.staticContact) {
+        add(lines, Line::Kind::Heading, format("Slide 13, 2-b: no bounce, then friction v ← μ v, μ = %.3g", p.mu));
+        add(lines, Line::Kind::Formula, "v ← μ (v − min(v·n, 0) n) = " + vec(e.predicted[0]));
+    } else {
+        add(lines, Line::Kind::Heading, format("Slide 4: v ← α v∥ − β v⊥,  α = %.3g, β = %.3g", p.alpha, p.beta));
+        add(lines, Line::Kind::Formula,
+            format("v ← %.3g × %s − %.3g × %.3f n = %s", p.alpha, vec(e.before[0].par).c_str(), p.beta,
+                   clean(e.before[0].normal), vec(e.predicted[0]).c_str()));
+    }
+    add(lines, Line::Kind::Formula, "after:   " + splitText("v", e.after[0], "n"));
+    matchLine(lines, e);
+    add(lines, Line::Kind::Heading, "Position correction");
+    if (e.correction == PositionCorrection::Projection) {
+        add(lines, Line::Kind::Formula, format("slide 8: p ← p + d n: the sphere moves %.4g m along n", e.shift[0]));
+    } else {
+        add(lines, Line::Kind::Note, p.method == physics::Method::VelocityBased
+                                         ? "velocity based: no projection; stage C cancels what still approaches"
+                                         : "response only (slides 5-6): no position correction");
+    }
+}
+
+void pairLines(const ContactExplanation& e, const physics::Params& p, std::vector<Line>& lines) {
+    const bool lecture = p.response == physics::ResponseModel::LectureAttenuation;
+    add(lines, Line::Kind::Heading,
+        format("Sphere 1 = #%u and sphere 2 = #%d, pass %d of %d", e.sphere, e.other, e.pass + 1, p.passes));
+    add(lines, Line::Kind::Heading, "Slides 9 and 11: ‖p₁ − p₂‖ ≤ r₁ + r₂, u = (p₁ − p₂) / ‖p₁ − p₂‖");
+    add(lines, Line::Kind::Formula, "u = " + vec(e.normal) + "  (from 2 to 1)");
+    add(lines, Line::Kind::Formula, format("d = r₁ + r₂ − ‖p₁ − p₂‖ = %.4g m  (collision depth, slide 13)", e.depth));
+    add(lines, Line::Kind::Heading, "Slide 13: bounce or static contact?");
+    if (e.staticContact) {
+        add(lines, Line::Kind::Formula,
+            format("|(v₂ − v₁)·u| = %.3f m/s ≤ ε = %.3g m/s: static contact (2-b)", std::abs(e.normalSpeed),
+                   e.epsilon));
+    } else {
+        add(lines, Line::Kind::Formula,
+            format("(v₂ − v₁)·u = %.3f m/s > ε = %.3g m/s: they approach, a bounce (2-a)", e.normalSpeed, e.epsilon));
+    }
+    if (!e.staticContact) {
+        add(lines, Line::Kind::Heading, "Slide 11: the elastic impulse");
+        add(lines, Line::Kind::Formula,
+            format("j = 2/(1/m₁ + 1/m₂) (v₂ − v₁)·u = 2/(1/%.4g + 1/%.4g) × %.3f = %.4g kg m/s", e.mass[0], e.mass[1],
+                   clean(e.normalSpeed), e.impulse));
+    }
+    add(lines, Line::Kind::Heading, "Split along u: v⊥ = (v·u) u, v∥ = v − v⊥");
+    add(lines, Line::Kind::Formula, "before:  " + splitText("v₁", e.before[0], "u"));
+    add(lines, Line::Kind::Formula, "         " + splitText("v₂", e.before[1], "u"));
+    if (e.staticContact) {
+        add(lines, Line::Kind::Heading, format("Slide 13, 2-b: no bounce, then friction v ← μ v, μ = %.3g", p.mu));
+        add(lines, Line::Kind::Formula,
+            format("approach removed (perfectly inelastic): j/2 = (v₂ − v₁)·u / (1/m₁ + 1/m₂) = %.4g kg m/s",
+                   e.normalSpeed > 0.0 ? 0.5 * e.impulse : 0.0));
+        if (!lecture) add(lines, Line::Kind::Note, "momentum-conserving: μ damps the relative tangential velocity");
+    } else if (lecture) {
+        add(lines, Line::Kind::Heading, format("Slide 12: with α = %.3g, β = %.3g", p.alpha, p.beta));
+        add(lines, Line::Kind::Formula, "v₁ ← α v₁∥ + β (v₁⊥ + j/m₁ u),   v₂ ← α v₂∥ + β (v₂⊥ − j/m₂ u)");
+        if (e.mass[0] == e.mass[1]) add(lines, Line::Kind::Formula, "equal masses: v₁ ← α v₁∥ + β v₂⊥, v₂ ← α v₂∥ + β v₁⊥");
+    } else {
+        add(lines, Line::Kind::Heading, format("Momentum-conserving restitution, α = %.3g, β = %.3g", p.alpha, p.beta));
+        add(lines, Line::Kind::Formula, "J = (1 + β) j/2 u + (1 − α) m* (v₂ − v₁)∥,  v₁ ← v₁ + J/m₁,  v₂ ← v₂ − J/m₂");
+    }
+    add(lines, Line::Kind::Formula, "v₁ ← " + vec(e.predicted[0]) + ",   v₂ ← " + vec(e.predicted[1]));
+    add(lines, Line::Kind::Formula, "after:   " + splitText("v₁", e.after[0], "u"));
+    add(lines, Line::Kind::Formula, "         " + splitText("v₂", e.after[1], "u"));
+    matchLine(lines, e);
+    add(lines, Line::Kind::Heading, "Slide 13, step 3: position correction");
+    if (e.correction == PositionCorrection::HalfHalf) {
+        add(lines, Line::Kind::Formula,
+            format("p₁ ← p₁ + d/2 u,  p₂ ← p₂ − d/2 u: %.4g m each", e.shift[0]));
+    } else if (e.correction == PositionCorrection::MassWeighted) {
+        add(lines, Line::Kind::Formula,
+            format("p₁ ← p₁ + d m₂/(m₁ + m₂) u = %.4g m,  p₂ ← p₂ − d m₁/(m₁ + m₂) u = %.4g m", e.shift[0],
+                   e.shift[1]));
+    } else {
+        add(lines, Line::Kind::Note, p.method == physics::Method::VelocityBased
+                                         ? "velocity based: no projection; stage C cancels what still approaches"
+                                         : "response only (slides 5-6): no position correction");
+    }
+}
+
+}  // namespace
+
+VelocitySplit splitVelocity(const glm::dvec3& v, const glm::dvec3& n) {
+    VelocitySplit s;
+    s.normal = glm::dot(v, n);
+    s.perp = s.normal * n;
+    s.par = v - s.perp;
+    return s;
+}
+
+ContactExplanation explainContact(const physics::ContactEvent& event, const physics::Params& params) {
+    ContactExplanation e;
+    e.plane = event.isPlane();
+    e.sphere = event.i;
+    e.other = e.plane ? -1 - event.other : event.other;
+    e.pass = event.pass;
+    e.normal = event.normal;
+    e.depth = event.depth;
+    e.epsilon = params.epsilon;
+    e.recordedBounce = event.bounce;
+    for (int k = 0; k < 2; ++k) {
+        e.mass[k] = event.massOf[k];
+        e.velocityBefore[k] = event.velocityBefore[k];
+        e.velocityAfter[k] = event.velocityAfter[k];
+        e.before[k] = splitVelocity(event.velocityBefore[k], event.normal);
+        e.after[k] = splitVelocity(event.velocityAfter[k], event.normal);
+    }
+    if (e.plane) {
+        e.normalSpeed = e.before[0].normal;
+        e.staticContact = std::abs(e.normalSpeed) <= params.epsilon;
+        e.predicted[0] = predictPlane(event.velocityBefore[0], event.normal, e.staticContact, params);
+        e.correction = params.method == physics::Method::PositionBased ? PositionCorrection::Projection
+                                                                       : PositionCorrection::None;
+        e.shift[0] = e.correction == PositionCorrection::None ? 0.0 : e.depth;
+    } else {
+        e.normalSpeed = e.before[1].normal - e.before[0].normal;
+        e.staticContact = std::abs(e.normalSpeed) <= params.epsilon;
+        e.impulse = 2.0 * reducedMass(e.mass[0], e.mass[1]) * e.normalSpeed;
+        predictPair(event.velocityBefore, e.mass, event.normal, e.staticContact, params, e.predicted);
+        if (params.method != physics::Method::PositionBased) {
+            e.correction = PositionCorrection::None;
+        } else if (params.split == physics::PositionSplit::HalfHalf) {
+            e.correction = PositionCorrection::HalfHalf;
+            e.shift[0] = e.shift[1] = 0.5 * e.depth;
+        } else {
+            e.correction = PositionCorrection::MassWeighted;
+            e.shift[0] = e.depth * e.mass[1] / (e.mass[0] + e.mass[1]);
+            e.shift[1] = e.depth * e.mass[0] / (e.mass[0] + e.mass[1]);
+        }
+    }
+    for (int k = 0; k < (e.plane ? 1 : 2); ++k) {
+        e.mismatch = std::max(e.mismatch, glm::length(e.predicted[k] - e.velocityAfter[k]));
+    }
+    return e;
+}
+
+std::string planeName(int planeIndex, int boxPlaneCount) {
+    static const char* const kBox[] = {"floor", "ceiling", "wall −x", "wall +x", "wall −y", "wall +y"};
+    if (planeIndex >= 0 && planeIndex < boxPlaneCount && planeIndex < 6) return kBox[planeIndex];
+    return format("plane %d", planeIndex - boxPlaneCount);
+}
+
+std::vector<ExplanationLine> explanationLines(const ContactExplanation& e, const physics::Params& params,
+                                              int boxPlaneCount) {
+    std::vector<Line> lines;
+    if (e.plane) {
+        planeLines(e, params, boxPlaneCount, lines);
+    } else {
+        pairLines(e, params, lines);
+    }
+    return lines;
+}
+
+}  // namespace app

@@ -1,0 +1,112 @@
+#include "app/views/frame_builder.h"
+
+#include <algorithm>
+#include <string>
+
+#include <glm/common.hpp>
+
+#include "scenes/scene.h"
+
+namespace app {
+
+OverlayFlags overlayFlags(const ui::PanelState& view) {
+    OverlayFlags flags;
+    flags.velocity = view.showVelocity;
+    flags.contacts = view.showContacts;
+    flags.impulses = view.showImpulses;
+    flags.penetration = view.showPenetration;
+    flags.trails = view.showTrails;
+    return flags;
+}
+
+bool overlaysOnTop(const ui::PanelState& view, std::size_t sphereCount) {
+    return view.overlaysOnTop && sphereCount <= kOverlaysOnTopMaxSpheres;
+}
+
+void buildSnapshot(Simulation& simulation, const ui::PanelState& view, render::FrameSnapshot& snapshot) {
+    const OverlayFlags flags = overlayFlags(view);
+    if (!(flags == simulation.overlayFlags())) simulation.setOverlayFlags(flags);
+    if (view.selectedSphere != simulation.selectedSphere()) simulation.setSelectedSphere(view.selectedSphere);
+    const physics::World& world = simulation.world();
+    snapshot.clear();
+    render::snapshotSpheres(world, static_cast<render::ColorBy>(view.colorBy), snapshot);
+    render::snapshotPlanes(world, snapshot);
+    if (!flags.any()) return;
+    // Under the arrows: trails, then overlaps; the arrows and points last, on top.
+    if (flags.trails) appendTrails(simulation.overlays(), world, snapshot);
+    if (flags.penetration && !simulation.alarms().nonFinite()) {
+        physics::Workspace scratch;
+        appendPenetration(currentOverlaps(world, scratch), snapshot);
+    }
+    if (flags.velocity) appendVelocityArrows(world, simulation.selectedSphere(), snapshot);
+    if (flags.contacts && world.recordContacts) appendContacts(world, snapshot);
+    if (flags.impulses) appendImpulses(simulation.overlays(), world, snapshot);
+}
+
+namespace {
+
+std::string restitutionNote(const Simulation& simulation) {
+    const physics::World& world = simulation.world();
+    if (floorPlane(world, simulation.params()) < 0) return "(no floor under gravity)";
+    if (measuredSpheres(world, simulation.selectedSphere()).empty()) {
+        return "(measured up to " + std::to_string(kMaxMeasuredSpheres) + " spheres)";
+    }
+    if (!world.recordContacts) return "(not measured above " + std::to_string(kMaxRecordSpheres) + " spheres)";
+    return "(no floor bounce yet)";
+}
+
+}  // namespace
+
+ui::Readouts makeReadouts(const Simulation& simulation, const ui::FrameTimes& timing) {
+    ui::Readouts r;
+    r.timing = timing;
+    r.paused = simulation.paused;
+    r.behindRealTime = simulation.behindRealTime();
+    r.time = simulation.world().time;
+    r.steps = simulation.world().stepCount;
+    r.sphereCount = simulation.world().size();
+    r.stats = simulation.lastStepStats();
+    r.diagnostics = simulation.diagnostics();
+    const History& history = simulation.history();
+    for (Series s : {Series::Kinetic, Series::Potential, Series::Modified, Series::Contacts}) {
+        r.plots.emplace_back(History::name(s), &history.values(s));
+    }
+    r.plotTimes = &history.times();
+    r.bouncesSinceRestart = simulation.bouncesSinceRestart();
+    for (const AlarmLine& line : simulation.alarms().lines(simulation.world().time)) {
+        r.alarms.push_back({line.text, line.hint, line.lit});
+    }
+    r.betaSquared = simulation.params().beta * simulation.params().beta;
+    for (const BounceMeasurement& m : simulation.restitution().last()) r.measuredBetaSquared.push_back(m.ratio());
+    if (r.measuredBetaSquared.empty()) r.restitutionNote = restitutionNote(simulation);
+    for (const LegendLine& line :
+         overlayLegend(simulation.overlayFlags(), simulation.world().size(), simulation.selectedSphere())) {
+        r.legend.push_back({line.text,
+                            {line.color.x / 255.0f, line.color.y / 255.0f, line.color.z / 255.0f, 1.0f}});
+    }
+    return r;
+}
+
+void sceneBounds(const Simulation& simulation, glm::vec3& lo, glm::vec3& hi) {
+    const scenes::Scene& scene = simulation.scene();
+    if (scene.box) {
+        const glm::dvec3 size = scene.box->size;
+        lo = glm::vec3(-size.x / 2, -size.y / 2, 0.0);
+        hi = glm::vec3(size.x / 2, size.y / 2, size.z);
+        return;
+    }
+    lo = glm::vec3(-1.0f);
+    hi = glm::vec3(1.0f);
+    const physics::World& world = simulation.world();
+    for (std::size_t i = 0; i < world.size(); ++i) {
+        lo = glm::min(lo, glm::vec3(world.position[i]) - float(world.radius[i]));
+        hi = glm::max(hi, glm::vec3(world.position[i]) + float(world.radius[i]));
+    }
+}
+
+glm::ivec4 viewportRightOf(glm::ivec2 size, float panelPixels) {
+    const int x = std::clamp(static_cast<int>(panelPixels + 0.5f), 0, std::max(size.x - 1, 0));
+    return {x, 0, std::max(size.x - x, 1), std::max(size.y, 1)};
+}
+
+}  // namespace app

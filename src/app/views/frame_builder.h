@@ -1,0 +1,35 @@
+#pragma once
+// Turns the simulation into what the renderer and the panel read: the plain
+// snapshot of spheres and planes, and the readouts. Shared by the window and the
+// capture mode so both show the same thing.
+#include "app/run/simulation.h"
+#include "render/frame_snapshot.h"
+#include "ui/control_panel.h"
+
+namespace app {
+
+// The overlays the panel's view state asks for.
+OverlayFlags overlayFlags(const ui::PanelState& view);
+
+// Whether the overlays are drawn over everything (render::RenderStyle::overlayOnTop):
+// in scenes of up to kOverlaysOnTopMaxSpheres spheres, where a contact point or an
+// impulse would otherwise hide inside a sphere; in denser ones they are depth-tested,
+// so that only the front layer shows.
+constexpr std::size_t kOverlaysOnTopMaxSpheres = 50;
+bool overlaysOnTop(const ui::PanelState& view, std::size_t sphereCount);
+
+// What the view options of the panel (colouring, overlays) ask to draw. It also
+// tells the simulation which overlays are shown and which sphere is selected, so
+// that it records contacts and trails from the next step on, and only then.
+void buildSnapshot(Simulation& simulation, const ui::PanelState& view, render::FrameSnapshot& snapshot);
+
+ui::Readouts makeReadouts(const Simulation& simulation, const ui::FrameTimes& timing);
+
+// Axis-aligned bounds of the box (or of the spheres when there is none), m, for the camera.
+void sceneBounds(const Simulation& simulation, glm::vec3& lo, glm::vec3& hi);
+
+// The scene's viewport (x, y, width, height; GL's lower-left origin) in a framebuffer
+// of `size` pixels whose left `panelPixels` belong to the panel.
+glm::ivec4 viewportRightOf(glm::ivec2 size, float panelPixels);
+
+}  // namespace app

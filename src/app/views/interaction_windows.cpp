@@ -1,0 +1,340 @@
+#include "app/views/interaction_windows.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include "app/teaching/contact_explanation.h"
+#include "app/run/session.h"
+#include "app/views/view_labels.h"
+#include "ui/wrapped_text.h"
+
+namespace app {
+namespace {
+
+constexpr ImGuiWindowFlags kFixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing;
+constexpr float kBackgroundAlpha = 0.86f;
+const ImVec4 kHeadingColor{1.0f, 0.85f, 0.45f, 1.0f};  // the slide a line comes from
+const ImVec4 kResultColor{0.55f, 0.90f, 0.55f, 1.0f};
+const ImVec4 kNoteColor{1.0f, 0.62f, 0.30f, 1.0f};
+
+void tooltip(const char* text) {
+    if (!ImGui::IsItemHovered()) return;
+    ImGui::BeginTooltip();
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 28.0f);
+    ImGui::TextUnformatted(text);
+    ImGui::PopTextWrapPos();
+    ImGui::EndTooltip();
+}
+
+void place(const Placement& placement) {
+    ImGui::SetNextWindowPos(ImVec2(placement.position.x, placement.position.y), ImGuiCond_Always,
+                            ImVec2(placement.pivot.x, placement.pivot.y));
+    ImGui::SetNextWindowSize(ImVec2(placement.width, 0.0f), ImGuiCond_Always);
+    if (placement.maxHeight > 0.0f) {
+        ImGui::SetNextWindowSizeConstraints(ImVec2(placement.width, 0.0f), ImVec2(placement.width, placement.maxHeight));
+    }
+    ImGui::SetNextWindowBgAlpha(kBackgroundAlpha);
+}
+
+const char* stateName(physics::ContactState state) {
+    switch (state) {
+        case physics::ContactState::Free: return "free";
+        case physics::ContactState::Colliding: return "colliding (bounce)";
+        case physics::ContactState::Static: return "static contact";
+    }
+    return "";
+}
+
+// One vector field: three numbers; true when edited (the value is in `v`).
+bool vectorField(const char* label, glm::dvec3& v, bool editable) {
+    double values[3] = {v.x, v.y, v.z};
+    const ImGuiInputTextFlags flags = editable ? 0 : ImGuiInputTextFlags_ReadOnly;
+    const bool changed = ImGui::InputScalarN(label, ImGuiDataType_Double, values, 3, nullptr, nullptr, "%.3f", flags);
+    if (changed) v = {values[0], values[1], values[2]};
+    return changed;
+}
+
+bool scalarField(const char* label, double& value, bool editable) {
+    const ImGuiInputTextFlags flags = editable ? 0 : ImGuiInputTextFlags_ReadOnly;
+    return ImGui::InputScalar(label, ImGuiDataType_Double, &value, nullptr, nullptr, "%.4g", flags);
+}
+
+
+// "vs #40, pass 2, bounce" or "floor, pass 1, static" for a contact of `selected`.
+std::string contactTitle(const physics::ContactEvent& event, int selected, int boxPlaneCount) {
+    char text[96];
+    const char* kind = event.bounce ? "bounce" : "static";
+    if (event.isPlane()) {
+        std::snprintf(text, sizeof text, "%s, pass %d, %s", planeName(-1 - event.other, boxPlaneCount).c_str(),
+                      event.pass + 1, kind);
+    } else {
+        const int partner = static_cast<int>(event.i) == selected ? event.other : static_cast<int>(event.i);
+        std::snprintf(text, sizeof text, "vs #%d, pass %d, %s", partner, event.pass + 1, kind);
+    }
+    return text;
+}
+
+}  // namespace
+
+float timelineBarHeight() {
+    const ImGuiStyle& style = ImGui::GetStyle();
+    return 2.0f * ImGui::GetFrameHeight() + style.ItemSpacing.y + 2.0f * style.WindowPadding.y;
+}
+
+void drawTimelineBar(const glm::vec4& scene, const TimelineInfo& timeline, bool compareOn, ToolWindowsState& state,
+                     ToolActions& actions) {
+    ImGui::SetNextWindowPos(ImVec2(scene.x, scene.y + scene.w), ImGuiCond_Always, ImVec2(0.0f, 1.0f));
+    ImGui::SetNextWindowSize(ImVec2(scene.z, timelineBarHeight()), ImGuiCond_Always);
+    ImGui::SetNextWindowBgAlpha(kBackgroundAlpha);
+    ImGui::Begin("##timeline bar", nullptr,
+                 kFixed | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
+
+    char info[96];
+    std::snprintf(info, sizeof info, "t %.3f s  step %llu  (%.1f s kept)", timeline.cursorTime,
+                  static_cast<unsigned long long>(timeline.cursorSteps), timeline.keptSeconds);
+    ImGui::AlignTextToFramePadding();
+    ImGui::TextUnformatted("Timeline");
+    ImGui::SameLine();
+    const float infoWidth = ImGui::CalcTextSize(info).x + ImGui::GetStyle().ItemSpacing.x;
+    ImGui::SetNextItemWidth(std::max(ImGui::GetContentRegionAvail().x - infoWidth, ImGui::GetFontSize() * 4.0f));
+    int cursor = static_cast<int>(timeline.cursor);
+    const int last = std::max(static_cast<int>(timeline.size) - 1, 0);
+    ImGui::BeginDisabled(timeline.size < 2);
+    if (ImGui::SliderInt("##timeline", &cursor, 0, last, "") && timeline.size > 0) {
+        actions.scrub = true;
+        actions.scrubTo = static_cast<std::size_t>(cursor);
+    }
+    ImGui::EndDisabled();
+    char help[256];
+    std::snprintf(help, sizeof help,
+                  "Step back: the last frames are kept (%zu, %.1f MB). Drag to scrub back (it pauses); Left and "
+                  "Right arrows step through them. Run (P) or Step (O) goes on from the state shown: the future is "
+                  "recomputed, and is the same as before unless something was changed.",
+                  timeline.size, double(timeline.bytes) / (1024.0 * 1024.0));
+    tooltip(help);
+    ImGui::SameLine();
+    ImGui::TextUnformatted(info);
+
+    if (ImGui::Button("Shoot (F)")) actions.shoot = true;
+    tooltip("A new sphere from the camera along the view direction (F: through the mouse pointer). Outside the box "
+            "it starts where the ray enters the box. Refused where it would overlap a sphere.");
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 7.0f);
+    ImGui::SliderFloat("##shot speed", &state.shootSpeed, 1.0f, 50.0f, "%.0f m/s");
+    tooltip("Speed of the shot sphere, m/s.");
+    ImGui::SameLine();
+    bool compare = compareOn;
+    if (ImGui::Checkbox("Side by side (V)", &compare)) actions.toggleCompare = true;
+    tooltip("Two views of the same initial state, stepping together: left the panel's parameters, right the same "
+            "with the name=value overrides given here (e.g. method=velocity, or order=reversed,passes=1). "
+            "Turning it on restarts both.");
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(std::max(ImGui::GetContentRegionAvail().x, ImGui::GetFontSize() * 6.0f));
+    if (ImGui::InputTextWithHint("##compare", "name=value,...", &state.compareText,
+                                 ImGuiInputTextFlags_EnterReturnsTrue)) {
+        actions.applyCompare = true;  // Enter: side by side (again) with these overrides
+    }
+    tooltip("name=value overrides for the right view; Enter applies them (and turns side by side on).");
+    ImGui::End();
+}
+
+void drawMessage(const glm::vec4& scene, const ToolWindowsState& state) {
+    if (state.message.empty()) return;
+    const float gap = ImGui::GetFontSize() * 0.5f;
+    ImGui::SetNextWindowPos(ImVec2(scene.x + 0.5f * scene.z, scene.y + scene.w - timelineBarHeight() - gap),
+                            ImGuiCond_Always, ImVec2(0.5f, 1.0f));
+    ImGui::SetNextWindowSize(ImVec2(0.0f, 0.0f), ImGuiCond_Always);
+    ImGui::SetNextWindowBgAlpha(kBackgroundAlpha);
+    ImGui::Begin("##message", nullptr,
+                 kFixed | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoInputs | ImGuiWindowFlags_AlwaysAutoResize);
+    const bool refused = state.message.find("cannot") != std::string::npos;  // "cannot ...", "A: cannot ..."
+    ImGui::PushStyleColor(ImGuiCol_Text, refused ? kNoteColor : kResultColor);
+    ImGui::PushTextWrapPos(std::min(0.9f * scene.z, ImGui::GetFontSize() * 40.0f));  // long ones wrap, never cut
+    ImGui::TextUnformatted(state.message.c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::PopStyleColor();
+    ImGui::End();
+}
+
+float inspectorWidth() { return ImGui::GetFontSize() * 20.0f; }
+
+float drawInspector(const Placement& placement, const physics::World& world, int selected, bool paused,
+                    ToolWindowsState& state, ToolActions& actions) {
+    if (selected < 0 || static_cast<std::size_t>(selected) >= world.size()) return placement.position.y;
+    const auto i = static_cast<std::size_t>(selected);
+    place(placement);
+    char title[64];
+    std::snprintf(title, sizeof title, "Sphere #%d###inspector", selected);
+    ImGui::Begin(title, nullptr, kFixed | ImGuiWindowFlags_NoCollapse);
+    ImGui::PushItemWidth(ImGui::GetFontSize() * 13.5f);
+    SphereFields fields{world.position[i], world.velocity[i], world.radius[i], world.mass[i]};
+    bool changed = vectorField("p (m)", fields.p, paused);
+    changed |= vectorField("v (m/s)", fields.v, paused);
+    changed |= scalarField("r (m)", fields.r, paused);
+    changed |= scalarField("m (kg)", fields.m, paused);
+    ImGui::PopItemWidth();
+    if (changed) {
+        actions.edited = true;
+        actions.fields = fields;
+    }
+    if (!state.inspectorRefusal.empty() && state.refusedSphere == selected) {  // beside the fields; they kept their values
+        ImGui::PushStyleColor(ImGuiCol_Text, kNoteColor);
+        ui::textWrappedAtSpaces(state.inspectorRefusal);
+        ImGui::PopStyleColor();
+    }
+    const physics::ContactState contact =
+        i < world.contactState.size() ? world.contactState[i] : physics::ContactState::Free;
+    const glm::dvec3& v = world.velocity[i];
+    ImGui::Text("|v| = %.3f m/s, %s", std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z), stateName(contact));
+    if (!paused) ImGui::TextDisabled("pause (P) to edit; Ctrl + drag to throw");
+    if (ImGui::Button(state.explainer ? "Hide explanation (E)" : "Explain contacts (E)")) actions.toggleExplainer = true;
+    tooltip("The slides' formulas with the numbers of this sphere's latest contacts.");
+    ImGui::SameLine();
+    if (ImGui::Button("Deselect")) actions.deselect = true;
+    const float bottom = ImGui::GetWindowPos().y + ImGui::GetWindowHeight();
+    ImGui::End();
+    return bottom;
+}
+
+void drawExplainer(const Placement& placement, const ExplainerInput& input, ToolWindowsState& state,
+                   ToolActions& actions) {
+    if (!state.explainer || input.selected < 0 || !input.events || !input.params) return;
+    place(placement);
+    char title[64];
+    std::snprintf(title, sizeof title, "Explain this contact: sphere #%d###explainer", input.selected);
+    bool open = true;
+    ImGui::Begin(title, &open, kFixed | ImGuiWindowFlags_NoCollapse);
+    if (!open) actions.toggleExplainer = true;
+    const std::vector<physics::ContactEvent>& events = *input.events;
+    if (events.empty() && !input.recording) {
+        ImGui::TextWrapped("Contacts are not recorded in this scene (too many spheres): nothing to explain.");
+    } else if (events.empty()) {
+        ImGui::TextWrapped("No contact of sphere #%d recorded since it was selected. %s", input.selected,
+                           input.paused ? "Step with O until it touches something."
+                                        : "It is explained here after its next contact.");
+    }
+    if (events.empty()) {
+        ImGui::End();
+        return;
+    }
+    const int count = static_cast<int>(events.size());
+    state.explainIndex = std::clamp(state.explainIndex, 0, count - 1);
+    if (ImGui::ArrowButton("##previous", ImGuiDir_Left)) state.explainIndex = (state.explainIndex + count - 1) % count;
+    ImGui::SameLine();
+    if (ImGui::ArrowButton("##next", ImGuiDir_Right)) state.explainIndex = (state.explainIndex + 1) % count;
+    ImGui::SameLine();
+    const physics::ContactEvent& event = events[static_cast<std::size_t>(state.explainIndex)];
+    ImGui::Text("%d of %d: %s", state.explainIndex + 1, count,
+                contactTitle(event, input.selected, input.boxPlaneCount).c_str());
+    const double age = input.now - input.eventTime;  // s
+    if (age > 0.0) {
+        ImGui::TextDisabled("in the step to t = %.4f s (step %llu), %.3g s ago", input.eventTime,
+                            static_cast<unsigned long long>(input.eventSteps), age);
+    } else {
+        ImGui::TextDisabled("in the last step, to t = %.4f s (step %llu)", input.eventTime,
+                            static_cast<unsigned long long>(input.eventSteps));
+    }
+    ImGui::Separator();
+    const ContactExplanation explanation = explainContact(event, *input.params);
+    for (const ExplanationLine& line : explanationLines(explanation, *input.params, input.boxPlaneCount)) {
+        const ImVec4 color = line.kind == ExplanationLine::Kind::Heading  ? kHeadingColor
+                             : line.kind == ExplanationLine::Kind::Result ? kResultColor
+                             : line.kind == ExplanationLine::Kind::Note   ? kNoteColor
+                                                                          : ImGui::GetStyleColorVec4(ImGuiCol_Text);
+        ImGui::PushStyleColor(ImGuiCol_Text, color);
+        ui::textWrappedAtSpaces(line.text);
+        ImGui::PopStyleColor();
+    }
+    ImGui::End();
+}
+
+void drawViewLabels(const std::vector<ViewLabel>& labels) {
+    for (std::size_t k = 0; k < labels.size(); ++k) {
+        const ViewLabel& label = labels[k];
+        ImGui::SetNextWindowPos(ImVec2(label.topLeft.x, label.topLeft.y), ImGuiCond_Always,
+                                ImVec2(label.pivot.x, label.pivot.y));
+        // Sized from this frame's text (an auto-sized window lags a frame behind changing numbers).
+        const ImGuiStyle& style = ImGui::GetStyle();
+        float width = 0.0f;
+        for (const std::string& line : label.lines) width = std::max(width, ImGui::CalcTextSize(line.c_str()).x);
+        const float lines = float(label.lines.size());
+        ImGui::SetNextWindowSize(ImVec2(width + 2.0f * style.WindowPadding.x,
+                                        lines * ImGui::GetTextLineHeightWithSpacing() - style.ItemSpacing.y +
+                                            2.0f * style.WindowPadding.y),
+                                 ImGuiCond_Always);
+        ImGui::SetNextWindowBgAlpha(0.75f);
+        const std::string name = "##view label " + std::to_string(k);
+        ImGui::Begin(name.c_str(), nullptr,
+                     kFixed | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar |
+                         ImGuiWindowFlags_NoInputs | ImGuiWindowFlags_NoBringToFrontOnFocus);
+        for (std::size_t n = 0; n < label.lines.size(); ++n) {
+            if (n == 0) {
+                const ImVec4 color(label.color.x / 255.0f, label.color.y / 255.0f, label.color.z / 255.0f, 1.0f);
+                ImGui::TextColored(color, "%s", label.lines[n].c_str());
+            } else {
+                ImGui::TextUnformatted(label.lines[n].c_str());
+            }
+        }
+        ImGui::End();
+    }
+}
+
+ToolActions drawInteractionWindows(const Session& session, const ViewLayout& layout, float panelUnits,
+                                   ToolWindowsState& state) {
+    ToolActions actions;
+    const ImGuiViewport* viewport = ImGui::GetMainViewport();
+    const glm::vec4 scene(viewport->WorkPos.x + panelUnits, viewport->WorkPos.y, viewport->WorkSize.x - panelUnits,
+                          viewport->WorkSize.y);
+    const Simulation& simulation = session.run(0);
+    const physics::World& world = simulation.world();
+    const RewindBuffer& timeline = session.timeline();
+    TimelineInfo info;
+    info.size = timeline.size();
+    info.cursor = timeline.cursor();
+    if (!timeline.empty()) {
+        info.cursorTime = timeline.at(timeline.cursor()).time;
+        info.cursorSteps = timeline.at(timeline.cursor()).stepCount;
+        info.keptSeconds = timeline.at(timeline.size() - 1).time - timeline.at(0).time;
+    }
+    info.bytes = timeline.bytes();
+    const Comparison* comparison = session.comparison();
+    drawTimelineBar(scene, info, comparison != nullptr, state, actions);
+
+    // Alone: the inspector at the top left of the scene, the explainer under it, both
+    // left of the readouts. Side by side: the views' labels take the top, the inspector
+    // goes to the bottom right and the explainer to the bottom left.
+    const glm::vec4 area(scene.x, scene.y, scene.z, scene.w - timelineBarHeight());
+    const float font = ImGui::GetFontSize(), gap = 0.5f * font;
+    const int selected = session.selected();
+    Placement inspector{{area.x + gap, area.y + gap}, {0.0f, 0.0f}, inspectorWidth(), 0.0f};
+    if (comparison) {
+        inspector.position = {area.x + area.z - gap, area.y + area.w - gap};
+        inspector.pivot = {1.0f, 1.0f};
+    }
+    const float inspectorBottom = drawInspector(inspector, world, selected, simulation.paused, state, actions);
+    const float readoutsWidth = std::min(18.0f * font, 0.3f * viewport->WorkSize.x);  // ui::drawReadouts'
+    const float room = area.z - 3.0f * gap - (comparison ? inspectorWidth() : readoutsWidth);
+    const float top = comparison ? area.y + 10.0f * font : (selected >= 0 ? inspectorBottom : area.y) + gap;
+    const Placement explainer{{area.x + gap, area.y + area.w - gap}, {0.0f, 1.0f},
+                              std::clamp(room, 22.0f * font, 40.0f * font),
+                              std::max(area.y + area.w - gap - top, 8.0f * font)};
+    const Session::Contacts& contacts = session.latestContacts();
+    drawExplainer(explainer,
+                  {selected, &contacts.events, contacts.time, contacts.steps, world.time, world.boxPlaneCount,
+                   &simulation.params(), simulation.paused, world.recordContacts},
+                  state, actions);
+    if (comparison) {
+        const float below = ImGui::GetFrameHeight() + 2.0f * ImGui::GetStyle().ItemSpacing.y;  // the readouts' title
+        drawViewLabels(comparisonLabels(simulation, *comparison, layout.views, layout.framebuffer,
+                                        layout.pixelsPerUnit, glm::vec2(gap, gap + below)));
+    }
+    drawMessage(scene, state);
+    return actions;
+}
+
+}  // namespace app

@@ -1,0 +1,118 @@
+#pragma once
+// The ImGui windows of the interaction features, drawn over the scene: the
+// timeline bar at the bottom (scrub back, shoot, side by side), the inspector of
+// the selected sphere, "explain this contact", and the labels of the two views
+// side by side. Like ui::drawControlPanel they read plain data and return what the
+// app must do; they never change the world themselves. Rectangles are in ImGui
+// units (window coordinates, top-left origin): x, y, width, height.
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/gtc/type_precision.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "app/run/interaction.h"
+#include "app/views/view_layout.h"
+#include "physics/params.h"
+#include "physics/world.h"
+
+namespace app {
+
+class Session;
+
+// What the windows keep between frames.
+struct ToolWindowsState {
+    bool explainer = false;             // "Explain this contact" is open
+    int explainIndex = 0;               // which of the selected sphere's contacts
+    float shootSpeed = 10.0f;           // m/s
+    std::string compareText = "method=velocity";  // name=value[,name=value] for the second view
+    std::string message;                // the last result or refusal
+    std::string inspectorRefusal;       // why the inspector's last edit was refused, shown under its fields
+    int refusedSphere = -1;             // the sphere it was about
+};
+
+struct ToolActions {
+    bool deselect = false;
+    bool edited = false;       // `fields` were edited: put them into the world
+    SphereFields fields;
+    bool shoot = false;
+    bool toggleCompare = false;
+    bool applyCompare = false;  // Enter in the overrides' field
+    bool toggleExplainer = false;
+    bool scrub = false;        // restore timeline entry `scrubTo`
+    std::size_t scrubTo = 0;
+};
+
+// The rewind buffer as the timeline shows it.
+struct TimelineInfo {
+    std::size_t size = 0;     // entries kept
+    std::size_t cursor = 0;   // the entry shown
+    double cursorTime = 0.0;  // s
+    std::uint64_t cursorSteps = 0;
+    double keptSeconds = 0.0;  // s of simulated time between the oldest and newest entry
+    std::size_t bytes = 0;
+};
+
+// Height (ImGui units) of the timeline bar: two rows, whatever it shows.
+float timelineBarHeight();
+
+// The bar along the bottom of `scene`, timelineBarHeight() high.
+void drawTimelineBar(const glm::vec4& scene, const TimelineInfo& timeline, bool compareOn, ToolWindowsState& state,
+                     ToolActions& actions);
+
+// The last result or refusal (state.message), centred just above the bar, on top
+// of the other windows: the views keep their size when it comes and goes.
+void drawMessage(const glm::vec4& scene, const ToolWindowsState& state);
+
+// Where a window goes: `pivot` of it (0..1 each way) at `position` (ImGui units).
+struct Placement {
+    glm::vec2 position{0.0f};
+    glm::vec2 pivot{0.0f};
+    float width = 0.0f;      // ImGui units
+    float maxHeight = 0.0f;  // ImGui units; 0: no limit (the rest scrolls)
+};
+
+// The inspector's width (ImGui units).
+float inspectorWidth();
+
+// The selected sphere's p, v, r, m, editable while paused. Returns the window's
+// bottom edge (ImGui units), or the placement's y when nothing was drawn.
+float drawInspector(const Placement& placement, const physics::World& world, int selected, bool paused,
+                    ToolWindowsState& state, ToolActions& actions);
+
+// What the explainer explains: the selected sphere's latest contact responses.
+struct ExplainerInput {
+    int selected = -1;
+    const std::vector<physics::ContactEvent>* events = nullptr;  // of that step
+    double eventTime = 0.0;  // s, the world's time after that step
+    std::uint64_t eventSteps = 0;
+    double now = 0.0;        // s, the world's time now
+    int boxPlaneCount = 0;
+    const physics::Params* params = nullptr;
+    bool paused = false;
+    bool recording = true;  // world.recordContacts: Simulation records while a sphere is selected
+};
+
+// "Explain this contact": the slides' formulas with the numbers of one of the events.
+void drawExplainer(const Placement& placement, const ExplainerInput& input, ToolWindowsState& state,
+                   ToolActions& actions);
+
+// All of the above for the session's state: the timeline bar, the inspector and the
+// explainer of the selected sphere, the views' labels side by side and the message.
+// `panelUnits` is the width of the control panel (ImGui units).
+ToolActions drawInteractionWindows(const Session& session, const ViewLayout& layout, float panelUnits,
+                                   ToolWindowsState& state);
+
+// A view's label: its title and readouts, at the top left of the view.
+struct ViewLabel {
+    glm::vec2 topLeft{0.0f};  // ImGui units: where `pivot` of the label goes
+    glm::vec2 pivot{0.0f};    // (0, 0): the label's top left; (0, 1): its bottom left
+    std::vector<std::string> lines;  // the first is the title
+    glm::u8vec4 color{255, 255, 255, 255};  // of the title
+};
+void drawViewLabels(const std::vector<ViewLabel>& labels);
+
+}  // namespace app

@@ -1,0 +1,129 @@
+#include "app/window/interaction_input.h"
+
+#include <cstdarg>
+#include <cstdio>
+
+#include <imgui.h>
+#include <glm/geometric.hpp>
+
+namespace app {
+
+void InteractionInput::say(double now, const char* format, ...) {
+    char text[512];
+    va_list args;
+    va_start(args, format);
+    std::vsnprintf(text, sizeof text, format, args);
+    va_end(args);
+    tools_.message = text;
+    messageTime_ = now;
+}
+
+void InteractionInput::expireMessage(double now) {
+    if (!tools_.message.empty() && now - messageTime_ > kMessageSeconds) tools_.message.clear();
+}
+
+bool InteractionInput::takeFoldReadouts() {
+    const bool fold = foldReadouts_;
+    foldReadouts_ = false;
+    return fold;
+}
+
+bool InteractionInput::handleMouse(const ViewLayout& views, const render::Camera& camera, double now) {
+    const ImGuiIO& io = ImGui::GetIO();
+    const glm::vec2 mouse(io.MousePos.x, io.MousePos.y);
+    if (session_.dragging()) {
+        if (io.MouseDown[ImGuiMouseButton_Left]) {
+            session_.dragTo(views.ray(camera, dragView_, mouse), now);
+        } else {
+            const glm::dvec3 v = session_.endDrag();
+            say(now, "sphere #%d thrown at %.2f m/s", session_.selected(), glm::length(v));
+        }
+        return true;
+    }
+    if (ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
+        pressInScene_ = !io.WantCaptureMouse;
+        const int view = pressInScene_ ? views.viewAt(mouse) : -1;
+        if (io.KeyCtrl && view >= 0) {
+            const render::Ray ray = views.ray(camera, view, mouse);
+            const int hit = pickSphere(session_.run(view).world(), ray);
+            if (hit >= 0 && session_.beginDrag(view, static_cast<std::size_t>(hit), ray, camera.forward(), now)) {
+                dragView_ = view;
+                return true;
+            }
+        }
+    }
+    if (ImGui::IsMouseReleased(ImGuiMouseButton_Left) && pressInScene_ &&
+        io.MouseDragMaxDistanceSqr[ImGuiMouseButton_Left] < kClickPixels * kClickPixels) {
+        if (const int view = views.viewAt(mouse); view >= 0) {
+            session_.select(pickSphere(session_.run(view).world(), views.ray(camera, view, mouse)));
+        }
+    }
+    return false;
+}
+
+void InteractionInput::shoot(const ViewLayout& views, const render::Camera& camera, bool throughMouse, double now) {
+    const ImGuiIO& io = ImGui::GetIO();
+    const glm::vec2 mouse(io.MousePos.x, io.MousePos.y);
+    const int view = throughMouse && !io.WantCaptureMouse ? views.viewAt(mouse) : -1;
+    const render::Ray aim = view >= 0 ? views.ray(camera, view, mouse) : render::Ray{camera.position(), camera.forward()};
+    const std::string refusal = session_.shoot(aim, tools_.shootSpeed);
+    if (refusal.empty()) {
+        say(now, "shot sphere #%d at %.0f m/s", session_.selected(), double(tools_.shootSpeed));
+    } else {
+        say(now, "%s", refusal.c_str());
+    }
+}
+
+std::string InteractionInput::startComparison(const std::vector<std::string>& lists) {
+    tools_.compareText.clear();
+    for (const std::string& list : lists) tools_.compareText += (tools_.compareText.empty() ? "" : ",") + list;
+    const std::string error = session_.startComparison(lists);
+    foldReadouts_ = error.empty();
+    return error;
+}
+
+bool InteractionInput::toggleCompare(double now) {
+    if (session_.comparison()) {
+        session_.stopComparison();
+        say(now, "side by side: off");
+        return true;
+    }
+    return applyCompare(now);
+}
+
+bool InteractionInput::applyCompare(double now) {
+    if (const std::string error = session_.startComparison({tools_.compareText}); !error.empty()) {
+        say(now, "cannot compare: %s", error.c_str());
+        return false;
+    }
+    const Comparison& comparison = *session_.comparison();
+    const std::string primary = comparison.primaryLabel(session_.run(0).scene());
+    if (primary == comparison.label()) {
+        say(now, "side by side: %s in both views: the overrides change nothing, so the two views are the same",
+            primary.c_str());
+    } else {
+        say(now, "side by side: %s against %s, both restarted from the scene's initial state", primary.c_str(),
+            comparison.label().c_str());
+    }
+    foldReadouts_ = true;
+    return true;
+}
+
+void InteractionInput::toggleExplainer() {
+    if (session_.selected() >= 0 || tools_.explainer) tools_.explainer = !tools_.explainer;
+}
+
+bool InteractionInput::apply(const ToolActions& a, const ViewLayout& views, const render::Camera& camera, double now) {
+    if (a.deselect) session_.select(-1);
+    if (a.edited) {
+        tools_.inspectorRefusal = session_.editSelected(a.fields);
+        tools_.refusedSphere = session_.selected();
+    }
+    if (a.shoot) shoot(views, camera, false, now);
+    if (a.toggleExplainer) tools_.explainer = !tools_.explainer;
+    if (a.scrub) session_.scrubTo(a.scrubTo);
+    if (a.applyCompare) return applyCompare(now);
+    return a.toggleCompare && toggleCompare(now);
+}
+
+}  // namespace app

@@ -1,0 +1,406 @@
+#include "app/window/window_app.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <memory>
+
+#include <glad/gl.h>
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <backends/imgui_impl_glfw.h>
+
+#include "app/views/frame_builder.h"
+#include "app/window/interaction_input.h"
+#include "app/views/interaction_windows.h"
+#include "app/run/output_files.h"
+#include "app/run/scene_source.h"
+#include "app/run/session.h"
+#include "app/run/simulation.h"
+#include "app/views/view_layout.h"
+#include "platform/window.h"
+#include "render/camera.h"
+#include "render/image_io.h"
+#include "render/offscreen_target.h"
+#include "render/renderer.h"
+#include "scenes/presets.h"
+#include "scenes/scene_json.h"
+#include "ui/control_panel.h"
+#include "ui/imgui_gl_renderer.h"
+#include "ui/ui_font.h"
+
+namespace app {
+namespace {
+
+constexpr int kViewGap = 4;  // px between the two views side by side
+// s of wall time a frame may spend stepping: beyond it a heavy scene runs in slow
+// motion ("behind real time") and the window stays responsive.
+constexpr double kStepBudgetSeconds = 1.0 / 30.0;
+
+class WindowApp {
+public:
+    WindowApp(std::unique_ptr<platform::Window> window, scenes::Scene scene, const WindowAppOptions& options);
+    ~WindowApp();
+    int run();
+
+private:
+    static void onKey(GLFWwindow* w, int key, int scancode, int action, int mods);
+    static void onScroll(GLFWwindow* w, double dx, double dy);
+    void handleKey(int key);
+    void handleMouse();
+    void frame(double dt);
+    void drawScene();
+    void apply(const ui::PanelActions& actions);
+    void loadPreset(int index);
+    void loadFile(const std::string& path);
+    void notify(ui::PanelState::FileButton at, const std::string& text, bool error);
+    template <class Write>
+    std::string writeOutput(ui::PanelState::FileButton at, const char* stem, const char* extension, const Write& write);
+    void rebuildFont();
+    void resetCamera();
+    void fitCamera();
+    ViewLayout layout() const;  // the views: right of the panel, above the timeline bar
+    bool saveScreenshot(const std::string& path);
+
+    std::unique_ptr<platform::Window> window_;
+    Simulation simulation_;
+    Session session_;
+    WindowAppOptions options_;
+    render::Renderer renderer_;
+    render::Camera camera_;
+    render::FrameSnapshot snapshots_[2];
+    ui::ImGuiGlRenderer imguiRenderer_;
+    ui::PanelState panel_;
+    InteractionInput input_;
+    std::vector<std::string> presets_;
+    ui::FrameTimes timing_;
+    double frameSeconds_ = 0.0;  // s, a running average of the real frame time
+    bool screenshotRequested_ = false;
+    bool cameraFitted_ = false;  // fitted in the first frame, once the panel's width is known
+};
+
+WindowApp::WindowApp(std::unique_ptr<platform::Window> window, scenes::Scene scene, const WindowAppOptions& options)
+    : window_(std::move(window)),
+      simulation_(std::move(scene)),
+      session_(simulation_),
+      options_(options),
+      input_(session_),
+      presets_(scenes::listPresets()) {
+    simulation_.paused = options.paused;
+    simulation_.wallBudget = kStepBudgetSeconds;
+    panel_.scenePath = resolveScenePath(options.scene);
+    panel_.outputFolder = outputFolder();
+    for (std::size_t k = 0; k < presets_.size(); ++k) {
+        if (scenes::presetPath(presets_[k]) == panel_.scenePath) panel_.presetIndex = static_cast<int>(k);
+    }
+    if (!options.compare.empty()) {
+        if (const std::string error = input_.startComparison(options.compare); !error.empty()) {
+            throw UsageError("--compare " + error);
+        }
+    }
+    if (options.select >= 0) {
+        if (static_cast<std::size_t>(options.select) >= simulation_.world().size()) {
+            throw UsageError("--select " + std::to_string(options.select) + ": the scene has " +
+                             std::to_string(simulation_.world().size()) + " spheres");
+        }
+        session_.select(options.select);
+        if (options.explain) input_.toggleExplainer();
+    }
+    GLFWwindow* handle = window_->handle();
+    glfwSetWindowUserPointer(handle, this);
+    // Ours first: ImGui's backend chains to the callbacks installed before it.
+    glfwSetKeyCallback(handle, onKey);
+    glfwSetScrollCallback(handle, onScroll);
+    ImGui::CreateContext();
+    ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini left in the working directory
+    ImGui_ImplGlfw_InitForOpenGL(handle, true);
+    imguiRenderer_.init();
+    panel_.uiScale = std::max(1.0f, window_->contentScale().x);
+    rebuildFont();
+}
+
+WindowApp::~WindowApp() {
+    imguiRenderer_.shutdown();
+    renderer_.shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+}
+
+void WindowApp::rebuildFont() {
+    ui::applyStyle(panel_.uiScale);
+    imguiRenderer_.invalidateFontTexture();
+}
+
+// The scene takes the window right of the panel and above the timeline bar, in one
+// view or two side by side (ImGui must be inside a frame).
+ViewLayout WindowApp::layout() const {
+    const float panel = ImGui::GetCurrentContext() ? ui::panelWidth(panel_, float(window_->windowSize().x)) : 0.0f;
+    const float bar = ImGui::GetCurrentContext() ? timelineBarHeight() : 0.0f;
+    return layoutViews(window_->framebufferSize(), window_->framebufferScale(), panel, bar, session_.runCount(),
+                       kViewGap);
+}
+
+void WindowApp::resetCamera() {
+    glm::vec3 lo, hi;
+    sceneBounds(simulation_, lo, hi);
+    camera_.reset(lo, hi, layout().aspect());
+}
+
+// The same angles, the box fitted again (the views changed shape).
+void WindowApp::fitCamera() {
+    glm::vec3 lo, hi;
+    sceneBounds(simulation_, lo, hi);
+    camera_.fitBox(lo, hi, layout().aspect());
+}
+
+void WindowApp::onKey(GLFWwindow* w, int key, int, int action, int) {
+    if (action != GLFW_PRESS && action != GLFW_REPEAT) return;
+    if (ImGui::GetCurrentContext() && ImGui::GetIO().WantTextInput) return;
+    static_cast<WindowApp*>(glfwGetWindowUserPointer(w))->handleKey(key);
+}
+
+void WindowApp::onScroll(GLFWwindow* w, double, double dy) {
+    if (ImGui::GetCurrentContext() && ImGui::GetIO().WantCaptureMouse) return;
+    static_cast<WindowApp*>(glfwGetWindowUserPointer(w))->camera_.zoom(float(dy));
+}
+
+void WindowApp::handleKey(int key) {
+    const int count = static_cast<int>(presets_.size());
+    switch (key) {
+        case GLFW_KEY_P: case GLFW_KEY_SPACE: simulation_.paused = !simulation_.paused; break;
+        case GLFW_KEY_O: case GLFW_KEY_N: session_.singleStep(); break;
+        case GLFW_KEY_R: session_.restart(); break;
+        case GLFW_KEY_LEFT: session_.stepBack(); break;
+        case GLFW_KEY_RIGHT: session_.stepForward(); break;
+        case GLFW_KEY_F: input_.shoot(layout(), camera_, true, window_->time()); break;
+        case GLFW_KEY_V: if (input_.toggleCompare(window_->time())) fitCamera(); break;
+        case GLFW_KEY_E: input_.toggleExplainer(); break;
+        case GLFW_KEY_RIGHT_BRACKET: loadPreset((panel_.presetIndex + 1) % count); break;
+        case GLFW_KEY_LEFT_BRACKET: loadPreset((panel_.presetIndex + count - 1) % count); break;
+        case GLFW_KEY_TAB: panel_.visible = !panel_.visible; break;
+        case GLFW_KEY_F12: screenshotRequested_ = true; break;
+        case GLFW_KEY_C: resetCamera(); break;
+        case GLFW_KEY_ESCAPE: window_->requestClose(); break;
+        default: break;
+    }
+}
+
+// Clicks, grabs and throws first (InteractionInput); then left drag orbits, right
+// drag (or shift + left drag) pans: unless ImGui has the mouse.
+void WindowApp::handleMouse() {
+    if (input_.handleMouse(layout(), camera_, window_->time())) return;
+    const ImGuiIO& io = ImGui::GetIO();
+    if (io.WantCaptureMouse) return;
+    const glm::vec2 scale = window_->framebufferScale();
+    const float dx = io.MouseDelta.x * scale.x, dy = io.MouseDelta.y * scale.y;
+    const bool shift = io.KeyShift;
+    if ((ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0.0f) && shift) || ImGui::IsMouseDragging(ImGuiMouseButton_Right, 0.0f)) {
+        camera_.pan(dx, dy, float(window_->framebufferSize().y));
+    } else if (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0.0f)) {
+        camera_.orbit(dx, dy);
+    }
+}
+
+void WindowApp::loadPreset(int index) {
+    if (index < 0 || index >= static_cast<int>(presets_.size())) return;
+    loadFile(scenes::presetPath(presets_[static_cast<std::size_t>(index)]));
+    panel_.presetIndex = index;
+}
+
+void WindowApp::loadFile(const std::string& path) {
+    try {
+        const double timeScale = simulation_.timeScale;
+        simulation_.setScene(scenes::loadScene(path));
+        simulation_.timeScale = timeScale;
+        panel_.scenePath = path;
+        panel_.presetIndex = -1;
+        panel_.scrollToTop = true;
+        panel_.refusal.clear();
+        session_.sceneChanged();
+        notify(ui::PanelState::FileButton::Scene, "loaded " + path, false);
+        resetCamera();
+    } catch (const std::exception& e) {
+        // A broken file is reported under the Load button; the demo goes on with the scene it had.
+        notify(ui::PanelState::FileButton::Scene, e.what(), true);
+    }
+}
+
+void WindowApp::notify(ui::PanelState::FileButton at, const std::string& text, bool error) {
+    panel_.noticeAt = at;
+    panel_.notice = text;
+    panel_.noticeIsError = error;
+}
+
+// A new file in the output folder, written by `write(path)` (false: it failed); the
+// notice goes under the button `at`. Returns the path, or "" when nothing was written.
+template <class Write>
+std::string WindowApp::writeOutput(ui::PanelState::FileButton at, const char* stem, const char* extension,
+                                   const Write& write) {
+    std::string error;
+    const std::string path = freshPath(panel_.outputFolder, stem, extension, error);
+    if (path.empty()) {
+        notify(at, error, true);
+        return "";
+    }
+    try {
+        if (!write(path)) {
+            notify(at, "cannot write " + path, true);
+            return "";
+        }
+    } catch (const std::exception& e) {
+        notify(at, e.what(), true);
+        return "";
+    }
+    notify(at, "wrote " + path, false);
+    return path;
+}
+
+void WindowApp::apply(const ui::PanelActions& a) {
+    if (a.togglePause) simulation_.paused = !simulation_.paused;
+    if (a.step) session_.singleStep();
+    if (a.restart) session_.restart();
+    for (const ui::PanelActions::Edit& edit : a.edits) {
+        // Refused: the slider shows the value it had, and why under it.
+        panel_.refusal = session_.setParameter(*edit.parameter, edit.value);
+        panel_.refusedName = std::string(edit.parameter->name);
+    }
+    if (a.resetCamera) resetCamera();
+    if (a.fontChanged) rebuildFont();
+    if (a.screenshot) screenshotRequested_ = true;
+    if (a.preset >= 0) loadPreset(a.preset);
+    if (!a.loadPath.empty()) loadFile(a.loadPath);
+    if (a.saveState) {
+        writeOutput(ui::PanelState::FileButton::Scene, "state", "json", [&](const std::string& path) {
+            scenes::saveScene(path, simulation_.scene(), simulation_.world());
+            return true;
+        });
+    }
+    if (a.exportCsv) {
+        writeOutput(ui::PanelState::FileButton::Plots, "plots", "csv",
+                    [&](const std::string& path) { return simulation_.history().writeCsv(path); });
+    }
+}
+
+void WindowApp::drawScene() {
+    const auto start = std::chrono::steady_clock::now();
+    renderer_.style.showBox = panel_.showBox;
+    renderer_.style.showGrid = panel_.showGrid;
+    renderer_.style.overlayOnTop = overlaysOnTop(panel_, simulation_.world().size());  // as capture draws them
+    renderer_.style.lineScale = window_->contentScale().x;
+    panel_.selectedSphere = session_.selected();
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    const glm::ivec2 size = window_->framebufferSize();
+    glViewport(0, 0, size.x, size.y);
+    glClearColor(ui::kBackdropColor[0], ui::kBackdropColor[1], ui::kBackdropColor[2], 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    const ViewLayout views = layout();
+    for (int k = 0; k < views.count; ++k) {
+        const glm::ivec4& view = views.views[k];
+        buildSnapshot(session_.run(k), panel_, snapshots_[k]);
+        session_.appendSelection(k, camera_, snapshots_[k]);
+        renderer_.draw(snapshots_[k], camera_, view.x, view.y, view.z, view.w);
+    }
+    // A software GL draws after the calls return: time the drawing, not the calls. (On a
+    // GPU this costs the overlap of one frame's GL work with the next one's CPU work.)
+    glFinish();
+    timing_.drawMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+void WindowApp::frame(double dt) {
+    window_->pollEvents();
+    imguiRenderer_.newFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+    if (!cameraFitted_) resetCamera();
+    cameraFitted_ = true;
+    input_.expireMessage(window_->time());
+    handleMouse();
+    session_.setCatchEveryStep(input_.tools().explainer);
+    const auto stepping = std::chrono::steady_clock::now();
+    const std::uint64_t stepsBefore = simulation_.world().stepCount;
+    session_.advance(dt);
+    const std::uint64_t stepsAfter = simulation_.world().stepCount;
+    timing_.stepsThisFrame = stepsAfter >= stepsBefore ? stepsAfter - stepsBefore : 0;
+    timing_.steppingMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - stepping).count();
+    drawScene();
+    ui::Readouts readouts = makeReadouts(simulation_, timing_);
+    readouts.diagnostics = session_.diagnostics(0);  // measured again after an edit or a step back
+    ui::PanelActions actions = ui::drawControlPanel(simulation_.scene(), simulation_.timeScale, readouts, panel_, presets_);
+    ui::drawReadouts(readouts, panel_, actions);
+    if (input_.takeFoldReadouts()) ImGui::SetWindowCollapsed("Readouts", true);  // the views' labels carry them
+    const float panel = ui::panelWidth(panel_, ImGui::GetMainViewport()->WorkSize.x);
+    const ToolActions tools = drawInteractionWindows(session_, layout(), panel, input_.tools());
+    ImGui::Render();
+    imguiRenderer_.render(ImGui::GetDrawData());
+    apply(actions);
+    if (input_.apply(tools, layout(), camera_, window_->time())) fitCamera();
+    if (const std::string note = session_.takeNote(); !note.empty()) input_.say(window_->time(), "%s", note.c_str());
+    if (screenshotRequested_) {
+        const std::string path = writeOutput(ui::PanelState::FileButton::Screenshot, "screenshot", "png",
+                                             [&](const std::string& p) { return saveScreenshot(p); });
+        if (!path.empty()) input_.say(window_->time(), "screenshot: %s", path.c_str());  // F12: the panel may be folded
+        screenshotRequested_ = false;
+    }
+}
+
+bool WindowApp::saveScreenshot(const std::string& path) {
+    const glm::ivec2 size = window_->framebufferSize();
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glReadBuffer(GL_BACK);
+    return render::writePng(path, size.x, size.y, render::readPixelsRGBA(size.x, size.y));
+}
+
+int WindowApp::run() {
+    if (const std::string error = renderer_.init(); !error.empty()) {
+        std::fprintf(stderr, "spheres: the renderer could not start: %s\n", error.c_str());
+        return 1;
+    }
+    double last = window_->time();
+    for (int frames = 0; !window_->shouldClose(); ++frames) {
+        const double now = window_->time();
+        const double dt = std::min(now - last, 0.25);  // s; a stall (dragging the window) is not simulated
+        // Averaged in time, not in rate, so one near-instant first frame cannot inflate it.
+        frameSeconds_ = frames == 0 ? 0.0 : (frames == 1 ? now - last : 0.9 * frameSeconds_ + 0.1 * (now - last));
+        timing_.fps = frameSeconds_ > 0.0 ? 1.0 / frameSeconds_ : 0.0;
+        last = now;
+        const bool lastFrame = options_.frames > 0 && frames + 1 >= options_.frames;
+        frame(dt);
+        if (lastFrame && !options_.screenshot.empty() && !saveScreenshot(options_.screenshot)) {
+            std::fprintf(stderr, "spheres: --screenshot %s: cannot write the file\n", options_.screenshot.c_str());
+            return 1;
+        }
+        window_->swapBuffers();
+        if (lastFrame) break;
+    }
+    return 0;
+}
+
+}  // namespace
+
+int runWindowApp(const WindowAppOptions& options) {
+    scenes::Scene scene = loadSceneWithSettings(options.scene, options.settings);
+    checkWritable("--screenshot", options.screenshot);
+    if (!options.compare.empty()) {
+        if (const std::string error = checkOverrides(scene, splitOverrides(options.compare)); !error.empty()) {
+            throw UsageError("--compare " + error);
+        }
+    }
+    if (options.explain && options.select < 0) throw UsageError("--explain needs --select INDEX");
+    std::string error;
+    platform::WindowOptions windowOptions;
+    windowOptions.width = options.width;
+    windowOptions.height = options.height;
+    auto window = platform::Window::create(windowOptions, &error);
+    if (!window) {
+        std::fprintf(stderr,
+                     "spheres: cannot open a window (%s). Without a display, run headless: "
+                     "`spheres capture --scene %s --frames 60 --out frames/` or `xvfb-run -a spheres`\n",
+                     error.c_str(), options.scene.c_str());
+        return 2;
+    }
+    WindowApp app(std::move(window), std::move(scene), options);
+    return app.run();
+}
+
+}  // namespace app
