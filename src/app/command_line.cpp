@@ -87,7 +87,7 @@ void addWindowOptions(CLI::App& cli, WindowAppOptions& o) {
 int listPresets() {
     for (const std::string& name : scenes::listPresets()) {
         const scenes::Scene scene = scenes::loadScene(scenes::presetPath(name));
-        std::printf("%-22s %s\n", name.c_str(), scene.title.c_str());
+        std::printf("%-22s %s\n", name.c_str(), scenes::withCount(scene.title, scene).c_str());
     }
     return 0;
 }

@@ -279,4 +279,12 @@ std::size_t builtSphereCount(const Scene& scene) {
     return count;
 }
 
+std::string withCount(std::string text, const Scene& scene) {
+    const std::string count = std::to_string(builtSphereCount(scene));
+    for (std::size_t at = text.find("{count}"); at != std::string::npos; at = text.find("{count}", at + count.size())) {
+        text.replace(at, 7, count);
+    }
+    return text;
+}
+
 }  // namespace scenes

@@ -123,6 +123,10 @@ std::uint64_t generatorSeed(std::uint64_t sceneSeed, std::size_t index);
 // overlapping, a region outside the box or too small for its count.
 physics::World buildWorld(const Scene& scene);
 
+// `text` (a title, a description) with each "{count}" replaced by builtSphereCount:
+// a preset's text that names its count stays true when --set count= changes it.
+std::string withCount(std::string text, const Scene& scene);
+
 // How many spheres buildWorld places: the explicit ones and every generator's count.
 // The spheres after them in a world are the emitted ones, in the order of emission.
 std::size_t builtSphereCount(const Scene& scene);

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "app/commands/progress_line.h"
 #include "app/run/scene_source.h"
 #include "physics/diagnostics.h"
 #include "render/palette.h"
@@ -408,5 +409,15 @@ TEST_P(CaptureImages, AFrameDoesNotDependOnWhichOtherFramesAreWritten) {
 INSTANTIATE_TEST_SUITE_P(Backends, CaptureImages,
                          ::testing::Values(HeadlessBackend::OSMesa, HeadlessBackend::EGL),
                          capture_test::backendName);
+
+}  // namespace
+
+namespace {
+
+// Long headless runs show their progress on a terminal (and nothing elsewhere).
+TEST(Progress, TheLineSaysWhatIsDoneTheRateAndTheTimeLeft) {
+    EXPECT_EQ(app::progressText("frames", 120, 600, 4.0), "frames 120/600 (20 %), 30.0 frames/s, 16 s left");
+    EXPECT_EQ(app::progressText("steps", 600, 600, 2.0), "steps 600/600 (100 %), 300.0 steps/s");
+}
 
 }  // namespace

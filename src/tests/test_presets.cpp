@@ -397,3 +397,25 @@ TEST(PresetPhenomena, ThinWallThicknessSurvivesSaveAndLoad) {
 }
 
 }  // namespace
+
+namespace {
+
+// A preset's text that names its count says the count it runs: "{count}" in the
+// title and description is the number of spheres the scene builds.
+TEST(PresetTexts, AGeneratedPresetSaysTheCountItRuns) {
+    scenes::Scene pile = scenes::loadScene(scenes::presetPath("11_pile"));
+    EXPECT_EQ(scenes::withCount(pile.title, pile), "A pile of 1000 spheres");
+    ASSERT_EQ(scenes::applySetting(pile, "count=10000"), "");
+    EXPECT_EQ(scenes::withCount(pile.title, pile), "A pile of 10000 spheres");
+    EXPECT_EQ(scenes::withCount(pile.description, pile).rfind("10000 spheres fall", 0), 0u);
+    // No preset text names a count in words any more (the three hundred of the gas, ...).
+    for (const std::string& name : scenes::listPresets()) {
+        const scenes::Scene scene = scenes::loadScene(scenes::presetPath(name));
+        for (const char* words : {"thousand spheres", "hundred spheres", "A thousand", "Three hundred"}) {
+            EXPECT_EQ(scene.title.find(words), std::string::npos) << name << ": " << words;
+            EXPECT_EQ(scene.description.find(words), std::string::npos) << name << ": " << words;
+        }
+    }
+}
+
+}  // namespace

@@ -334,13 +334,13 @@ PanelActions drawControlPanel(const scenes::Scene& scene, double& timeScale, con
         state.scrollToTop = false;
     }
     ImGui::PushItemWidth(ImGui::GetFontSize() * 9.5f);
-    ImGui::TextWrapped("%s", scene.title.c_str());
+    ImGui::TextWrapped("%s", scenes::withCount(scene.title, scene).c_str());
     if (!scene.slide.empty()) {  // wrapped: a long slide line must not be cut off
         ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
         ImGui::TextWrapped("%s", scene.slide.c_str());
         ImGui::PopStyleColor();
     }
-    if (!scene.description.empty()) ImGui::TextWrapped("%s", scene.description.c_str());
+    if (!scene.description.empty()) ImGui::TextWrapped("%s", scenes::withCount(scene.description, scene).c_str());
     ImGui::Separator();
     runSection(timeScale, readouts, actions);
     alarmsSection(readouts);

@@ -22,6 +22,7 @@
 #include <utility>
 
 #include "app/commands/capture_comparison.h"
+#include "app/commands/progress_line.h"
 #include "app/views/frame_builder.h"
 #include "app/run/scene_source.h"
 #include "app/run/simulation.h"
@@ -546,7 +547,7 @@ Json Capturer::overlayList() const {
 Json Capturer::manifest() const {
     const scenes::Scene& scene = simulation_.scene();
     Json json{{"scene", scenePath_.empty() ? options_.scene : scenePath_},
-                {"title", scene.title},
+                {"title", scenes::withCount(scene.title, scene)},
                 {"settings", options_.settings},
                 {"parameters", parameterValues(scene)},
                 {"seed", scene.seed},
@@ -579,12 +580,17 @@ int Capturer::run() {
     const auto start = std::chrono::steady_clock::now();
     int frame = 0;  // frames advanced so far; frame 0 is the initial state
     writer_ = std::make_unique<PngWriter>(std::size_t(4) * plan_.size.x * plan_.size.y);
-    for (const int index : plan_.frames) {
-        for (; frame < index; ++frame) {
-            simulation_.advance(kCaptureFrameSeconds);
-            if (compare_) compare_->advance(simulation_, kCaptureFrameSeconds);
+    {
+        ProgressLine progress("frames", static_cast<std::uint64_t>(plan_.frames.back()) + 1);
+        for (const int index : plan_.frames) {
+            for (; frame < index; ++frame) {
+                simulation_.advance(kCaptureFrameSeconds);
+                if (compare_) compare_->advance(simulation_, kCaptureFrameSeconds);
+                progress.update(static_cast<std::uint64_t>(frame) + 1);
+            }
+            writeFrame(index);
+            progress.update(static_cast<std::uint64_t>(index) + 1);
         }
-        writeFrame(index);
     }
     if (!writer_->finish()) return 1;
     const std::string path = (fs::path(options_.out) / "manifest.json").string();

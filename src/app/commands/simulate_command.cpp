@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "app/commands/diagnostics_log.h"
+#include "app/commands/progress_line.h"
 #include "app/run/scene_source.h"
 #include "physics/step.h"
 #include "scenes/scene_json.h"
@@ -40,13 +41,16 @@ int runSimulate(const SimulateOptions& options) {
     const physics::Params& params = scene.params;
     if (log) log->write(0, world.time, physics::measure(world, params));
     double seconds = 0.0;
+    std::optional<ProgressLine> progress(std::in_place, "steps", static_cast<std::uint64_t>(options.steps));
     for (std::int64_t k = 1; k <= options.steps; ++k) {
         const auto start = std::chrono::steady_clock::now();
         physics::step(world, params);
         scenes::emitDue(scene, world);  // the course's emitter, as the window and capture do
         seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         if (log && k % every == 0) log->write(static_cast<std::uint64_t>(k), world.time, physics::measure(world, params));
+        progress->update(static_cast<std::uint64_t>(k));
     }
+    progress.reset();  // the line goes before the result is printed
 
     const double sphereSteps = static_cast<double>(options.steps) * params.substeps *
                                static_cast<double>(std::max<std::size_t>(world.size(), 1));
