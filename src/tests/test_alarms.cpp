@@ -11,6 +11,7 @@
 #include "app/teaching/alarms.h"
 #include "app/run/simulation.h"
 #include "physics/diagnostics.h"
+#include "scenes/parameters.h"
 #include "scenes/presets.h"
 #include "scenes/scene_json.h"
 
@@ -177,6 +178,50 @@ TEST(Alarms, ElasticVelocityBasedBounceCreatesEnergyAndSaysWhy) {
     Simulation projected(dropScene(1.0, physics::Method::PositionBased));
     for (int k = 0; k < 600; ++k) projected.singleStep();
     EXPECT_FALSE(projected.alarms().fired(AlarmKind::EnergyCreated));
+}
+
+// Response only, a sphere shot up into the ceiling (preset 01 with F): the response
+// reflects this step's gravity kick, which at a ceiling adds m g h |v| (a floor loses
+// it). The alarm names that cause instead of asking for a report.
+TEST(Alarms, ResponseOnlyBounceOffTheCeilingGainsEnergyAndSaysWhy) {
+    scenes::Scene scene = dropScene(1.0, physics::Method::ResponseOnly);
+    scene.spheres[0].v = {0.0, 0.0, 10.0};  // m/s, up
+    Simulation sim(scene);
+    for (int k = 0; k < 6; ++k) sim.singleStep();  // at the ceiling after about 0.04 s
+    ASSERT_TRUE(sim.alarms().fired(AlarmKind::EnergyCreated));
+    // Impact speed u = sqrt(10^2 - 2 g 0.4 m) = 9.6 m/s, h = 1/60 s over 4 substeps:
+    // the gain m g h u relative to E~ = m g 1.5 m + m 10^2 / 2.
+    const double g = 9.81, h = 1.0 / 240.0, u = std::sqrt(100.0 - 2.0 * g * 0.4);
+    const double expected = g * h * u / (g * 1.5 + 50.0);  // 0.61 %
+    EXPECT_NEAR(sim.alarms().worst(AlarmKind::EnergyCreated), expected, 0.25 * expected);
+    const auto lines = sim.alarms().lines(sim.world().time);
+    ASSERT_EQ(lines.size(), 1u);
+    EXPECT_TRUE(contains(lines[0].hint, "bounce off the ceiling gains")) << lines[0].hint;
+    EXPECT_FALSE(contains(lines[0].hint, "report")) << lines[0].hint;
+}
+
+// Spheres that leave the box are an alarm, with how many and when the first left: the
+// pile, velocity based, h = 0.1 s and |g| = 50 m/s^2 sinks through its floor.
+TEST(Alarms, SpheresThatLeaveTheBoxAreCountedWithTheStepTheFirstLeft) {
+    scenes::Scene pile = scenes::loadScene(scenes::presetPath("11_pile"));
+    for (const char* setting : {"method=velocity", "h=0.1", "substeps=1", "gravity=50"}) {
+        ASSERT_EQ(scenes::applySetting(pile, setting), "") << setting;
+    }
+    Simulation sim(pile);
+    for (int k = 0; k < 100; ++k) sim.singleStep();  // 10 s
+    const std::size_t outside = physics::spheresOutsideBox(sim.world(), 0.0);
+    ASSERT_GT(outside, 100u);
+    ASSERT_TRUE(sim.alarms().fired(AlarmKind::Escaped));
+    EXPECT_GE(sim.alarms().worst(AlarmKind::Escaped), double(outside));
+    bool shown = false;
+    for (const app::AlarmLine& line : sim.alarms().lines(sim.world().time)) {
+        if (line.kind != AlarmKind::Escaped) continue;
+        shown = true;
+        EXPECT_TRUE(contains(line.text, "ESCAPED: " + std::to_string(outside) + " outside the box now")) << line.text;
+        EXPECT_TRUE(contains(line.text, "the first left after solver step 2")) << line.text;
+        EXPECT_TRUE(contains(line.hint, "switch method to position")) << line.hint;
+    }
+    EXPECT_TRUE(shown);
 }
 
 // beta > 1 set through the parameters directly (the UI stops at 1): the ball gains

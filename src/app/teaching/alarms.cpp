@@ -87,6 +87,11 @@ std::string energyHint(const physics::Params& params) {
                "v ← v + h g, and the response sends that back too (about 2 g h / s per bounce; "
                "smaller with more substeps or β < 1)";
     }
+    if (params.method == physics::Method::ResponseOnly) {
+        return "response-only reflects this step's gravity kick too (slides 5–6: the contact is found "
+               "after v ← v + h g, inside the wall): a floor bounce loses energy, a bounce off the "
+               "ceiling gains about m g h |v⊥|; smaller with more substeps";
+    }
     return "not expected from the lecture's rules with α, β ≤ 1: report the scene and its parameters";
 }
 
@@ -110,9 +115,20 @@ std::string penetrationHint(const physics::Params& params) {
 
 // ---------------------------------------------------------------- the record
 
+std::string escapeHint(const physics::Params& params) {
+    if (params.method == physics::Method::PositionBased) {
+        return "a sphere crossed a whole wall within one solver step (faster than the wall is thick "
+               "per h / substeps, or pushed through by the passes): lower h or raise substeps";
+    }
+    return "without projection (slide 7) a wall only turns the velocity: a sphere pushed on by gravity "
+           "or by its neighbours sinks through it; switch method to position, or lower h";
+}
+
 void Alarms::clear() {
     states_ = {};
     nonFinite_.reset();
+    firstEscapeStep_ = 0;
+    outsideNow_ = 0;
 }
 
 void Alarms::fire(AlarmKind kind, double time, double amount, std::string hint) {
@@ -142,6 +158,12 @@ bool Alarms::checkStep(const physics::World& world, const physics::Params& param
     const double scale = energyScale(world, params, before);
     if (energyCreated(before, after, scale, params, energySlack(world, params))) {
         fire(AlarmKind::EnergyCreated, world.time, relativeEnergyRise(before, after, scale), energyHint(params));
+    }
+    // Fires when more spheres are outside than ever before (most stay there).
+    outsideNow_ = physics::spheresOutsideBox(world, 0.0);
+    if (double(outsideNow_) > state(AlarmKind::Escaped).worst) {
+        if (!fired(AlarmKind::Escaped)) firstEscapeStep_ = world.stepCount;
+        fire(AlarmKind::Escaped, world.time, double(outsideNow_), escapeHint(params));
     }
     return true;
 }
@@ -175,6 +197,12 @@ std::vector<AlarmLine> Alarms::lines(double now) const {
                          formatted("PENETRATION: up to %.0f %% of r (alarm above %.0f %%), last at t = %.2f s",
                                    100.0 * s.worst, 100.0 * kPenetrationTolerance, s.lastTime),
                          s.hint, lit(AlarmKind::Penetration)});
+    }
+    if (const State& s = state(AlarmKind::Escaped); s.count > 0) {
+        char text[256];
+        std::snprintf(text, sizeof text, "ESCAPED: %zu outside the box now, up to %.0f at once; the first left "
+                      "after solver step %llu", outsideNow_, s.worst, static_cast<unsigned long long>(firstEscapeStep_));
+        lines.push_back({AlarmKind::Escaped, text, s.hint, lit(AlarmKind::Escaped)});
     }
     return lines;
 }

@@ -4,7 +4,9 @@
 //     scale while alpha, beta <= 1 (nothing in the lecture adds energy then);
 //   - penetration: the deepest overlap is more than kPenetrationTolerance of r;
 //   - a value that is not finite (NaN, inf): the simulation pauses and names the
-//     sphere and the field.
+//     sphere and the field;
+//   - spheres escaped: a centre left the box (crossed a wall within a step), with
+//     how many are outside and the step the first one left.
 // The rules are pure functions over the world, its parameters and diagnostics;
 // Alarms keeps what the panel shows (when each fired last, how often, the worst).
 #include <array>
@@ -72,7 +74,10 @@ std::string energyHint(const physics::Params& params);
 bool penetrationTooDeep(const physics::Diagnostics& diagnostics);
 std::string penetrationHint(const physics::Params& params);
 
-enum class AlarmKind { NonFinite, EnergyCreated, Penetration, Count };
+// Why spheres left the box, for the method in use.
+std::string escapeHint(const physics::Params& params);
+
+enum class AlarmKind { NonFinite, EnergyCreated, Penetration, Escaped, Count };
 
 // One line of the panel.
 struct AlarmLine {
@@ -97,7 +102,7 @@ public:
 
     bool fired(AlarmKind kind) const { return state(kind).count > 0; }
     std::uint64_t count(AlarmKind kind) const { return state(kind).count; }
-    double worst(AlarmKind kind) const { return state(kind).worst; }  // relative rise, or depth / r
+    double worst(AlarmKind kind) const { return state(kind).worst; }  // relative rise, depth / r, spheres outside
     bool nonFinite() const { return nonFinite_.has_value(); }
     const std::optional<NonFinite>& nonFiniteValue() const { return nonFinite_; }
 
@@ -118,6 +123,8 @@ private:
 
     std::array<State, static_cast<std::size_t>(AlarmKind::Count)> states_{};
     std::optional<NonFinite> nonFinite_;
+    std::uint64_t firstEscapeStep_ = 0;  // the solver step after which a sphere was first outside
+    std::size_t outsideNow_ = 0;         // spheres outside the box after the last step
 };
 
 }  // namespace app
