@@ -122,6 +122,29 @@ TEST(PresetPhenomena, ResponseOnlyDoesNotBounceHighEnoughAndSinksIntoTheFloor) {
     EXPECT_GE(projected.lowest, r - 1e-12);
 }
 
+// The preset's text: 39 % of r at each impact while it bounces; once the bounces die
+// out it sinks, and its centre passes below the floor at 18.4 s.
+TEST(PresetPhenomena, ResponseOnlySinks39PercentAtEachImpactThenFallsThroughTheFloor) {
+    const Scene scene = preset("01_bounce_response_only");
+    const double r = scene.spheres[0].r;  // m
+    physics::World w = scenes::buildWorld(scene);
+    std::vector<double> impacts;  // deepest penetration / r of each impact while bouncing
+    double deepest = 0.0, fellThrough = -1.0;
+    while (w.time < 20.0 && fellThrough < 0.0) {
+        stepOnce(scene, w);
+        const double depth = (r - w.position[0].z) / r;
+        if (depth > 0.0) deepest = std::max(deepest, depth);
+        if (depth <= 0.0 && deepest > 0.0) {  // left the floor: one impact done
+            if (deepest > 0.05) impacts.push_back(deepest);  // (a bounce's graze afterwards: 0.65 %)
+            deepest = 0.0;
+        }
+        if (w.position[0].z < 0.0) fellThrough = w.time;
+    }
+    ASSERT_GE(impacts.size(), 15u);
+    for (double depth : impacts) EXPECT_NEAR(depth, 0.388, 0.005);
+    EXPECT_NEAR(fellThrough, 18.4, 0.1) << "the centre below the floor";
+}
+
 TEST(PresetPhenomena, ResponseOnlyRestingSphereSinksByGHSquaredEveryStep) {
     // beta = 0: it lands and stays, and its weight pulls it h^2 g deeper every step.
     const Scene scene = preset("01_bounce_response_only", {"beta=0"});
