@@ -7,7 +7,9 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <fstream>
 #include <initializer_list>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -438,6 +440,28 @@ TEST(PresetTexts, AGeneratedPresetSaysTheCountItRuns) {
             EXPECT_EQ(scene.title.find(words), std::string::npos) << name << ": " << words;
             EXPECT_EQ(scene.description.find(words), std::string::npos) << name << ": " << words;
         }
+    }
+}
+
+}  // namespace
+
+namespace {
+
+// The lab sheet (assets/scenes/README.md) quotes each preset's title and text as the
+// panel shows them at the preset's own count: a preset's text changed without its
+// section (or the other way round) fails here, so the two never tell the class apart.
+TEST(PresetTexts, TheLabSheetQuotesEveryPresetsTitleAndText) {
+    std::ifstream file(scenes::assetDirectory() + "/scenes/README.md");
+    ASSERT_TRUE(file) << "assets/scenes/README.md";
+    const std::string sheet((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+    for (const std::string& name : scenes::listPresets()) {
+        const scenes::Scene scene = scenes::loadScene(scenes::presetPath(name));
+        const std::size_t at = sheet.find("(`" + name + "`)");
+        ASSERT_NE(at, std::string::npos) << name << " has no section";
+        const std::size_t heading = sheet.rfind("\n## ", at), end = sheet.find("\n## ", at);
+        const std::string section = sheet.substr(heading, end == std::string::npos ? std::string::npos : end - heading);
+        EXPECT_EQ(section.rfind("\n## " + scenes::withCount(scene.title, scene) + " (`", 0), 0u) << name;
+        EXPECT_NE(section.find(scenes::withCount(scene.description, scene)), std::string::npos) << name;
     }
 }
 
