@@ -190,6 +190,7 @@ std::uint64_t forwardPairs(std::uint32_t begin, std::uint32_t end, const GridSha
 // Sorts [first, last) by second sphere: insertion for the few pairs a sphere usually
 // has, std::sort beyond.
 void sortBySecondSphere(SpherePair* first, SpherePair* last) {
+    if (last - first < 2) return;  // (an empty vector's data() may be null: no first + 1 on it)
     if (last - first > 16) {
         std::sort(first, last, [](const SpherePair& a, const SpherePair& b) { return a.j < b.j; });
         return;

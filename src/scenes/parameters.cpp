@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <glm/geometric.hpp>
 #include <type_traits>
 
@@ -323,7 +324,25 @@ std::string setValue(const Parameter& p, Scene& scene, double value) {
     return error.empty() ? p.set(scene, value) : error;
 }
 
-std::string applySetting(Scene& scene, std::string_view assignment) {
+namespace {
+
+// The answer on one line whatever the input held: control characters quoted from it
+// (a newline, found by the fuzzer) are shown as \xNN.
+std::string oneLineAnswer(const std::string& text) {
+    std::string line;
+    for (const char c : text) {
+        if (static_cast<unsigned char>(c) >= 0x20 && c != 0x7f) {
+            line += c;
+            continue;
+        }
+        char escaped[8];
+        std::snprintf(escaped, sizeof escaped, "\\x%02x", static_cast<unsigned>(static_cast<unsigned char>(c)));
+        line += escaped;
+    }
+    return line;
+}
+
+std::string applyAssignment(Scene& scene, std::string_view assignment) {
     const auto equals = assignment.find('=');
     if (equals == std::string_view::npos) {
         return "expected name=value, got '" + std::string(assignment) + "'";
@@ -334,6 +353,12 @@ std::string applySetting(Scene& scene, std::string_view assignment) {
     double value = 0.0;
     std::string error = parseValue(*p, trim(assignment.substr(equals + 1)), value);
     return error.empty() ? setValue(*p, scene, value) : error;
+}
+
+}  // namespace
+
+std::string applySetting(Scene& scene, std::string_view assignment) {
+    return oneLineAnswer(applyAssignment(scene, assignment));
 }
 
 std::string formatValue(const Parameter& p, const Scene& scene) {

@@ -202,3 +202,16 @@ TEST(FormatValue, ReadsBackThroughApplySetting) {
 }
 
 }  // namespace
+
+namespace {
+
+// Found by the fuzzer (src/tests/fuzz): a setting with a newline in it was quoted back
+// over two lines. The answer is one line, the control character shown as \x0a.
+TEST(ParameterSettings, ARefusalIsOneLineWhateverTheInputHolds) {
+    scenes::Scene scene;
+    const std::string error = scenes::applySetting(scene, "sp\nspl");
+    EXPECT_EQ(error.find('\n'), std::string::npos) << error;
+    EXPECT_NE(error.find("sp\\x0aspl"), std::string::npos) << error;
+}
+
+}  // namespace
