@@ -218,7 +218,7 @@ TEST(Alarms, SpheresThatLeaveTheBoxAreCountedWithTheStepTheFirstLeft) {
         if (line.kind != AlarmKind::Escaped) continue;
         shown = true;
         EXPECT_TRUE(contains(line.text, "ESCAPED: " + std::to_string(outside) + " outside the box now")) << line.text;
-        EXPECT_TRUE(contains(line.text, "the first left after solver step 2")) << line.text;
+        EXPECT_TRUE(contains(line.text, "the first had left by solver step 2")) << line.text;
         EXPECT_TRUE(contains(line.hint, "switch method to position")) << line.hint;
     }
     EXPECT_TRUE(shown);

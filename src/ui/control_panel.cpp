@@ -324,7 +324,10 @@ float panelWidth(const PanelState& state, float displayWidth) {
 PanelActions drawControlPanel(const scenes::Scene& scene, double& timeScale, const Readouts& readouts,
                               PanelState& state, const std::vector<std::string>& presetNames) {
     PanelActions actions;
-    if (!state.visible) return actions;
+    if (!state.visible) {
+        state.pendingName.clear();  // hidden while a restart slider was held: its drag is over
+        return actions;
+    }
     const ImGuiViewport* viewport = ImGui::GetMainViewport();
     ImGui::SetNextWindowPos(viewport->WorkPos, ImGuiCond_Always);
     ImGui::SetNextWindowSize(ImVec2(panelWidth(state, viewport->WorkSize.x), viewport->WorkSize.y), ImGuiCond_Always);

@@ -9,22 +9,31 @@ namespace {
 
 float widthOf(std::string_view text) { return ImGui::CalcTextSize(text.data(), text.data() + text.size()).x; }
 
-// Where a line may end after `from`: at the next space (which the break eats), or
-// after the next '/' (a long path breaks between its folders); text.size() if none.
-std::size_t nextBreak(std::string_view text, std::size_t from) {
-    const std::size_t space = text.find(' ', from), slash = text.find('/', from);
-    if (slash != std::string_view::npos && (space == std::string_view::npos || slash + 1 < space)) return slash + 1;
-    return std::min(space, text.size());
+// Where a line that starts at text[0] ends: after as many whole words (up to a
+// space, which the break eats) as fit `width`, at least one. A first word wider than
+// the line (a long path) breaks after its last '/' that fits, if it has one.
+std::size_t lineEnd(std::string_view text, float width) {
+    std::size_t end = std::min(text.find(' ', 1), text.size());
+    if (widthOf(text.substr(0, end)) > width) {
+        for (std::size_t slash = text.rfind('/', end - 1); slash != std::string_view::npos && slash > 0;
+             slash = text.rfind('/', slash - 1)) {
+            if (widthOf(text.substr(0, slash + 1)) <= width) return slash + 1;
+        }
+        return end;
+    }
+    while (end < text.size()) {
+        const std::size_t next = std::min(text.find(' ', end + 1), text.size());
+        if (widthOf(text.substr(0, next)) > width) break;
+        end = next;
+    }
+    return end;
 }
 
-// One paragraph (no newline), as lines of whole words that fit `width`.
+// One paragraph (no newline) as lines that fit `width`; an empty one as an empty line.
 void paragraph(std::string_view text, float width) {
+    if (text.empty()) ImGui::TextUnformatted("");
     while (!text.empty()) {
-        std::size_t end = nextBreak(text, 1);  // the line is text[0, end): at least one word
-        for (std::size_t next = end; next < text.size(); end = next) {
-            next = nextBreak(text, next + 1);
-            if (widthOf(text.substr(0, next)) > width) break;
-        }
+        const std::size_t end = lineEnd(text, width);
         ImGui::TextUnformatted(text.data(), text.data() + end);
         text.remove_prefix(end);
         if (!text.empty() && text.front() == ' ') text.remove_prefix(1);

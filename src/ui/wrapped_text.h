@@ -1,5 +1,6 @@
 #pragma once
-// Text wrapped to the window's width at spaces (and after the '/' of a path) only.
+// Text wrapped to the window's width at spaces only (a path wider than the line also
+// after a '/').
 // ImGui's own wrapping also breaks after '.' and ',', which splits a number across
 // lines ("-1." / "193").
 #include <string_view>
@@ -7,7 +8,8 @@
 namespace ui {
 
 // The text, wrapped at spaces to the content region's width (a word wider than the
-// line stands alone on its line). Newlines in the text are kept.
+// line stands alone on its line, or breaks after a '/'). Newlines are kept, an empty
+// line too.
 void textWrappedAtSpaces(std::string_view text);
 
 }  // namespace ui

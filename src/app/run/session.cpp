@@ -99,6 +99,7 @@ void Session::sceneChanged() {
 
 std::string Session::setParameter(const scenes::Parameter& p, double value) {
     if (p.applies == scenes::Applies::Live) return scenes::setValue(p, primary_.editableScene(), value);
+    if (value == p.get(primary_.scene())) return "";  // the same value (a slider let go where it was): no restart
     scenes::Scene scene = primary_.scene();
     if (const std::string error = scenes::setValue(p, scene, value); !error.empty()) return error;
     try {

@@ -200,8 +200,8 @@ std::vector<AlarmLine> Alarms::lines(double now) const {
     }
     if (const State& s = state(AlarmKind::Escaped); s.count > 0) {
         char text[256];
-        std::snprintf(text, sizeof text, "ESCAPED: %zu outside the box now, up to %.0f at once; the first left "
-                      "after solver step %llu", outsideNow_, s.worst, static_cast<unsigned long long>(firstEscapeStep_));
+        std::snprintf(text, sizeof text, "ESCAPED: %zu outside the box now, up to %.0f at once; the first had "
+                      "left by solver step %llu", outsideNow_, s.worst, static_cast<unsigned long long>(firstEscapeStep_));
         lines.push_back({AlarmKind::Escaped, text, s.hint, lit(AlarmKind::Escaped)});
     }
     return lines;

@@ -217,6 +217,7 @@ void WindowApp::loadFile(const std::string& path) {
         panel_.presetIndex = -1;
         panel_.scrollToTop = true;
         panel_.refusal.clear();
+        panel_.pendingName.clear();  // a slider held while the scene changed edits nothing
         session_.sceneChanged();
         notify(ui::PanelState::FileButton::Scene, "loaded " + path, false);
         resetCamera();
@@ -335,7 +336,10 @@ void WindowApp::frame(double dt) {
     imguiRenderer_.render(ImGui::GetDrawData());
     apply(actions);
     if (input_.apply(tools, layout(), camera_, window_->time())) fitCamera();
-    if (const std::string note = session_.takeNote(); !note.empty()) input_.say(window_->time(), "%s", note.c_str());
+    if (const std::string note = session_.takeNote(); !note.empty()) {  // side by side stopped: one view again
+        input_.say(window_->time(), "%s", note.c_str());
+        fitCamera();
+    }
     if (screenshotRequested_) {
         const std::string path = writeOutput(ui::PanelState::FileButton::Screenshot, "screenshot", "png",
                                              [&](const std::string& p) { return saveScreenshot(p); });
