@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages the project needs, and only those missing.
 # Safe to run any number of times: it does nothing when everything is there.
+#   --fuzz  also clang and its sanitizer and libFuzzer runtimes, for
+#           src/tests/run_sanitized.sh (the test command asks for them)
 set -euo pipefail
 
 packages=(
@@ -10,6 +12,12 @@ packages=(
   nlohmann-json3-dev libcli11-dev libgtest-dev
   fonts-dejavu-core xvfb xauth xdotool
 )
+for option in "$@"; do
+  case "$option" in
+    --fuzz) packages+=(clang libclang-rt-14-dev) ;;
+    *) echo "install_deps.sh: unknown option $option (known: --fuzz)" >&2; exit 2 ;;
+  esac
+done
 
 missing=()
 for p in "${packages[@]}"; do
