@@ -123,9 +123,10 @@ void measuredRestitution(const Readouts& r) {
     text += number;
     if (r.measuredBetaSquared.empty()) {
         ImGui::TextUnformatted(text.c_str());
-        if (!r.restitutionNote.empty()) {
+        if (!r.restitutionNote.empty()) {  // beside the value when it fits, else wrapped under it
             ImGui::SameLine();
-            ImGui::TextDisabled("%s", r.restitutionNote.c_str());
+            if (ImGui::CalcTextSize(r.restitutionNote.c_str()).x > ImGui::GetContentRegionAvail().x) ImGui::NewLine();
+            wrappedColored(ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled), r.restitutionNote);
         }
     } else {
         text += "   measured ≈";
@@ -337,13 +338,13 @@ PanelActions drawControlPanel(const scenes::Scene& scene, double& timeScale, con
         state.scrollToTop = false;
     }
     ImGui::PushItemWidth(ImGui::GetFontSize() * 9.5f);
-    ImGui::TextWrapped("%s", scenes::withCount(scene.title, scene).c_str());
+    textWrappedAtSpaces(scenes::withCount(scene.title, scene));
     if (!scene.slide.empty()) {  // wrapped: a long slide line must not be cut off
         ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-        ImGui::TextWrapped("%s", scene.slide.c_str());
+        textWrappedAtSpaces(scene.slide);
         ImGui::PopStyleColor();
     }
-    if (!scene.description.empty()) ImGui::TextWrapped("%s", scenes::withCount(scene.description, scene).c_str());
+    if (!scene.description.empty()) textWrappedAtSpaces(scenes::withCount(scene.description, scene));
     ImGui::Separator();
     runSection(timeScale, readouts, actions);
     alarmsSection(readouts);

@@ -56,6 +56,7 @@ void RestitutionMeter::reset() {
     tracks_.clear();
     last_.clear();
     measured_ = 0;
+    tooSlow_ = 0;
     floor_ = -2;
 }
 
@@ -107,10 +108,14 @@ void RestitutionMeter::afterStep(const physics::World& world, const physics::Par
         }
         const double energy = normalEnergy(world, params, i, floor);  // J/kg
         if (t.inContact && t.floorBounce && !t.otherContact && t.beforeKnown && t.energyBefore > 0.0 &&
-            std::sqrt(2.0 * t.energyBefore) >= minImpactSpeed && std::isfinite(energy)) {
-            last_.push_back({i, world.time, t.energyBefore / gn, energy / gn});
-            ++measured_;
-            while (last_.size() > kMeasurementsKept) last_.pop_front();
+            std::isfinite(energy)) {
+            if (std::sqrt(2.0 * t.energyBefore) < minImpactSpeed) {
+                ++tooSlow_;
+            } else {
+                last_.push_back({i, world.time, t.energyBefore / gn, energy / gn});
+                ++measured_;
+                while (last_.size() > kMeasurementsKept) last_.pop_front();
+            }
         }
         t.inContact = false;
         t.flightKnown = std::isfinite(energy);

@@ -53,6 +53,9 @@ public:
 
     const std::deque<BounceMeasurement>& last() const { return last_; }  // oldest first
     std::uint64_t measuredCount() const { return measured_; }
+    // Clean floor bounces left unmeasured because they were slower than
+    // kMinImpactSpeedInGH g h (a large h makes every bounce so).
+    std::uint64_t tooSlowCount() const { return tooSlow_; }
 
 private:
     struct Track {
@@ -67,6 +70,7 @@ private:
     std::vector<Track> tracks_;  // by sphere index
     std::deque<BounceMeasurement> last_;
     std::uint64_t measured_ = 0;
+    std::uint64_t tooSlow_ = 0;
     int floor_ = -2;  // the floor plane of the last step; -2: not known yet
 };
 

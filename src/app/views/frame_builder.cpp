@@ -1,9 +1,11 @@
 #include "app/views/frame_builder.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <string>
 
 #include <glm/common.hpp>
+#include <glm/geometric.hpp>
 
 #include "scenes/scene.h"
 
@@ -52,6 +54,16 @@ std::string restitutionNote(const Simulation& simulation) {
         return "(measured up to " + std::to_string(kMaxMeasuredSpheres) + " spheres)";
     }
     if (!world.recordContacts) return "(not measured above " + std::to_string(kMaxRecordSpheres) + " spheres)";
+    if (simulation.restitution().tooSlowCount() > 0) {
+        // A large h: one step's travel is a fair part of the height, the ratio would measure h.
+        const double gn = glm::length(simulation.params().gravity);
+        char text[160];
+        std::snprintf(text, sizeof text, "(%llu floor bounce%s slower than %.0f g h = %.3g m/s: not measured)",
+                      static_cast<unsigned long long>(simulation.restitution().tooSlowCount()),
+                      simulation.restitution().tooSlowCount() == 1 ? "" : "s", kMinImpactSpeedInGH,
+                      kMinImpactSpeedInGH * gn * simulation.params().solverStep());
+        return text;
+    }
     return "(no floor bounce yet)";
 }
 
