@@ -1,6 +1,7 @@
 #include "ui/wrapped_text.h"
 
 #include <algorithm>
+#include <string>
 
 #include <imgui.h>
 
@@ -29,12 +30,13 @@ std::size_t lineEnd(std::string_view text, float width) {
     return end;
 }
 
-// One paragraph (no newline) as lines that fit `width`; an empty one as an empty line.
-void paragraph(std::string_view text, float width) {
-    if (text.empty()) ImGui::TextUnformatted("");
+// One paragraph (no newline) as lines that fit `width`, each ended by '\n', into `out`.
+void paragraph(std::string_view text, float width, std::string& out) {
+    if (text.empty()) out += '\n';
     while (!text.empty()) {
         const std::size_t end = lineEnd(text, width);
-        ImGui::TextUnformatted(text.data(), text.data() + end);
+        out.append(text.data(), end);
+        out += '\n';
         text.remove_prefix(end);
         if (!text.empty() && text.front() == ' ') text.remove_prefix(1);
     }
@@ -44,11 +46,14 @@ void paragraph(std::string_view text, float width) {
 
 void textWrappedAtSpaces(std::string_view text) {
     const float width = std::max(ImGui::GetContentRegionAvail().x, ImGui::GetFontSize() * 4.0f);
+    std::string lines;  // drawn as one item: the lines as close as ImGui's own wrapped text
     for (std::size_t start = 0; start <= text.size();) {
         const std::size_t newline = std::min(text.find('\n', start), text.size());
-        paragraph(text.substr(start, newline - start), width);
+        paragraph(text.substr(start, newline - start), width, lines);
         start = newline + 1;
     }
+    if (!lines.empty()) lines.pop_back();  // the last line's '\n'
+    ImGui::TextUnformatted(lines.data(), lines.data() + lines.size());
 }
 
 }  // namespace ui
