@@ -57,12 +57,17 @@ std::vector<Row> rows() {
 int main(int argc, char** argv) {
     int frames = 15;
     std::string scene = "pile";
-    for (int k = 1; k + 1 < argc; k += 2) {
+    for (int k = 1; k < argc; k += 2) {
         const std::string option = argv[k];
-        if (option == "--frames") frames = std::atoi(argv[k + 1]);
-        else if (option == "--scene") scene = argv[k + 1];
-        else {
-            std::fprintf(stderr, "usage: spheres_bench_overlays [--frames F] [--scene NAME]\n");
+        if (option == "--help" || option == "-h") {
+            std::printf("usage: spheres_bench_overlays [--frames F] [--scene NAME]\n");
+            return 0;
+        }
+        if (k + 1 < argc && option == "--frames") frames = std::atoi(argv[k + 1]);
+        else if (k + 1 < argc && option == "--scene") scene = argv[k + 1];
+        else {  // an unknown option, or one without its value
+            std::fprintf(stderr, "spheres_bench_overlays: %s: usage: spheres_bench_overlays [--frames F] [--scene NAME]\n",
+                         option.c_str());
             return 2;
         }
     }
