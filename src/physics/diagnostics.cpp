@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <numeric>
 
 #include <glm/geometric.hpp>
 
@@ -80,6 +81,56 @@ Diagnostics measure(const World& world, const Params& params) {
     addWallContacts(world, d);
     d.hash = stateHash(world);
     return d;
+}
+
+namespace {
+
+constexpr double kTouching = 1e-4;  // m: a gap this small still carries a sphere
+constexpr double kBelow = 0.1;      // a support lies this far below, as a share of the distance
+
+// Whether sphere i rests on a plane: touching one whose normal points up (against g).
+bool onAPlane(const World& world, std::size_t i, const glm::dvec3& down) {
+    for (const Plane& plane : world.planes) {
+        const Plane face = faceFor(plane, world.position[i]);
+        const double gap = glm::dot(world.position[i] - face.point, face.normal) - world.radius[i];
+        if (gap <= kTouching && -glm::dot(face.normal, down) > kBelow) return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+std::size_t spheresHeldInMidAir(const World& world, const Params& params) {
+    const double g = glm::length(params.gravity);
+    if (g == 0.0 || world.size() == 0) return 0;
+    const glm::dvec3 down = params.gravity / g;
+    Workspace workspace;
+    findPairsGrid(world, kTouching, workspace, 1);
+    std::vector<std::vector<std::uint32_t>> lower(world.size());  // the touching spheres below each
+    std::vector<bool> touchesASphere(world.size(), false);
+    for (const SpherePair& pair : workspace.pairs) {
+        const glm::dvec3 ij = world.position[pair.j] - world.position[pair.i];
+        const double distance = glm::length(ij);
+        if (distance > world.radius[pair.i] + world.radius[pair.j] + kTouching) continue;
+        touchesASphere[pair.i] = touchesASphere[pair.j] = true;
+        const double drop = glm::dot(ij, down);  // how far j lies below i, m
+        if (drop > kBelow * distance) lower[pair.i].push_back(pair.j);
+        if (-drop > kBelow * distance) lower[pair.j].push_back(pair.i);
+    }
+    // Lowest first: a sphere is carried when it rests on a plane or on a carried sphere.
+    std::vector<std::size_t> order(world.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+        return glm::dot(world.position[a], down) > glm::dot(world.position[b], down);
+    });
+    std::vector<bool> carried(world.size(), false);
+    std::size_t held = 0;
+    for (std::size_t i : order) {
+        carried[i] = onAPlane(world, i, down) ||
+                     std::any_of(lower[i].begin(), lower[i].end(), [&](std::uint32_t j) { return carried[j]; });
+        held += !carried[i] && touchesASphere[i] && world.contactState[i] == ContactState::Static;
+    }
+    return held;
 }
 
 std::size_t spheresOutsideBox(const World& world, double slack) {

@@ -27,6 +27,12 @@ double modifiedEnergy(const World& world, const Params& params);
 // FNV-1a 64 over the bytes of every position and velocity: equal states, equal hashes.
 std::uint64_t stateHash(const World& world);
 
+// Spheres held in mid-air (slide 13's flaw with the velocity method): in static contact
+// (green), touching no plane below them and carried by no chain of spheres, each lower
+// than the one above it, down to such a plane. Only v <- mu v on their own velocity
+// holds them there: friction on spheres that touch only each other.
+std::size_t spheresHeldInMidAir(const World& world, const Params& params);
+
 // Spheres whose centre lies on the wrong side of a box plane by more than `slack` (m).
 std::size_t spheresOutsideBox(const World& world, double slack);
 

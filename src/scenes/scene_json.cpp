@@ -21,7 +21,8 @@ using Json = nlohmann::json;
 using Keys = std::vector<std::string_view>;
 
 const Keys kSceneKeys = {"title", "slide",   "description", "box",      "planes", "parameters",
-                         "seed",  "spheres", "generate",    "emitters", "time",   "steps"};
+                         "seed",  "spheres", "generate",    "emitters", "time",   "steps",
+                         "claims"};
 const Keys kBoxKeys = {"size", "tilt"};
 const Keys kPlaneKeys = {"point", "normal", "thickness"};
 const Keys kSphereKeys = {"p", "v", "r", "m"};
@@ -30,6 +31,8 @@ const Keys kGeneratorKeys = {"kind", "count",    "region",         "radius", "de
 const Keys kEmitterKeys = {"period",  "position", "velocity", "spread", "radius",
                            "density", "mass",     "max",      "emitted"};
 const Keys kRegionKeys = {"min", "max"};
+const Keys kClaimKeys = {"says", "in",   "set", "measure", "sphere", "plane", "name", "from",
+                         "to",   "take", "nth", "ratio_to", "near",  "within", "min", "max"};
 const Keys kKinds = {"lattice", "random"};
 constexpr double kMaxTilt = 90.0;                   // degrees
 constexpr double kMaxInteger = 9007199254740992.0;  // whole numbers beyond 2^53 are not exact
@@ -95,6 +98,8 @@ class SceneReader {
         scene.emitters = readList(root, "emitters", &SceneReader::readEmitter);
         readSavedState(root, scene);
         readParameters(root, scene);
+        scene.claims = readList(root, "claims", &SceneReader::readClaim);
+        checkClaims(scene);
         return scene;
     }
 
@@ -311,6 +316,70 @@ class SceneReader {
             e.emitted = static_cast<int>(inRange(*emitted, pointer + "/emitted", 0, e.max));
         }
         return e;
+    }
+
+    Claim readClaim(const Json& v, const std::string& pointer) const {
+        checkKeys(v, pointer, kClaimKeys);
+        Claim c;
+        c.says = string(v, pointer, "says");
+        if (c.says.empty()) fail(pointer, where(pointer) + " needs \"says\": the words it checks");
+        const std::string in = string(v, pointer, "in");
+        if (in == "README") c.in = ClaimSource::Readme;
+        else if (!in.empty() && in != "description") fail(pointer + "/in", "in must be \"description\" or \"README\"");
+        c.measure = string(v, pointer, "measure");
+        c.parameter = string(v, pointer, "name");
+        c.take = find(v, "take") ? string(v, pointer, "take") : c.take;
+        if (const Json* set = find(v, "set")) c.settings = strings(*set, pointer + "/set");
+        if (const Json* ratio = find(v, "ratio_to")) c.ratioTo = strings(*ratio, pointer + "/ratio_to");
+        if (const Json* sphere = find(v, "sphere")) c.spheres = indices(*sphere, pointer + "/sphere");
+        if (const Json* plane = find(v, "plane")) c.plane = whole(*plane, pointer + "/plane", 0, 1000);
+        if (const Json* nth = find(v, "nth")) c.nth = whole(*nth, pointer + "/nth", 1, kMaxGeneratedCount);
+        c.from = optionalNumber(v, pointer, "from").value_or(0.0);
+        c.to = optionalNumber(v, pointer, "to").value_or(c.from);
+        c.near = optionalNumber(v, pointer, "near");
+        c.within = optionalNumber(v, pointer, "within");
+        c.min = optionalNumber(v, pointer, "min");
+        c.max = optionalNumber(v, pointer, "max");
+        return c;
+    }
+
+    std::optional<double> optionalNumber(const Json& object, const std::string& pointer, const char* key) const {
+        const Json* v = find(object, key);
+        if (!v) return std::nullopt;
+        return number(*v, detail::childPointer(pointer, key));
+    }
+
+    std::vector<std::string> strings(const Json& v, const std::string& pointer) const {
+        if (!v.is_array()) fail(pointer, where(pointer) + " must be an array of strings, got " + typeName(v));
+        std::vector<std::string> out;
+        for (std::size_t i = 0; i < v.size(); ++i) {
+            if (!v[i].is_string()) fail(detail::childPointer(pointer, i), where(pointer) + " must hold strings");
+            out.push_back(v[i].get<std::string>());
+        }
+        return out;
+    }
+
+    int whole(const Json& v, const std::string& pointer, int min, int max) const {
+        integerOrNumber(v, pointer, true);
+        return static_cast<int>(inRange(v, pointer, min, max));
+    }
+
+    // An index or an array of indices.
+    std::vector<int> indices(const Json& v, const std::string& pointer) const {
+        if (!v.is_array()) return {whole(v, pointer, 0, kMaxGeneratedCount)};
+        std::vector<int> out;
+        for (std::size_t i = 0; i < v.size(); ++i) {
+            out.push_back(whole(v[i], detail::childPointer(pointer, i), 0, kMaxGeneratedCount));
+        }
+        return out;
+    }
+
+    // Each claim's settings, meter and bounds make sense for this scene.
+    void checkClaims(const Scene& scene) const {
+        for (std::size_t i = 0; i < scene.claims.size(); ++i) {
+            const std::string error = checkClaimForm(scene.claims[i], scene);
+            if (!error.empty()) fail(detail::childPointer("/claims", i), "claims[" + std::to_string(i) + "]: " + error);
+        }
     }
 
     GeneratorKind readKind(const Json& v, const std::string& pointer) const {

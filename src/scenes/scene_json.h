@@ -51,6 +51,10 @@
 //                 "density": 1000,                 kg/m^3 (default 1000), or instead "mass"
 //                 "max": 300,                      spheres at most, default 100
 //                 "emitted": 12}],                 already emitted (saved states), <= max
+//   "claims": [{"says": "1.41 m", "measure": "apex", "nth": 1, "near": 1.41, "within": 0.005}],
+//                                                  what the preset's texts claim, as the lab-sheet
+//                                                  test runs it: the keys are in claims.h. Not
+//                                                  written to saved states
 //   "time": 1.25,                                  s: saved states only (see below)
 //   "steps": 300                                   solver steps taken: saved states only
 // }

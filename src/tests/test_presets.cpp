@@ -1,7 +1,7 @@
-// One test per shipped preset: each runs the scene as the app does (a time step,
-// then the emitters) and asserts the number that shows its lecture phenomenon.
-// The numbers in comments are what this solver gives today; the bounds leave room
-// for a small change of the solver but not for the phenomenon to disappear.
+// What the presets do beyond what their texts say: every preset stays in its box, the
+// emitter's exact timing and saved states, details of the response-only bounce. What a
+// preset's text tells the class is checked by the lab sheet (its "claims", run by
+// test_lab_sheet.cpp). Each runs the scene as the app does (a time step, then the emitters).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -44,31 +44,6 @@ physics::World run(const Scene& scene, int steps) {
     physics::World world = scenes::buildWorld(scene);
     for (int k = 0; k < steps; ++k) stepOnce(scene, world);
     return world;
-}
-
-double meanSpeed(const physics::World& w) {
-    double sum = 0.0;
-    for (const glm::dvec3& v : w.velocity) sum += glm::length(v);
-    return sum / static_cast<double>(w.size());
-}
-
-// The deepest sphere-sphere overlap, relative to the smaller radius.
-double maxOverlap(const physics::World& w) {
-    double deepest = 0.0;
-    for (std::size_t i = 0; i < w.size(); ++i) {
-        for (std::size_t j = i + 1; j < w.size(); ++j) {
-            const double depth =
-                w.radius[i] + w.radius[j] - glm::distance(w.position[i], w.position[j]);
-            deepest = std::max(deepest, depth / std::min(w.radius[i], w.radius[j]));
-        }
-    }
-    return deepest;
-}
-
-double topHeight(const physics::World& w) {
-    double top = 0.0;
-    for (const glm::dvec3& p : w.position) top = std::max(top, p.z);
-    return top;
 }
 
 // A single sphere's apexes (m, its centre's highest z in each flight) and lowest z.
@@ -124,46 +99,6 @@ TEST(PresetPhenomena, ResponseOnlyDoesNotBounceHighEnoughAndSinksIntoTheFloor) {
     EXPECT_GE(projected.lowest, r - 1e-12);
 }
 
-// The preset's text: 39 % of r at each impact while it bounces; once the bounces die
-// out it sinks, and its centre passes below the floor at 18.4 s.
-TEST(PresetPhenomena, ResponseOnlySinks39PercentAtEachImpactThenFallsThroughTheFloor) {
-    const Scene scene = preset("01_bounce_response_only");
-    const double r = scene.spheres[0].r;  // m
-    physics::World w = scenes::buildWorld(scene);
-    std::vector<double> impacts;  // deepest penetration / r of each impact while bouncing
-    double deepest = 0.0, fellThrough = -1.0;
-    while (w.time < 20.0 && fellThrough < 0.0) {
-        stepOnce(scene, w);
-        const double depth = (r - w.position[0].z) / r;
-        if (depth > 0.0) deepest = std::max(deepest, depth);
-        if (depth <= 0.0 && deepest > 0.0) {  // left the floor: one impact done
-            if (deepest > 0.05) impacts.push_back(deepest);  // (a bounce's graze afterwards: 0.65 %)
-            deepest = 0.0;
-        }
-        if (w.position[0].z < 0.0) fellThrough = w.time;
-    }
-    ASSERT_GE(impacts.size(), 15u);
-    for (double depth : impacts) EXPECT_NEAR(depth, 0.388, 0.005);
-    EXPECT_NEAR(fellThrough, 18.4, 0.1) << "the centre below the floor";
-}
-
-// 02's text: response-only at its 4 substeps sinks 3-10 % of r at each impact and,
-// once the bounces have died out, through the floor at 6.6 s.
-TEST(PresetPhenomena, ProjectionPresetSwitchedToResponseOnlySinksThenFallsThroughAt6s6) {
-    const Scene scene = preset("02_bounce_projection", {"method=response-only"});
-    const double r = scene.spheres[0].r;  // m
-    physics::World w = scenes::buildWorld(scene);
-    double deepest = 0.0, fellThrough = -1.0;
-    while (w.time < 10.0 && fellThrough < 0.0) {
-        stepOnce(scene, w);
-        if (w.time < 4.0) deepest = std::max(deepest, (r - w.position[0].z) / r);  // while it bounces
-        if (w.position[0].z < 0.0) fellThrough = w.time;
-    }
-    EXPECT_GT(deepest, 0.03);
-    EXPECT_LT(deepest, 0.10);
-    EXPECT_NEAR(fellThrough, 6.6, 0.1);
-}
-
 TEST(PresetPhenomena, ResponseOnlyRestingSphereSinksByGHSquaredEveryStep) {
     // beta = 0: it lands and stays, and its weight pulls it h^2 g deeper every step.
     const Scene scene = preset("01_bounce_response_only", {"beta=0"});
@@ -191,20 +126,6 @@ TEST(PresetPhenomena, ProjectionNeverStaysInTheFloorAndTheApexScalesByBetaSquare
     ASSERT_GE(only.apexes.size(), 1u);
     EXPECT_LT(only.apexes[0], projected.apexes[0]);
     EXPECT_LT(only.lowest, r - 0.05 * r);
-}
-
-// --- 03, 04: slides 9-12, two spheres ---
-
-TEST(PresetPhenomena, HeadOnEqualMassesSwapVelocities) {
-    const physics::World w = run(preset("03_head_on"), 60);  // they meet at t = 0.8 s
-    EXPECT_NEAR(w.velocity[0].x, 0.0, 1e-12);
-    EXPECT_NEAR(w.velocity[1].x, 1.0, 1e-12);
-}
-
-TEST(PresetPhenomena, HeadOnMasses1And3FollowTheClosedForm) {
-    const physics::World w = run(preset("04_head_on_unequal"), 60);
-    EXPECT_NEAR(w.velocity[0].x, (1.0 - 3.0) / 4.0, 1e-12);  // ((m1 - m2) v1 + 2 m2 v2) / (m1 + m2)
-    EXPECT_NEAR(w.velocity[1].x, 2.0 * 1.0 / 4.0, 1e-12);
 }
 
 // --- 05: slides 11-12, momentum ---
@@ -250,118 +171,6 @@ TEST(PresetPhenomena, BilliardBreakConservesMomentumAndTheCueBallGivesAwayItsSpe
     EXPECT_GT(b.fastestOther, 0.5 * v0);  // 2.5 m/s
     const Break lecture = breakUntilACushion(preset("05_billiard", {"response=lecture"}));
     EXPECT_GT(lecture.momentumDrift, 1e-3);  // slide 12's attenuation with beta < 1
-}
-
-// --- 06: slide 11, energy of an elastic gas ---
-
-TEST(PresetPhenomena, GasKeepsItsEnergyElasticAndCoolsWithBetaBelowOne) {
-    const Scene elastic = preset("06_gas");
-    const double e0 = physics::measure(scenes::buildWorld(elastic), elastic.params).kinetic;
-    const double e1 = physics::measure(run(elastic, 600), elastic.params).kinetic;
-    EXPECT_NEAR(e1 / e0, 1.0, 1e-9);
-    const Scene cooling = preset("06_gas", {"beta=0.9"});
-    const double e2 = physics::measure(run(cooling, 600), cooling.params).kinetic;
-    EXPECT_LT(e2 / e0, 0.25);  // 0.18 after 10 s
-}
-
-// --- 07: slide 13, static contact on an incline ---
-
-TEST(PresetPhenomena, InclineHoldsStaticContactsBelowEpsilonAndSlidesAbove) {
-    const Scene scene = preset("07_inclined_plane");
-    const physics::World start = scenes::buildWorld(scene);
-    const physics::World still = run(scene, 240);
-    const physics::World sliding = run(preset("07_inclined_plane", {"epsilon=0.01"}), 240);
-    for (std::size_t i = 0; i < 3; ++i) {  // the three resting on the plane
-        SCOPED_TRACE(i);
-        EXPECT_LT(glm::length(still.velocity[i]), 0.01);  // 0.006 m/s
-        EXPECT_LT(glm::distance(still.position[i], start.position[i]), 0.1);
-        EXPECT_EQ(still.contactState[i], physics::ContactState::Static);
-        EXPECT_GT(glm::length(sliding.velocity[i]), 0.1);  // 0.13 m/s, slowed by alpha
-        EXPECT_GT(glm::distance(sliding.position[i], start.position[i]), 0.4);
-        EXPECT_LT(sliding.position[i].z, start.position[i].z - 0.1);  // down the slope
-    }
-}
-
-// --- 08: slide 14, order and passes ---
-
-TEST(PresetPhenomena, NewtonsCradleNeedsMorePassesInReversedOrder) {
-    const physics::World index = run(preset("08_newtons_cradle"), 12);
-    for (std::size_t i = 0; i < 4; ++i) EXPECT_NEAR(index.velocity[i].x, 0.0, 2e-6);
-    EXPECT_NEAR(index.velocity[4].x, 2.0, 2e-6);
-    const physics::World reversed = run(preset("08_newtons_cradle", {"order=reversed"}), 12);
-    EXPECT_LT(reversed.velocity[4].x, 1.9);  // the impulse spread over the row
-    const physics::World fixed =
-        run(preset("08_newtons_cradle", {"order=reversed", "passes=4"}), 12);
-    EXPECT_NEAR(fixed.velocity[4].x, 2.0, 2e-6);
-}
-
-// --- 09, 10, 11: stacks, position based vs velocity based ---
-
-// Every claim of the column's text (issue 26: "jitters in place" and "drifts" were not so).
-TEST(PresetPhenomena, ColumnStandsStillBouncesInPlaceWithoutStaticContactsAndBouncesOnItselfAtMuOne) {
-    const auto kinetic = [](const Scene& scene, const physics::World& world) {
-        return physics::measure(world, scene.params).kinetic;  // J
-    };
-    // Static contacts (epsilon 0.1 > |g| h / substeps): it stands still, the same state
-    // at 10 s and 20 s.
-    const Scene still = preset("09_column");
-    const physics::World still10 = run(still, 600), still20 = run(still, 1200);
-    EXPECT_EQ(physics::stateHash(still10), physics::stateHash(still20));
-    const double restingKinetic = kinetic(still, still10);  // 1.1e-6 J
-    EXPECT_LT(restingKinetic, 2e-6);
-    // epsilon = 0: every contact bounces at every step, the projection cancels it: about
-    // 800 times the kinetic energy (1-2 cm/s each), and still nothing moves.
-    const Scene bouncing = preset("09_column", {"epsilon=0"});
-    const physics::World bouncing10 = run(bouncing, 600), bouncing20 = run(bouncing, 1200);
-    EXPECT_EQ(physics::stateHash(bouncing10), physics::stateHash(bouncing20));
-    EXPECT_NEAR(kinetic(bouncing, bouncing10) / restingKinetic, 818.0, 100.0);
-    EXPECT_GT(meanSpeed(bouncing10), 0.01);
-    EXPECT_LT(meanSpeed(bouncing10), 0.02);
-    // mu = 1 (epsilon as it was): static contacts are not damped, the column bounces on
-    // itself: 0.03-0.04 J, overlaps of 3.5 % of r, a state that keeps changing.
-    const Scene undamped = preset("09_column", {"mu=1"});
-    const physics::World undamped10 = run(undamped, 600), undamped20 = run(undamped, 1200);
-    EXPECT_NE(physics::stateHash(undamped10), physics::stateHash(undamped20));
-    EXPECT_GT(kinetic(undamped, undamped10), 0.02);
-    EXPECT_LT(kinetic(undamped, undamped10), 0.06);
-    EXPECT_NEAR(maxOverlap(undamped10), 0.035, 0.01);
-    // Velocity based: the overlaps persist and grow (2.9 % of r at 5 s, 5.9 % at 10 s).
-    const Scene velocity = preset("09_column", {"method=velocity"});
-    const double at5 = maxOverlap(run(velocity, 300));
-    const double at10 = maxOverlap(run(velocity, 600));
-    EXPECT_GT(at10, 0.04);
-    EXPECT_GT(at10, 1.5 * at5);
-    EXPECT_LT(maxOverlap(still10), 0.015);  // 1.1 %
-}
-
-TEST(PresetPhenomena, PyramidSinksIntoItselfVelocityBasedAndStandsPositionBased) {
-    const Scene scene = preset("10_pyramid");
-    ASSERT_EQ(scene.spheres.size(), 55u);
-    const double top = topHeight(scenes::buildWorld(scene));
-    const physics::World melted = run(scene, 600);  // velocity based, mu = 1
-    EXPECT_GT(maxOverlap(melted), 0.5);             // 94 % of r
-    EXPECT_LT(topHeight(melted), top - 0.1);        // 0.53 m -> 0.22 m
-    const physics::World damped = run(preset("10_pyramid", {"mu=0.5"}), 600);
-    EXPECT_NEAR(maxOverlap(damped), 0.0048, 0.0005);  // frozen in
-    EXPECT_GT(topHeight(damped), top - 0.01);
-    // The text: position based stands with overlaps of 0.24 % of r, half those at mu = 0.5.
-    const physics::World projected = run(preset("10_pyramid", {"method=position"}), 600);
-    EXPECT_NEAR(maxOverlap(projected), 0.0024, 0.0003);
-    EXPECT_NEAR(maxOverlap(projected) / maxOverlap(damped), 0.5, 0.1);
-    EXPECT_GT(topHeight(projected), top - 0.005);
-}
-
-TEST(PresetPhenomena, PileJittersPositionBasedAndOverlapsVelocityBased) {
-    const Scene scene = preset("11_pile");
-    physics::World w = run(scene, 300);
-    const std::vector<glm::dvec3> before = w.position;
-    stepOnce(scene, w);
-    double moved = 0.0;  // m/s, mean |dp| / h of a landed pile
-    for (std::size_t i = 0; i < w.size(); ++i) moved += glm::distance(w.position[i], before[i]);
-    moved /= static_cast<double>(w.size()) * scene.params.timeStep;
-    EXPECT_GT(moved, 2e-3);          // 0.0076 m/s: the projection shakes it
-    EXPECT_LT(maxOverlap(w), 0.02);  // 0.85 %
-    EXPECT_GT(maxOverlap(run(preset("11_pile", {"method=velocity"}), 300)), 0.1);  // 19 %
 }
 
 // --- 12: the course's emitter ---
@@ -425,27 +234,6 @@ TEST(PresetPhenomena, RainIsTheSameInTheAppAndInALoopAndAfterSaveAndLoad) {
 }
 
 // --- 13: tunnelling through a thin wall ---
-
-// Which side of the preset's thin wall the sphere is on after `steps` time steps:
-// +1 the far side, -1 the side it was shot from.
-int sideAfter(const Scene& scene, int steps) {
-    const physics::World w = run(scene, steps);
-    const physics::Plane& wall = w.planes.back();
-    EXPECT_GT(wall.thickness, 0.0);
-    return glm::dot(w.position[0] - wall.point, wall.normal) < 0.0 ? +1 : -1;
-}
-
-TEST(PresetPhenomena, TunnellingCrossesTheWallAtALargeStepAndBouncesAtASmallOne) {
-    const Scene scene = preset("13_tunnelling");
-    ASSERT_EQ(scene.planes.size(), 1u);
-    EXPECT_EQ(scene.planes[0].thickness, 0.02);
-    EXPECT_EQ(scene.params.substeps, 1);
-    EXPECT_EQ(sideAfter(scene, 30), +1);  // h = 1/60 s: 10 cm per step, through
-    EXPECT_EQ(sideAfter(scene, 600), +1);
-    EXPECT_EQ(sideAfter(preset("13_tunnelling", {"substeps=4"}), 30), -1);  // bounced
-    EXPECT_EQ(sideAfter(preset("13_tunnelling", {"substeps=4"}), 600), -1);
-    EXPECT_EQ(sideAfter(preset("13_tunnelling", {"h=0.004166666666666667"}), 120), -1);
-}
 
 TEST(PresetPhenomena, ThinWallThicknessSurvivesSaveAndLoad) {
     const Scene scene = preset("13_tunnelling");

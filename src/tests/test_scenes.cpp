@@ -440,3 +440,28 @@ TEST(SaveLoad, RefusesToSaveANonFiniteState) {
 }
 
 }  // namespace
+
+namespace {
+
+// A preset's claims (the lab sheet) are checked when the file loads: a meter that does
+// not exist, a setting that does not apply, a claim without a value, each one line.
+TEST(SceneFile, RefusesAClaimThatCannotBeChecked) {
+    const std::string head = "{\n  \"claims\": [\n    ";
+    expectError(head + "{\"says\": \"x\", \"measure\": \"apexx\", \"near\": 1, \"within\": 0}]}", "3:5",
+                {"claims[0]", "unknown measure 'apexx'", "apex"});
+    expectError(head + "{\"says\": \"x\", \"set\": [\"beta=7\"], \"measure\": \"apex\", \"max\": 1}]}", "3:5",
+                {"claims[0]", "set: beta = 7 is out of range"});
+    expectError(head + "{\"says\": \"x\", \"measure\": \"apex\"}]}", "3:5", {"needs near and within, min or max"});
+    expectError(head + "{\"says\": \"x\", \"measure\": \"apex\", \"near\": 1}]}", "3:5", {"near and within go together"});
+    expectError(head + "{\"says\": \"x\", \"measure\": \"apex\", \"from\": 5, \"to\": 1, \"max\": 1}]}", "3:5",
+                {"0 <= from <= to <= 120 s"});
+    expectError(head + "{\"measure\": \"apex\", \"max\": 1}]}", "3:5", {"needs \"says\""});
+    expectError(head + "{\"says\": \"x\", \"measure\": \"apex\", \"take\": \"median\", \"max\": 1}]}", "3:5",
+                {"unknown take 'median'"});
+    expectError(head + "{\"says\": \"x\", \"mesure\": \"apex\", \"max\": 1}]}", "3:19", {"mesure", "measure"});
+    expectError(head + "{\"says\": \"x\", \"measure\": \"apex\", \"sphere\": 1.5, \"max\": 1}]}", "3:48",
+                {"whole number"});
+    EXPECT_EQ(errorOf(head + "{\"says\": \"x\", \"measure\": \"apex\", \"sphere\": [0], \"max\": 1}]}"), "");
+}
+
+}  // namespace

@@ -141,6 +141,7 @@ void Simulation::measureNow() {
     }
     diagnostics_ = physics::measure(world_, scene_.params);
     alarms_.checkMeasurement(diagnostics_, scene_.params, world_.time);
+    alarms_.checkRest(world_, scene_.params);
     history_.add(world_.time, diagnostics_, bounces_);
 }
 

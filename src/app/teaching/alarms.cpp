@@ -124,11 +124,22 @@ std::string escapeHint(const physics::Params& params) {
            "or by its neighbours sinks through it; switch method to position, or lower h";
 }
 
+std::string heldInMidAirHint(const physics::Params& params) {
+    std::string hint =
+        "slide 13's static contact brakes each sphere's own velocity, v ← μ v, so spheres that touch only "
+        "each other stop wherever they are, as if glued";
+    if (params.response == physics::ResponseModel::LectureAttenuation) hint += "; switch response to momentum (μ on the relative velocity) and they fall";
+    return hint;
+}
+
 void Alarms::clear() {
     states_ = {};
     nonFinite_.reset();
     firstEscapeStep_ = 0;
     outsideNow_ = 0;
+    heldNow_ = 0;
+    lastRestCheck_.reset();
+    heldSince_.reset();
 }
 
 void Alarms::fire(AlarmKind kind, double time, double amount, std::string hint) {
@@ -174,6 +185,21 @@ void Alarms::checkMeasurement(const physics::Diagnostics& diagnostics, const phy
     }
 }
 
+void Alarms::checkRest(const physics::World& world, const physics::Params& params) {
+    if (lastRestCheck_ && world.time >= *lastRestCheck_ && world.time < *lastRestCheck_ + kHeldInMidAirPeriod) return;
+    lastRestCheck_ = world.time;
+    heldNow_ = physics::spheresHeldInMidAir(world, params);
+    const double least = std::max(double(kHeldInMidAirMin), kHeldInMidAirShare * double(world.size()));
+    if (double(heldNow_) < least) {
+        heldSince_.reset();
+        return;
+    }
+    if (!heldSince_) heldSince_ = world.time;
+    if (world.time - *heldSince_ >= kHeldInMidAirFor) {
+        fire(AlarmKind::HeldInMidAir, world.time, double(heldNow_), heldInMidAirHint(params));
+    }
+}
+
 std::vector<AlarmLine> Alarms::lines(double now) const {
     std::vector<AlarmLine> lines;
     const auto lit = [&](AlarmKind kind) { return now - state(kind).lastTime <= kAlarmHoldSeconds; };
@@ -203,6 +229,12 @@ std::vector<AlarmLine> Alarms::lines(double now) const {
         std::snprintf(text, sizeof text, "ESCAPED: %zu outside the box now, up to %.0f at once; the first had "
                       "left by solver step %llu", outsideNow_, s.worst, static_cast<unsigned long long>(firstEscapeStep_));
         lines.push_back({AlarmKind::Escaped, text, s.hint, lit(AlarmKind::Escaped)});
+    }
+    if (const State& s = state(AlarmKind::HeldInMidAir); s.count > 0) {
+        char text[256];
+        std::snprintf(text, sizeof text, "MID-AIR: %zu spheres at rest off the floor (up to %.0f), held by v ← μ v on "
+                      "spheres that touch only each other (slide 13)", heldNow_, s.worst);
+        lines.push_back({AlarmKind::HeldInMidAir, text, s.hint, lit(AlarmKind::HeldInMidAir)});
     }
     return lines;
 }

@@ -6,7 +6,9 @@
 //   - a value that is not finite (NaN, inf): the simulation pauses and names the
 //     sphere and the field;
 //   - spheres escaped: a centre left the box (crossed a wall within a step), with
-//     how many are outside and the step the first one left.
+//     how many are outside and the step the first one left;
+//   - held in mid-air: spheres at rest that nothing below carries, stopped by slide
+//     13's v <- mu v on their own velocity (physics::spheresHeldInMidAir).
 // The rules are pure functions over the world, its parameters and diagnostics;
 // Alarms keeps what the panel shows (when each fired last, how often, the worst).
 #include <array>
@@ -34,6 +36,16 @@ constexpr double kEnergyTolerance = 1e-3;
 // (velocity response only, at each impact: slides 5-6, shown by its preset); a
 // sphere sunk through half its radius, or one that tunnelled, is beyond any of them.
 constexpr double kPenetrationTolerance = 0.5;
+// Spheres held in mid-air, as a share of all, from which it is an alarm (and at least
+// kHeldInMidAirMin): the position-based pile holds 0-2 of 1000 for a moment as it lands,
+// the velocity-based one about 300 for good.
+constexpr double kHeldInMidAirShare = 0.01;
+constexpr std::size_t kHeldInMidAirMin = 3;
+// s of simulated time between two counts of the spheres held in mid-air (a broad phase),
+// and how long the count must stay at the alarm's level: a landing pile holds a few for
+// a moment (the position-based pile up to 24 of 1000, the rain up to 5).
+constexpr double kHeldInMidAirPeriod = 0.25;
+constexpr double kHeldInMidAirFor = 1.0;
 // s of simulated time an alarm stays lit (red) after it last fired; then it is
 // shown dimmed until restart, so that a one-step event can be read.
 constexpr double kAlarmHoldSeconds = 2.0;
@@ -77,7 +89,10 @@ std::string penetrationHint(const physics::Params& params);
 // Why spheres left the box, for the method in use.
 std::string escapeHint(const physics::Params& params);
 
-enum class AlarmKind { NonFinite, EnergyCreated, Penetration, Escaped, Count };
+// Why spheres rest in mid-air, and what lets them fall.
+std::string heldInMidAirHint(const physics::Params& params);
+
+enum class AlarmKind { NonFinite, EnergyCreated, Penetration, Escaped, HeldInMidAir, Count };
 
 // One line of the panel.
 struct AlarmLine {
@@ -99,6 +114,8 @@ public:
     bool checkStep(const physics::World& world, const physics::Params& params, double before, double after);
     // On each new measurement (once per frame).
     void checkMeasurement(const physics::Diagnostics& diagnostics, const physics::Params& params, double time);
+    // Counts the spheres held in mid-air, at most every kHeldInMidAirPeriod of simulated time.
+    void checkRest(const physics::World& world, const physics::Params& params);
 
     bool fired(AlarmKind kind) const { return state(kind).count > 0; }
     std::uint64_t count(AlarmKind kind) const { return state(kind).count; }
@@ -125,6 +142,9 @@ private:
     std::optional<NonFinite> nonFinite_;
     std::uint64_t firstEscapeStep_ = 0;  // the solver step after which a sphere was first outside
     std::size_t outsideNow_ = 0;         // spheres outside the box after the last step
+    std::size_t heldNow_ = 0;            // spheres held in mid-air at the last count
+    std::optional<double> lastRestCheck_;  // s, simulated
+    std::optional<double> heldSince_;      // s: since when the count has stayed at the alarm's level
 };
 
 }  // namespace app

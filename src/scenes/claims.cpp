@@ -1,0 +1,190 @@
+#include "scenes/claims.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <memory>
+#include <sstream>
+
+#include "physics/step.h"
+#include "scenes/claim_meters.h"
+#include "scenes/parameters.h"
+#include "scenes/scene.h"
+
+namespace scenes {
+
+namespace {
+
+const std::vector<std::string_view> kTakes = {"each", "min", "max", "mean", "first", "last", "count"};
+
+// The preset after `settings`; "" or why one does not apply.
+std::string applyAll(Scene& scene, const std::vector<std::string>& settings) {
+    for (const std::string& s : settings) {
+        const std::string error = applySetting(scene, s);
+        if (!error.empty()) return error;
+    }
+    return "";
+}
+
+std::string key(const std::vector<std::string>& settings) {
+    std::string out;
+    for (const std::string& s : settings) out += s + "\n";
+    return out;
+}
+
+// One scalar from the samples, or none when there are none (or take is "each").
+std::optional<double> taken(const Claim& claim, const std::vector<double>& s) {
+    if (claim.take == "count") return static_cast<double>(s.size());
+    if (claim.nth > 0) {
+        if (s.size() < static_cast<std::size_t>(claim.nth)) return std::nullopt;
+        return s[static_cast<std::size_t>(claim.nth) - 1];
+    }
+    if (s.empty() || claim.take == "each") return std::nullopt;
+    if (claim.take == "min") return *std::min_element(s.begin(), s.end());
+    if (claim.take == "max") return *std::max_element(s.begin(), s.end());
+    if (claim.take == "first") return s.front();
+    if (claim.take == "last") return s.back();
+    double sum = 0.0;
+    for (double x : s) sum += x;
+    return sum / static_cast<double>(s.size());
+}
+
+bool meets(const Claim& c, double x) {
+    if (!std::isfinite(x)) return false;
+    if (c.near && std::abs(x - *c.near) > c.within.value_or(0.0)) return false;
+    if (c.min && x < *c.min) return false;
+    if (c.max && x > *c.max) return false;
+    return true;
+}
+
+std::string expected(const Claim& c) {
+    std::ostringstream out;
+    if (c.near) out << formatNumber(*c.near) << " +- " << formatNumber(c.within.value_or(0.0));
+    if (c.min) out << (c.near ? ", " : "") << ">= " << formatNumber(*c.min);
+    if (c.max) out << (c.near || c.min ? ", " : "") << "<= " << formatNumber(*c.max);
+    return out.str();
+}
+
+std::string range(const std::vector<double>& s) {
+    const auto [lo, hi] = std::minmax_element(s.begin(), s.end());
+    std::ostringstream out;
+    out.precision(4);
+    out << *lo;
+    if (*hi != *lo) out << " to " << *hi;
+    out << " (" << s.size() << " samples)";
+    return out.str();
+}
+
+// One run of one variant: every meter watches it until the last stretch ends.
+class VariantRun {
+  public:
+    explicit VariantRun(Scene variant) : variant_(std::move(variant)) {}
+
+    detail::Meter* add(const Claim& claim) {
+        meters_.push_back(detail::makeMeter(claim, variant_));
+        end_ = std::max(end_, claim.to);
+        return meters_.back().get();
+    }
+
+    void run() {
+        physics::World world = buildWorld(variant_);
+        const double half = 0.5 * variant_.params.timeStep;
+        observe(world);
+        while (world.time < end_ - half) {
+            physics::step(world, variant_.params);
+            emitDue(variant_, world);
+            observe(world);
+        }
+    }
+
+  private:
+    void observe(const physics::World& world) {
+        for (const auto& meter : meters_) {
+            if (meter) meter->observe(world);
+        }
+    }
+
+    Scene variant_;
+    std::vector<std::unique_ptr<detail::Meter>> meters_;
+    double end_ = 0.0;
+};
+
+void judge(ClaimCheck& check, const std::vector<double>* ratioSamples) {
+    const Claim& c = *check.claim;
+    check.value = taken(c, check.samples);
+    if (ratioSamples && check.value) {
+        const std::optional<double> below = taken(c, *ratioSamples);
+        check.value = below ? std::optional<double>(*check.value / *below) : std::nullopt;
+    }
+    std::ostringstream out;
+    out.precision(4);
+    if (c.take == "each" && c.nth == 0 && !ratioSamples) {
+        check.holds = !check.samples.empty() &&
+                      std::all_of(check.samples.begin(), check.samples.end(), [&](double x) { return meets(c, x); });
+        out << (check.samples.empty() ? std::string("nothing measured") : range(check.samples));
+    } else {
+        check.holds = check.value && meets(c, *check.value);
+        if (check.value) out << *check.value;
+        else out << "nothing measured";
+    }
+    if (!check.holds) out << ", expected " << expected(c);
+    check.measured = out.str();
+}
+
+}  // namespace
+
+std::string checkClaimForm(const Claim& c, const Scene& preset) {
+    Scene variant = preset;
+    if (std::string e = applyAll(variant, c.settings); !e.empty()) return "set: " + e;
+    if (c.ratioTo) {
+        Scene other = preset;
+        if (std::string e = applyAll(other, *c.ratioTo); !e.empty()) return "ratio_to: " + e;
+    }
+    const auto& meters = claimMeters();
+    if (std::none_of(meters.begin(), meters.end(), [&](const ClaimMeter& m) { return m.name == c.measure; })) {
+        std::string names;
+        for (const ClaimMeter& m : meters) names += (names.empty() ? "" : ", ") + std::string(m.name);
+        return "unknown measure '" + c.measure + "' (one of " + names + ")";
+    }
+    if (c.measure == "setting" && !findParameter(c.parameter)) return "setting needs \"name\": a parameter's name";
+    if (std::find(kTakes.begin(), kTakes.end(), c.take) == kTakes.end()) {
+        return "unknown take '" + c.take + "' (each, min, max, mean, first, last or count)";
+    }
+    if (!(c.from >= 0.0 && c.to >= c.from && c.to <= kMaxClaimTime)) {
+        return "from and to must satisfy 0 <= from <= to <= " + formatNumber(kMaxClaimTime) + " s";
+    }
+    if (c.near.has_value() != c.within.has_value()) return "near and within go together";
+    if (!c.near && !c.min && !c.max) return "a claim needs near and within, min or max";
+    if (c.ratioTo && c.take == "each" && c.nth == 0) return "ratio_to needs one value: a take other than each, or nth";
+    return "";
+}
+
+std::vector<ClaimCheck> checkClaims(const Scene& preset) {
+    // One run per distinct settings list; a ratio's denominator runs in its own variant.
+    std::map<std::string, std::unique_ptr<VariantRun>> runs;
+    const auto runFor = [&](const std::vector<std::string>& settings) -> VariantRun& {
+        auto& run = runs[key(settings)];
+        if (!run) {
+            Scene variant = preset;
+            applyAll(variant, settings);
+            run = std::make_unique<VariantRun>(std::move(variant));
+        }
+        return *run;
+    };
+    std::vector<ClaimCheck> checks(preset.claims.size());
+    std::vector<const detail::Meter*> meters(checks.size()), ratioMeters(checks.size());
+    for (std::size_t k = 0; k < checks.size(); ++k) {
+        const Claim& c = preset.claims[k];
+        checks[k].claim = &c;
+        meters[k] = runFor(c.settings).add(c);
+        if (c.ratioTo) ratioMeters[k] = runFor(*c.ratioTo).add(c);
+    }
+    for (auto& entry : runs) entry.second->run();
+    for (std::size_t k = 0; k < checks.size(); ++k) {
+        if (meters[k]) checks[k].samples = meters[k]->samples();
+        judge(checks[k], ratioMeters[k] ? &ratioMeters[k]->samples() : nullptr);
+    }
+    return checks;
+}
+
+}  // namespace scenes

@@ -1,0 +1,172 @@
+// The lab sheet: every claim a preset's text (or its row of the README's teaching
+// table) makes is data in the preset (scenes/claims.h), and this test runs them all.
+// A text changed without its claim, or physics that no longer does what the text
+// says, fails here. The texts are also checked for claims nobody backs: every number
+// and every sentence of a description, and every clause of a teaching-table row, lies
+// in the quote of some claim.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <regex>
+#include <string>
+#include <vector>
+
+#include "scenes/claims.h"
+#include "scenes/presets.h"
+#include "scenes/scene.h"
+#include "scenes/scene_json.h"
+
+namespace {
+
+using scenes::Claim;
+using scenes::ClaimSource;
+using scenes::Scene;
+
+std::string readFile(const std::string& path) {
+    std::ifstream file(path);
+    return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
+}
+
+// The README's teaching table: its rows, each "| lecture | presets | what to look at |".
+std::vector<std::string> teachingRows() {
+    const std::string readme = readFile(scenes::assetDirectory() + "/../README.md");
+    const std::size_t start = readme.find("## What the demo teaches");
+    const std::size_t end = readme.find("\n## ", start + 1);
+    std::vector<std::string> rows;
+    std::size_t at = readme.find("\n|", start);
+    while (at != std::string::npos && at < end) {
+        const std::size_t eol = readme.find('\n', at + 1);
+        const std::string row = readme.substr(at + 1, eol - at - 1);
+        if (row.rfind("|---", 0) != 0 && row.find("| lecture") != 0) rows.push_back(row);
+        at = readme.find("\n|", eol);
+    }
+    return rows;
+}
+
+bool namesAPreset(const std::string& row) {
+    for (const std::string& name : scenes::listPresets()) {
+        if (row.find("`" + name + "`") != std::string::npos) return true;
+    }
+    return false;
+}
+
+// The rows a preset's README claims may quote: those naming it, and those naming none ("any").
+std::vector<std::string> rowsOf(const std::string& name) {
+    std::vector<std::string> out;
+    for (const std::string& row : teachingRows()) {
+        if (row.find("`" + name + "`") != std::string::npos || !namesAPreset(row)) out.push_back(row);
+    }
+    return out;
+}
+
+// The spans [begin, end) of `text` that the claims from `source` quote.
+std::vector<std::pair<std::size_t, std::size_t>> quotedSpans(const std::string& text, const Scene& scene,
+                                                             ClaimSource source) {
+    std::vector<std::pair<std::size_t, std::size_t>> spans;
+    for (const Claim& c : scene.claims) {
+        if (c.in != source) continue;
+        for (std::size_t at = text.find(c.says); at != std::string::npos; at = text.find(c.says, at + 1)) {
+            spans.emplace_back(at, at + c.says.size());
+        }
+    }
+    return spans;
+}
+
+bool covered(const std::vector<std::pair<std::size_t, std::size_t>>& spans, std::size_t begin, std::size_t end) {
+    for (const auto& [b, e] : spans) {
+        if (b <= begin && end <= e) return true;
+    }
+    return false;
+}
+
+bool overlapsAQuote(const std::vector<std::pair<std::size_t, std::size_t>>& spans, std::size_t begin,
+                    std::size_t end) {
+    for (const auto& [b, e] : spans) {
+        if (b < end && begin < e) return true;
+    }
+    return false;
+}
+
+class LabSheet : public testing::TestWithParam<std::string> {};
+
+TEST_P(LabSheet, EveryClaimOfThePresetHolds) {
+    const Scene scene = scenes::loadScene(scenes::presetPath(GetParam()));
+    ASSERT_FALSE(scene.claims.empty()) << "a preset without claims";
+    const std::vector<std::string> rows = rowsOf(GetParam());
+    for (const scenes::ClaimCheck& check : scenes::checkClaims(scene)) {
+        const Claim& c = *check.claim;
+        std::cout << "  " << (check.holds ? "holds " : "FAILS ") << "\"" << c.says << "\": " << c.measure
+                  << " = " << check.measured << "\n";
+        EXPECT_TRUE(check.holds) << "\"" << c.says << "\" (" << c.measure << "): " << check.measured;
+        if (c.in == ClaimSource::Description) {
+            EXPECT_NE(scene.description.find(c.says), std::string::npos) << "not in the text: " << c.says;
+        } else {
+            const bool quoted = std::any_of(rows.begin(), rows.end(),
+                                            [&](const std::string& row) { return row.find(c.says) != std::string::npos; });
+            EXPECT_TRUE(quoted) << "not in the preset's README row: " << c.says;
+        }
+    }
+}
+
+// Every number of the description is inside a claim's quote (slide references aside).
+TEST_P(LabSheet, EveryNumberOfTheTextIsInAClaim) {
+    const Scene scene = scenes::loadScene(scenes::presetPath(GetParam()));
+    const std::string& text = scene.description;
+    const auto spans = quotedSpans(text, scene, ClaimSource::Description);
+    std::vector<std::pair<std::size_t, std::size_t>> references;
+    const std::regex reference("slides? [0-9]+(–[0-9]+)?|option [0-9]+");
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), reference); it != std::sregex_iterator(); ++it) {
+        references.emplace_back(it->position(), it->position() + it->length());
+    }
+    const std::regex number("[0-9]+([.,/][0-9]+)*");
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), number); it != std::sregex_iterator(); ++it) {
+        const std::size_t b = static_cast<std::size_t>(it->position()), e = b + static_cast<std::size_t>(it->length());
+        if (covered(references, b, e)) continue;
+        EXPECT_TRUE(covered(spans, b, e)) << "no claim quotes \"" << it->str() << "\" in: ..."
+                                          << text.substr(b > 40 ? b - 40 : 0, 80) << "...";
+    }
+}
+
+// Every sentence of the description quotes at least one claim.
+TEST_P(LabSheet, EverySentenceOfTheTextHasAClaim) {
+    const Scene scene = scenes::loadScene(scenes::presetPath(GetParam()));
+    const std::string& text = scene.description;
+    const auto spans = quotedSpans(text, scene, ClaimSource::Description);
+    std::size_t begin = 0;
+    while (begin < text.size()) {
+        std::size_t end = text.find(". ", begin);
+        end = end == std::string::npos ? text.size() : end + 1;
+        EXPECT_TRUE(overlapsAQuote(spans, begin, end)) << "no claim in: " << text.substr(begin, end - begin);
+        begin = end + 1;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Presets, LabSheet, testing::ValuesIn(scenes::listPresets()),
+                         [](const testing::TestParamInfo<std::string>& info) { return info.param; });
+
+// Every clause ("; ") of the README teaching table's third column quotes a claim of a
+// preset of its row (the claim with "in": "README").
+TEST(LabSheetReadme, EveryClauseOfTheTeachingTableIsAClaim) {
+    std::vector<Scene> presets;
+    for (const std::string& name : scenes::listPresets()) presets.push_back(scenes::loadScene(scenes::presetPath(name)));
+    const std::vector<std::string> rows = teachingRows();
+    ASSERT_GE(rows.size(), 8u);
+    for (const std::string& row : rows) {
+        const std::size_t cell = row.rfind("| ", row.size() - 3);
+        const std::string what = row.substr(cell + 2, row.size() - cell - 4);
+        std::vector<std::pair<std::size_t, std::size_t>> spans;
+        for (const Scene& scene : presets) {
+            for (const auto& span : quotedSpans(row, scene, ClaimSource::Readme)) spans.push_back(span);
+        }
+        std::size_t begin = cell + 2;
+        for (std::size_t end; begin < cell + 2 + what.size(); begin = end + 2) {
+            end = row.find("; ", begin);
+            if (end == std::string::npos || end > cell + 2 + what.size()) end = cell + 2 + what.size();
+            EXPECT_TRUE(overlapsAQuote(spans, begin, end)) << "no claim in: " << row.substr(begin, end - begin);
+        }
+    }
+}
+
+}  // namespace
