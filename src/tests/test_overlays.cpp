@@ -48,16 +48,6 @@ scenes::Scene latticeScene(int count) {
     return scene;
 }
 
-ui::PanelState viewWith(const OverlayFlags& flags) {
-    ui::PanelState view;
-    view.showVelocity = flags.velocity;
-    view.showContacts = flags.contacts;
-    view.showImpulses = flags.impulses;
-    view.showPenetration = flags.penetration;
-    view.showTrails = flags.trails;
-    return view;
-}
-
 OverlayFlags only(const char* name) {
     OverlayFlags flags;
     EXPECT_TRUE(app::setOverlayByName(flags, name)) << name;
@@ -105,11 +95,11 @@ TEST(Overlays, ContactsAreRecordedOnlyForTheOverlaysThatNeedThem) {
     Simulation sim(latticeScene(50));
     render::FrameSnapshot snapshot;
     for (const char* name : {"velocity", "penetration", "trails"}) {
-        app::buildSnapshot(sim, viewWith(only(name)), snapshot);
+        app::buildSnapshot(sim, app::viewShowing(only(name)), snapshot);
         EXPECT_FALSE(sim.world().recordContacts) << name;
     }
     for (const char* name : {"contacts", "impulses"}) {
-        app::buildSnapshot(sim, viewWith(only(name)), snapshot);
+        app::buildSnapshot(sim, app::viewShowing(only(name)), snapshot);
         EXPECT_TRUE(sim.world().recordContacts) << name;
     }
     app::buildSnapshot(sim, ui::PanelState{}, snapshot);
@@ -117,7 +107,7 @@ TEST(Overlays, ContactsAreRecordedOnlyForTheOverlaysThatNeedThem) {
 
     // Above kMaxRecordSpheres the log would take hundreds of MB per step: never.
     Simulation big(latticeScene(static_cast<int>(app::kMaxRecordSpheres) + 100));
-    app::buildSnapshot(big, viewWith(only("contacts")), snapshot);
+    app::buildSnapshot(big, app::viewShowing(only("contacts")), snapshot);
     EXPECT_FALSE(big.world().recordContacts);
 }
 
@@ -127,7 +117,7 @@ TEST(Overlays, VelocityArrowStartsAtTheSurfaceAndIsTheTenthOfASecondPath) {
     scene.spheres[0].v = {2.0, 0.0, 1.0};  // m/s
     Simulation sim(scene);
     render::FrameSnapshot snapshot;
-    app::buildSnapshot(sim, viewWith(only("velocity")), snapshot);
+    app::buildSnapshot(sim, app::viewShowing(only("velocity")), snapshot);
     const auto arrow = linesOf(snapshot, app::kVelocityColor);
     ASSERT_EQ(arrow.size(), 5u);  // shaft and four barbs
     const glm::dvec3 v = scene.spheres[0].v;
@@ -146,9 +136,9 @@ TEST(Overlays, ContactsShowThePointUnderTheSphereAndTheFloorNormal) {
     scenes::Scene scene = dropScene(kRadius);  // resting on the floor
     Simulation sim(scene);
     render::FrameSnapshot snapshot;
-    app::buildSnapshot(sim, viewWith(only("contacts")), snapshot);
+    app::buildSnapshot(sim, app::viewShowing(only("contacts")), snapshot);
     sim.singleStep();
-    app::buildSnapshot(sim, viewWith(only("contacts")), snapshot);
+    app::buildSnapshot(sim, app::viewShowing(only("contacts")), snapshot);
     const auto normals = linesOf(snapshot, app::kNormalColor);
     ASSERT_EQ(normals.size(), 1u);  // one contact, whatever the passes and substeps
     EXPECT_NEAR(normals[0].a.z, 0.0, 1e-3);
@@ -165,7 +155,7 @@ TEST(Overlays, ContactsShowThePointUnderTheSphereAndTheFloorNormal) {
 TEST(Overlays, ImpulseArrowAtImpactFadesToNothingAfterHalfASecond) {
     Simulation sim(dropScene(1.5, 0.8));
     render::FrameSnapshot snapshot;
-    const ui::PanelState view = viewWith(only("impulses"));
+    const ui::PanelState view = app::viewShowing(only("impulses"));
     app::buildSnapshot(sim, view, snapshot);
     ASSERT_TRUE(stepUntilBounce(sim));
     ASSERT_EQ(sim.overlays().impulses().size(), 1u);
@@ -209,7 +199,7 @@ TEST(Overlays, ImpulsesBetweenTwoSpheresAreEqualAndOpposite) {
     scene.spheres.push_back({{0.5, 0.0, 1.0}, {0.0, 0.0, 0.0}, 0.144, 3.0});
     Simulation sim(scene);
     render::FrameSnapshot snapshot;
-    app::buildSnapshot(sim, viewWith(only("impulses")), snapshot);
+    app::buildSnapshot(sim, app::viewShowing(only("impulses")), snapshot);
     ASSERT_TRUE(stepUntilBounce(sim));
     const auto& marks = sim.overlays().impulses();
     ASSERT_EQ(marks.size(), 2u);
@@ -222,7 +212,7 @@ TEST(Overlays, ImpulsesBetweenTwoSpheresAreEqualAndOpposite) {
 TEST(Overlays, TrailsKeepTheLastSecondAndAHalfOfTheCentre) {
     Simulation sim(dropScene(1.5, 0.8));
     render::FrameSnapshot snapshot;
-    const ui::PanelState view = viewWith(only("trails"));
+    const ui::PanelState view = app::viewShowing(only("trails"));
     app::buildSnapshot(sim, view, snapshot);
     const double h = sim.params().timeStep;  // 1/60 s: one point per step
     ASSERT_NEAR(h, app::kTrailSampleSeconds, 1e-12);
@@ -260,7 +250,7 @@ TEST(Overlays, TrailsKeepTheLastSecondAndAHalfOfTheCentre) {
 TEST(Overlays, TrailsFollowTheFirstSpheresOrTheSelectedOne) {
     Simulation sim(latticeScene(300));
     render::FrameSnapshot snapshot;
-    ui::PanelState view = viewWith(only("trails"));
+    ui::PanelState view = app::viewShowing(only("trails"));
     app::buildSnapshot(sim, view, snapshot);
     sim.singleStep();
     ASSERT_EQ(sim.overlays().trails().size(), app::kMaxTrailSpheres);
@@ -277,7 +267,7 @@ TEST(Overlays, RestartClearsImpulsesAndTrails) {
     render::FrameSnapshot snapshot;
     OverlayFlags flags;
     flags.impulses = flags.trails = true;
-    app::buildSnapshot(sim, viewWith(flags), snapshot);
+    app::buildSnapshot(sim, app::viewShowing(flags), snapshot);
     ASSERT_TRUE(stepUntilBounce(sim));
     EXPECT_FALSE(sim.overlays().impulses().empty());
     EXPECT_FALSE(sim.overlays().trails().empty());
@@ -309,7 +299,7 @@ TEST(Overlays, PenetrationIsARedSegmentTenTimesTheDepthAlongTheNormal) {
     // Overlap the two by 2 cm along x, through the world (a scene refuses overlaps).
     sim.editableWorld().position[0] = {0.5 - 2 * kRadius + 0.02, 0.0, 1.0};
     render::FrameSnapshot snapshot;
-    app::buildSnapshot(sim, viewWith(only("penetration")), snapshot);
+    app::buildSnapshot(sim, app::viewShowing(only("penetration")), snapshot);
     const auto red = linesOf(snapshot, app::kPenetrationColor);
     ASSERT_EQ(red.size(), 1u);
     const glm::vec3 segment = red[0].b - red[0].a;

@@ -192,13 +192,8 @@ OverlayFlags parseOverlays(const std::string& text) {
 
 // The panel's view options for a capture: the window's defaults, the colouring and the overlays.
 ui::PanelState captureView(render::ColorBy colorBy, const OverlayFlags& overlays) {
-    ui::PanelState view;
+    ui::PanelState view = viewShowing(overlays);
     view.colorBy = static_cast<int>(colorBy);
-    view.showVelocity = overlays.velocity;
-    view.showContacts = overlays.contacts;
-    view.showImpulses = overlays.impulses;
-    view.showPenetration = overlays.penetration;
-    view.showTrails = overlays.trails;
     return view;
 }
 

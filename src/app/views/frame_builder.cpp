@@ -21,6 +21,16 @@ OverlayFlags overlayFlags(const ui::PanelState& view) {
     return flags;
 }
 
+ui::PanelState viewShowing(const OverlayFlags& flags) {
+    ui::PanelState view;
+    view.showVelocity = flags.velocity;
+    view.showContacts = flags.contacts;
+    view.showImpulses = flags.impulses;
+    view.showPenetration = flags.penetration;
+    view.showTrails = flags.trails;
+    return view;
+}
+
 bool overlaysOnTop(const ui::PanelState& view, std::size_t sphereCount) {
     return view.overlaysOnTop && sphereCount <= kOverlaysOnTopMaxSpheres;
 }

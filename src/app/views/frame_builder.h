@@ -10,6 +10,8 @@ namespace app {
 
 // The overlays the panel's view state asks for.
 OverlayFlags overlayFlags(const ui::PanelState& view);
+// The window's default view options with these overlays on: overlayFlags' inverse.
+ui::PanelState viewShowing(const OverlayFlags& flags);
 
 // Whether the overlays are drawn over everything (render::RenderStyle::overlayOnTop):
 // in scenes of up to kOverlaysOnTopMaxSpheres spheres, where a contact point or an
