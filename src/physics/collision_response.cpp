@@ -52,12 +52,11 @@ void cancelApproach(glm::dvec3& v1, glm::dvec3& v2, const MassShares& shares,
 }
 
 // Slide 13, 2-b: no bounce (the approaching normal speed is removed, perfectly
-// inelastic), then friction v <- mu v. In the momentum-conserving model the
-// friction damps the relative tangential velocity instead, so momentum stays exact.
+// inelastic), then friction v <- mu v (frictionOnRelativeVelocity says on what).
 void staticSphereContact(glm::dvec3& v1, glm::dvec3& v2, const MassShares& shares,
                          const glm::dvec3& u, double approachSpeed, const Params& params) {
     if (approachSpeed > 0.0) cancelApproach(v1, v2, shares, u, approachSpeed);
-    if (params.response == ResponseModel::LectureAttenuation) {
+    if (!frictionOnRelativeVelocity(params)) {
         v1 *= params.mu;
         v2 *= params.mu;
         return;
@@ -70,6 +69,12 @@ void staticSphereContact(glm::dvec3& v1, glm::dvec3& v2, const MassShares& share
 }
 
 }  // namespace
+
+// The methods that claim physical correctness keep momentum in a static contact too, so
+// that a touching pair in free fall falls (physics.md, slide 13).
+bool frictionOnRelativeVelocity(const Params& params) {
+    return params.response == ResponseModel::MomentumConserving || params.method == Method::Continuous;
+}
 
 Response respondToPlane(glm::dvec3& v, const glm::dvec3& n, const Params& params) {
     const double normalSpeed = glm::dot(v, n);  // m/s, negative while approaching
@@ -88,6 +93,11 @@ Response respondToPlane(glm::dvec3& v, const glm::dvec3& n, const Params& params
 void projectOnPlane(glm::dvec3& p, double r, const Plane& plane) {
     const double d = r - glm::dot(p - plane.point, plane.normal);  // m
     p += d * plane.normal;
+}
+
+void reflectOnPlane(glm::dvec3& p, double r, const Plane& plane, double beta) {
+    const double d = r - glm::dot(p - plane.point, plane.normal);  // m
+    p += ((1.0 + beta) * d) * plane.normal;
 }
 
 Response respondToSphere(glm::dvec3& v1, glm::dvec3& v2, double m1, double m2,

@@ -18,6 +18,14 @@ Response respondToPlane(glm::dvec3& v, const glm::dvec3& n, const Params& params
 // Slide 8: p <- p + d n, d = r - (p - a).n (the distance of penetration).
 void projectOnPlane(glm::dvec3& p, double r, const Plane& plane);
 
+// Slide 7, option 2 (reflection): p <- p + (1 + beta) d n, the penetration mirrored.
+void reflectOnPlane(glm::dvec3& p, double r, const Plane& plane, double beta);
+
+// Whether a static sphere-sphere contact's friction damps the pair's relative
+// tangential velocity (momentum kept) rather than each sphere's own velocity (the
+// slide's v <- mu v): in the momentum-conserving model and in the continuous method.
+bool frictionOnRelativeVelocity(const Params& params);
+
 // Slides 11-13 for two touching spheres; u = (p1 - p2) / |p1 - p2| points from 2 to 1.
 Response respondToSphere(glm::dvec3& v1, glm::dvec3& v2, double m1, double m2,
                          const glm::dvec3& u, const Params& params);

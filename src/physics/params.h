@@ -10,7 +10,18 @@ enum class Method {
     PositionBased,  // "position projection": velocity + position response, walls last
     VelocityBased,  // "velocity correction": velocity response, cancel penetrating velocity
     ResponseOnly,   // first deck, slides 5-6: move, then velocity response only, no correction
+    Reflection,     // slide 7, option 2: position based, moved out by (1 + beta) d ("approximate")
+    Continuous,     // slide 7, option 3: back to the instant of contact, impacts in time order
 };
+
+// How the continuous method finds the instant of contact (slide 7: "binary search, etc.").
+enum class TimeOfImpact {
+    ClosedForm,  // the earliest root of the distance function (a quadratic)
+    Bisection,   // the slide's binary search on the same function, to kBisectionTolerance
+};
+
+// s: where the bisection stops halving the interval that holds the instant of contact.
+constexpr double kBisectionTolerance = 1e-12;
 
 // How two spheres exchange velocity when they bounce.
 enum class ResponseModel {
@@ -44,6 +55,10 @@ struct Params {
     PositionSplit split = PositionSplit::HalfHalf;
     PairOrder order = PairOrder::Index;
     BroadPhase broadPhase = BroadPhase::Grid;
+    TimeOfImpact timeOfImpact = TimeOfImpact::ClosedForm;
+    // The continuous method's most impacts per solver step: past it the rest of the step
+    // is projected (and counted, StepStats::cappedSteps), so a step never hangs.
+    int maxEvents = 100000;
     // Threads the solver may use, 0: one per usable core (at most 8) from 8192 spheres,
     // one below, and one while more were measured slower (AutomaticThreads). Any count gives the same result, bit for bit, in every order: a thread
     // waits before a pair until the pair that met one of its spheres before is done.

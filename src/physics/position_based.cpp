@@ -4,6 +4,8 @@
 //   C. handle collisions with the walls: velocity + position;
 //   B and C repeated for K passes.
 // (+) walls are never crossed, since they are handled last; (-) stacked spheres jitter.
+// Reflection (slide 7's second answer, reflection.cpp) runs the same stages with its
+// own position response.
 #include "physics/solver_stages.h"
 
 namespace physics {
@@ -11,7 +13,7 @@ namespace {
 
 // Each move lowers the spheres' wall clearance by its length.
 void particlesVelocityAndPosition(World& world, const Params& params, StepStats& stats,
-                                  int pass) {
+                                  int pass, PositionResponse response) {
     std::vector<double>& clearance = world.workspace.wallClearance;  // m
     forEachPairInPassOrder(world, params, stats, [&](const SpherePair* pairs, std::uint32_t first,
                                                      std::uint32_t last, StepStats& s) {
@@ -22,7 +24,8 @@ void particlesVelocityAndPosition(World& world, const Params& params, StepStats&
             respondToContact(world, pair, contact, params, s, pass);
             const Separation moved =
                 separateSpheres(world.position[pair.i], world.position[pair.j], world.mass[pair.i],
-                                world.mass[pair.j], contact.u, contact.depth, params.split);
+                                world.mass[pair.j], contact.u,
+                                positionResponseDistance(response, contact.depth, params), params.split);
             clearance[pair.i] -= moved.first;
             clearance[pair.j] -= moved.second;
         }
@@ -31,14 +34,18 @@ void particlesVelocityAndPosition(World& world, const Params& params, StepStats&
 
 // A sphere whose wall clearance is above 0 touches no plane: passed by.
 void wallsVelocityAndPosition(World& world, const Params& params, StepStats& stats,
-                              int pass) {
+                              int pass, PositionResponse response) {
     std::vector<double>& clearance = world.workspace.wallClearance;  // m
     const double scale = planeScale(world);                          // m
     forEachSphere(world, params, stats, [&](std::uint32_t i, StepStats& s) {
         if (clearance[i] > 0.0) return;
         forEachTouchedPlane(world, i, [&](std::size_t k, const Plane& face) {
             respondToContact(world, i, k, face, params, s, pass);
-            projectOnPlane(world.position[i], world.radius[i], face);
+            if (response == PositionResponse::Projection) {
+                projectOnPlane(world.position[i], world.radius[i], face);
+            } else {
+                reflectOnPlane(world.position[i], world.radius[i], face, params.beta);
+            }
         });
         clearance[i] = wallClearance(world, i, scale);
     });
@@ -46,7 +53,8 @@ void wallsVelocityAndPosition(World& world, const Params& params, StepStats& sta
 
 }  // namespace
 
-StepStats stepPositionBased(World& world, const Params& params, double h) {
+StepStats stepWithPositionResponse(World& world, const Params& params, double h,
+                                   PositionResponse response) {
     StepStats stats;
     integrateVelocity(world, params, h);  // A
     integratePosition(world, params, h);
@@ -55,11 +63,15 @@ StepStats stepPositionBased(World& world, const Params& params, double h) {
         const StageTimer timer(stats.passesSeconds);
         findWallClearances(world, params);
         for (int pass = 0; pass < params.passes; ++pass) {
-            particlesVelocityAndPosition(world, params, stats, pass);  // B
-            wallsVelocityAndPosition(world, params, stats, pass);      // C
+            particlesVelocityAndPosition(world, params, stats, pass, response);  // B
+            wallsVelocityAndPosition(world, params, stats, pass, response);      // C
         }
     }
     return stats;
+}
+
+StepStats stepPositionBased(World& world, const Params& params, double h) {
+    return stepWithPositionResponse(world, params, h, PositionResponse::Projection);
 }
 
 }  // namespace physics

@@ -288,11 +288,11 @@ void findWallClearances(World& world, const Params& params);
 // The velocity response to one contact (collision_response.h), recorded in the
 // spheres' contact state, counted in the stats (contacts on pass 0 only) and, when
 // world.recordContacts is on, logged as a ContactEvent.
-void respondToContact(World& world, const SpherePair& pair, const SphereContact& contact,
-                      const Params& params, StepStats& stats, int pass);
+Response respondToContact(World& world, const SpherePair& pair, const SphereContact& contact,
+                          const Params& params, StepStats& stats, int pass);
 // `face` is faceFor(world.planes[planeIndex], the sphere's centre).
-void respondToContact(World& world, std::uint32_t i, std::size_t planeIndex, const Plane& face,
-                      const Params& params, StepStats& stats, int pass);
+Response respondToContact(World& world, std::uint32_t i, std::size_t planeIndex, const Plane& face,
+                          const Params& params, StepStats& stats, int pass);
 
 // For methods whose positions stay put while the passes run (velocity based, response
 // only): finds the pairs that touch and the walls each sphere touches once per step,
@@ -303,5 +303,20 @@ void findContacts(World& world, const Params& params);
 // Velocity response to every touching pair (in pass order), then every wall contact,
 // as findContacts found them.
 void respondToAllContacts(World& world, const Params& params, StepStats& stats, int pass);
+
+// Slide 7's answers to a penetration found after the fact that move the sphere: (1)
+// project it on the constraint (out by d), (2) approximate the correct position by
+// reflection (out by (1 + beta) d, where it would be had it bounced at the instant
+// of contact and gone on at beta times its normal speed).
+enum class PositionResponse { Projection, Reflection };
+
+// m: how far the position response moves out of an overlap of depth d (m).
+inline double positionResponseDistance(PositionResponse response, double d, const Params& params) {
+    return response == PositionResponse::Projection ? d : (1.0 + params.beta) * d;
+}
+
+// The position based method's stages (position_based.cpp) with either position response.
+StepStats stepWithPositionResponse(World& world, const Params& params, double h,
+                                   PositionResponse response);
 
 }  // namespace physics

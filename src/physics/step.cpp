@@ -216,13 +216,15 @@ int automaticMany() {
 
 // Whether automatic mode chooses this world's threads (AutomaticThreads).
 bool threadsChosenAutomatically(const World& world, const Params& params) {
-    return params.threads == 0 && world.size() >= kAutomaticParallelMinSpheres && automaticMany() > 1;
+    return params.threads == 0 && world.size() >= kAutomaticParallelMinSpheres && automaticMany() > 1 &&
+           params.method != Method::Continuous;
 }
 
 }  // namespace
 
 int solverThreads(const World& world, const Params& params) {
-    if (world.size() < kParallelMinSpheres) return 1;
+    // Impacts in time order are one sequence: the continuous method runs on one thread.
+    if (world.size() < kParallelMinSpheres || params.method == Method::Continuous) return 1;
     if (params.threads > 0) return std::min(params.threads, kMostSolverThreads);
     if (!threadsChosenAutomatically(world, params)) return 1;
     const int chosen = world.workspace.automaticThreads.current();
@@ -237,6 +239,9 @@ StepStats& StepStats::operator+=(const StepStats& o) {
     wallContacts += o.wallContacts;
     collisions += o.collisions;
     staticContacts += o.staticContacts;
+    events += o.events;
+    toiIterations += o.toiIterations;
+    cappedSteps += o.cappedSteps;
     broadPhaseSeconds += o.broadPhaseSeconds;
     passesSeconds += o.passesSeconds;
     return *this;
@@ -307,8 +312,8 @@ void count(StepStats& stats, Response response) {
 
 }  // namespace
 
-void respondToContact(World& world, const SpherePair& pair, const SphereContact& contact,
-                      const Params& params, StepStats& stats, int pass) {
+Response respondToContact(World& world, const SpherePair& pair, const SphereContact& contact,
+                          const Params& params, StepStats& stats, int pass) {
     const glm::dvec3 before[2] = {world.velocity[pair.i], world.velocity[pair.j]};  // m/s
     const Response response = respondToSphere(world.velocity[pair.i], world.velocity[pair.j],
                                               world.mass[pair.i], world.mass[pair.j], contact.u,
@@ -325,10 +330,11 @@ void respondToContact(World& world, const SpherePair& pair, const SphereContact&
                                   {world.velocity[pair.i], world.velocity[pair.j]},
                                   {world.mass[pair.i], world.mass[pair.j]}});
     }
+    return response;
 }
 
-void respondToContact(World& world, std::uint32_t i, std::size_t planeIndex, const Plane& face,
-                      const Params& params, StepStats& stats, int pass) {
+Response respondToContact(World& world, std::uint32_t i, std::size_t planeIndex, const Plane& face,
+                          const Params& params, StepStats& stats, int pass) {
     const glm::dvec3 before = world.velocity[i];
     const Response response = respondToPlane(world.velocity[i], face.normal, params);
     record(world, i, response);
@@ -342,6 +348,7 @@ void respondToContact(World& world, std::uint32_t i, std::size_t planeIndex, con
                                   {before, glm::dvec3(0.0)}, {world.velocity[i], glm::dvec3(0.0)},
                                   {world.mass[i], 0.0}});
     }
+    return response;
 }
 
 void findContacts(World& world, const Params& params) {
@@ -398,6 +405,8 @@ StepStats solverStep(World& world, const Params& params, double h) {
         case Method::PositionBased: return stepPositionBased(world, params, h);
         case Method::VelocityBased: return stepVelocityBased(world, params, h);
         case Method::ResponseOnly: return stepResponseOnly(world, params, h);
+        case Method::Reflection: return stepReflection(world, params, h);
+        case Method::Continuous: return stepContinuous(world, params, h);
     }
     return {};
 }

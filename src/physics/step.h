@@ -16,6 +16,12 @@ struct StepStats {
     std::uint64_t wallContacts = 0;    // sphere-plane contacts found in the first pass
     std::uint64_t collisions = 0;      // contacts that bounced (speed above epsilon), all passes
     std::uint64_t staticContacts = 0;  // contacts handled as static (slide 13), all passes
+    // The continuous method: impacts handled at their instant (bounces and static
+    // contacts), bisection iterations spent finding those instants, and solver steps that
+    // reached Params::maxEvents and were projected from there.
+    std::uint64_t events = 0;
+    std::uint64_t toiIterations = 0;
+    std::uint64_t cappedSteps = 0;
     // s of wall time (a profile, not part of the result): finding the candidate pairs
     // (grid or all pairs, then their order), and the collision passes (with what they
     // find first: contacts, wall clearances, and the velocity method's cancelling).
@@ -35,5 +41,7 @@ StepStats step(World& world, const Params& params);
 StepStats stepPositionBased(World& world, const Params& params, double h);
 StepStats stepVelocityBased(World& world, const Params& params, double h);
 StepStats stepResponseOnly(World& world, const Params& params, double h);
+StepStats stepReflection(World& world, const Params& params, double h);
+StepStats stepContinuous(World& world, const Params& params, double h);
 
 }  // namespace physics

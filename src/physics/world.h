@@ -50,6 +50,9 @@ struct ContactEvent {
     glm::dvec3 velocityBefore[2]{};  // m/s, of i and of the other sphere (zero for a plane)
     glm::dvec3 velocityAfter[2]{};   // m/s
     double massOf[2]{0.0, 0.0};      // kg (0 for a plane)
+    // s: the continuous method's instant of contact within its solver step (the
+    // velocities are those at that instant); -1 for the other methods.
+    double timeOfImpact = -1.0;
     bool isPlane() const { return other < 0; }
     glm::dvec3 impulse() const { return massOf[0] * (velocityAfter[0] - velocityBefore[0]); }  // kg m/s on i
 };
@@ -75,6 +78,33 @@ struct WallContact {
 struct alignas(64) TaskScratch {
     std::vector<SpherePair> pairs;        // the pairs this task found or kept
     std::vector<std::uint32_t> partners;  // candidates of one sphere, only grows
+};
+
+// One predicted impact of the continuous method (continuous.cpp): sphere i meets sphere
+// `other`, or plane -1 - other, at `time` (s within the solver step), if neither sphere's
+// path has changed since (the versions).
+struct PredictedImpact {
+    double time = 0.0;  // s
+    std::uint32_t i = 0;
+    std::int32_t other = -1;
+    std::uint32_t versionOfI = 0, versionOfOther = 0;
+};
+
+// The continuous method's scratch. Within a solver step each sphere follows a path
+// p(t) = p0 + w (t - t0) + 1/2 g (t - t0)^2 from its last impact at t0; World::position
+// and World::velocity hold p0 and w (the path's velocity at t0) until the step ends.
+struct ContinuousWorkspace {
+    std::vector<double> pathStart;          // s: t0 of each sphere's path
+    std::vector<std::uint32_t> version;     // grows with each change of a sphere's path
+    std::vector<glm::dvec3> anchor;         // m: the path starts the candidate pairs were found from
+    double reach = 0.0;                     // m: no sphere moves farther than this from its anchor
+    std::vector<std::uint32_t> pairStart;   // sphere i's candidate pairs: pairOf[pairStart[i], pairStart[i + 1])
+    std::vector<std::uint32_t> pairOf;      // indices into Workspace::pairs
+    std::vector<std::uint8_t> pairResting;  // per candidate pair: in static contact this step
+    std::vector<std::uint8_t> planeResting;  // per sphere and plane (i * planes + k): the same
+    std::vector<PredictedImpact> queue;     // a heap, earliest first
+    std::vector<SpherePair> previousPairs;  // scratch of a rebuild: the pairs before it
+    std::vector<std::uint8_t> previousResting;
 };
 
 // Scratch memory reused from step to step, so a step allocates nothing once warm.
@@ -126,6 +156,7 @@ struct Workspace {
     std::vector<WallContact> wallContacts;     // by sphere, then plane
     // Params::threads = 0: the count in use, measured against the other (step()).
     AutomaticThreads automaticThreads;
+    ContinuousWorkspace continuous;
 };
 
 struct World {

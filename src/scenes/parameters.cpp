@@ -95,6 +95,7 @@ Parameter onlyWith(bool (*available)(const Scene&), Parameter p) {
 
 bool hasEmitter(const Scene& s) { return !s.emitters.empty(); }
 bool hasGenerator(const Scene& s) { return !s.generators.empty(); }
+bool isContinuous(const Scene& s) { return s.params.method == physics::Method::Continuous; }
 
 double gravityOf(const Scene& s) { return glm::length(s.params.gravity); }
 std::string setGravity(Scene& s, double g) {
@@ -178,14 +179,31 @@ std::vector<Parameter> makeTable() {
              "Slide 2: the single field force F = m g, pointing along -z. 9.81 on Earth; 0 "
              "for a gas or a billiard table seen from above.",
              {gravityOf, setGravity}),
-        choice("method", "method", {"position", "velocity", "response-only"},
+        choice("method", "method", {"position", "velocity", "response-only", "reflection", "continuous"},
                static_cast<double>(kDefaults.method),
                "Summary with multiple particles. position: velocity + position response, "
                "walls last (walls never crossed; stacked spheres jitter). velocity: velocity "
                "response, cancel the velocity into a penetration, then move (smooth and "
                "stable; an existing collision persists). response-only: slides 5-6, collision "
-               "response on speed only, no position correction.",
+               "response on speed only, no position correction. reflection: slide 7's "
+               "\"approximate the correct position\", as position but moved out by (1 + \u03b2) d, "
+               "where it would be had it bounced at the instant of contact. continuous: slide 7's "
+               "\"go backward in time\" (continuous collision detection): each impact is found "
+               "at its instant within the step and answered there, in time order (physically "
+               "correct, computationally heavy; one thread).",
                param<&Params::method>()),
+        onlyWith(isContinuous, choice("toi", "time of impact", {"closed-form", "bisection"},
+               static_cast<double>(kDefaults.timeOfImpact),
+               "Continuous method only: how the instant of contact is found. closed-form: the "
+               "earliest root of the gap, a quadratic in time along the step's parabola. "
+               "bisection: the slide's binary search on the same gap, halving the interval "
+               "until it is 1e-12 s long (about 35 halvings per impact).",
+               param<&Params::timeOfImpact>())),
+        onlyWith(isContinuous, integer("max_events", "most impacts per step", 1, 10000000, kDefaults.maxEvents,
+                "Continuous method only: the most impacts handled in one solver step. Past "
+                "it the rest of the step is projected as the position method would, and the "
+                "alarms say so: a step never hangs.",
+                param<&Params::maxEvents>())),
         choice("response", "sphere-sphere response", {"lecture", "momentum"},
                static_cast<double>(kDefaults.response),
                "lecture: slide 12, v1 \u2190 \u03b1 v1// + \u03b2 (v1\u22a5 + j/m1 u); with "

@@ -173,7 +173,8 @@ TEST(ContactExplanation, SlowFloorContactIsStaticWithFriction) {
 
 // Every response the solver records in a busy scene is explained exactly.
 TEST(ContactExplanation, AgreesWithEveryRecordedResponseOfARealStep) {
-    for (const auto method : {physics::Method::PositionBased, physics::Method::VelocityBased}) {
+    for (const auto method : {physics::Method::PositionBased, physics::Method::VelocityBased,
+                              physics::Method::Reflection, physics::Method::Continuous}) {
         for (const auto model : {physics::ResponseModel::LectureAttenuation, physics::ResponseModel::MomentumConserving}) {
             scenes::Scene scene;
             scene.box = scenes::Box{};
@@ -204,6 +205,44 @@ TEST(ContactExplanation, AgreesWithEveryRecordedResponseOfARealStep) {
             EXPECT_GT(bounces, 10u);
         }
     }
+}
+
+// Slide 7's answers in the explanation: reflection moves out by (1 + beta) d; the
+// continuous method says when within the step it met the floor, and that nothing was
+// left to correct.
+TEST(ContactExplanation, NamesSlideSevensAnswers) {
+    physics::Params params;
+    params.beta = 0.5;
+    params.substeps = 1;
+    params.method = physics::Method::Reflection;
+    physics::ContactEvent floor;
+    floor.other = -1;
+    floor.normal = {0.0, 0.0, 1.0};
+    floor.depth = 0.01;
+    floor.velocityBefore[0] = {0.0, 0.0, -2.0};
+    floor.velocityAfter[0] = {0.0, 0.0, 1.0};
+    floor.massOf[0] = 1.0;
+    floor.bounce = true;
+    const app::ContactExplanation reflected = app::explainContact(floor, params);
+    EXPECT_TRUE(reflected.reflected);
+    EXPECT_DOUBLE_EQ(reflected.shift[0], 0.015);  // (1 + 0.5) 0.01 m
+    EXPECT_TRUE(hasLine(app::explanationLines(reflected, params, 6), "slide 7, reflection: p ← p + (1 + β) d n"));
+
+    params.method = physics::Method::Continuous;
+    physics::World world;
+    world.planes = {{{0, 0, 0}, {0, 0, 1}}};
+    world.addSphere({0, 0, 0.5}, {0, 0, -3.0}, 0.1, 1.0);
+    world.recordContacts = true;
+    while (world.contacts.empty()) physics::step(world, params);
+    const app::ContactExplanation e = app::explainContact(world.contacts[0], params);
+    EXPECT_GE(e.timeOfImpact, 0.0);
+    EXPECT_LE(e.timeOfImpact, params.solverStep());
+    EXPECT_NEAR(e.depth, 0.0, 1e-12);  // met at the instant of contact
+    EXPECT_EQ(e.correction, app::PositionCorrection::None);
+    const auto lines = app::explanationLines(e, params, 1);
+    EXPECT_TRUE(hasLine(lines, "Slide 7: back to the instant of collision"));
+    EXPECT_TRUE(hasLine(lines, "t* = "));
+    EXPECT_TRUE(hasLine(lines, "continuous: answered at the instant of contact"));
 }
 
 }  // namespace

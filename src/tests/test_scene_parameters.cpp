@@ -34,7 +34,7 @@ TEST(ParameterTable, HasTheLectureParametersOnceEach) {
     const std::set<std::string> expected = {
         "alpha",  "beta",     "epsilon", "mu",    "h",          "substeps", "passes", "gravity",
         "method", "response", "split",   "order", "broadphase", "emit_period", "count", "radius",
-        "seed",   "threads"};
+        "seed",   "threads",  "toi",     "max_events"};
     EXPECT_EQ(names, expected);
 }
 
@@ -166,7 +166,7 @@ TEST(ApplySetting, RefusesValuesThatAreNotNumbersOrChoices) {
     EXPECT_EQ(applySetting(scene, "alpha=nan"), "value 'nan' for alpha is not a number");
     EXPECT_EQ(applySetting(scene, "gravity=inf"), "value 'inf' for gravity is not a number");
     EXPECT_EQ(applySetting(scene, "method=fast"),
-              "method = 'fast' is not a choice; choices: position, velocity, response-only");
+              "method = 'fast' is not a choice; choices: position, velocity, response-only, reflection, continuous");
     EXPECT_EQ(applySetting(scene, "order=2"),
               "order = '2' is not a choice; choices: index, reversed, shuffled");
     EXPECT_EQ(scene.params.alpha, physics::Params{}.alpha);

@@ -78,7 +78,7 @@ TEST(SceneFile, RefusesWrongTypes) {
                 {"substeps = 2.5 must be a whole number"});
     expectError(
         "{\n  \"parameters\": {\"method\": 1}\n}", "2:28",
-        {"parameters.method must be one of position, velocity, response-only, got a number"});
+        {"parameters.method must be one of position, velocity, response-only, reflection, continuous, got a number"});
 }
 
 TEST(SceneFile, RefusesMissingRequiredKeys) {
@@ -129,7 +129,7 @@ TEST(SceneFile, RefusesParametersOutOfTheirTableRange) {
 
 TEST(SceneFile, RefusesUnknownChoiceNames) {
     expectError("{\n  \"parameters\": {\n    \"method\": \"fast\"\n  }\n}", "3:15",
-                {"unknown method choice 'fast'", "valid: position, velocity, response-only"});
+                {"unknown method choice 'fast'", "valid: position, velocity, response-only, reflection, continuous"});
     expectError("{\"parameters\": {\"order\": \"reverse\"}}", "1:26",
                 {"unknown order choice 'reverse'", "did you mean 'reversed'?"});
     expectError("{\"generate\": [{\"count\": 1, \"kind\": \"latice\"}]}", "1:36",

@@ -119,6 +119,7 @@ void Simulation::afterStep() {
     // A sphere added or removed, or energy the app put in, is not the solver's doing.
     const bool checkEnergy = !skipEnergyCheck_ && world_.size() == sizeBefore_;
     skipEnergyCheck_ = false;
+    alarms_.checkEvents(lastStats_, scene_.params, world_.time);
     if (!alarms_.checkStep(world_, scene_.params, checkEnergy ? energyBefore_ : energyAfter, energyAfter)) {
         paused = true;
         return;

@@ -87,6 +87,11 @@ std::string energyHint(const physics::Params& params) {
                "v ← v + h g, and the response sends that back too (about 2 g h / s per bounce; "
                "smaller with more substeps or β < 1)";
     }
+    if (params.method == physics::Method::Reflection) {
+        return "reflection mirrors the velocity the step found, one gravity kick late (slide 7's "
+               "approximation): a bounce that enters early in its step comes out up to 2 g h / s "
+               "too fast; switch method to continuous for the instant of contact";
+    }
     if (params.method == physics::Method::ResponseOnly) {
         return "response-only reflects this step's gravity kick too (slides 5–6: the contact is found "
                "after v ← v + h g, inside the wall): a floor bounce loses energy, a bounce off the "
@@ -107,7 +112,12 @@ std::string penetrationHint(const physics::Params& params) {
         case physics::Method::VelocityBased:
             return "velocity based only cancels the approach, never pushes apart: an existing overlap "
                    "persists or grows; switch method to position to project it out";
+        case physics::Method::Continuous:
+            return "continuous: a resting contact is pressed in by g h² / 2 within a step and projected "
+                   "at its end; a deeper overlap comes from a step that reached the impact cap "
+                   "(raise max_events) or an overlap that was there before";
         case physics::Method::PositionBased:
+        case physics::Method::Reflection:
             break;
     }
     return "the passes did not resolve every overlap: raise passes or substeps, or lower h";
@@ -116,7 +126,11 @@ std::string penetrationHint(const physics::Params& params) {
 // ---------------------------------------------------------------- the record
 
 std::string escapeHint(const physics::Params& params) {
-    if (params.method == physics::Method::PositionBased) {
+    if (params.method == physics::Method::Continuous) {
+        return "continuous catches every wall at its instant of contact: a sphere got out in a step that "
+               "reached the impact cap (raise max_events), or was outside already";
+    }
+    if (params.method == physics::Method::PositionBased || params.method == physics::Method::Reflection) {
         return "a sphere crossed a whole wall within one solver step (faster than the wall is thick "
                "per h / substeps, or pushed through by the passes): lower h or raise substeps";
     }
@@ -200,6 +214,19 @@ void Alarms::checkRest(const physics::World& world, const physics::Params& param
     }
 }
 
+std::string eventCapHint(const physics::Params& params) {
+    return formatted("the continuous method answers impacts one at a time, at most %.0f per solver step: a pile "
+                     "makes several per sphere each step, a sphere bouncing in place with ε = 0 infinitely many. "
+                     "Raise max_events or ε, or lower h",
+                     double(params.maxEvents));
+}
+
+void Alarms::checkEvents(const physics::StepStats& stats, const physics::Params& params, double time) {
+    for (std::uint64_t k = 0; k < stats.cappedSteps; ++k) {  // each solver step counts
+        fire(AlarmKind::EventCap, time, double(params.maxEvents), eventCapHint(params));
+    }
+}
+
 std::vector<AlarmLine> Alarms::lines(double now) const {
     std::vector<AlarmLine> lines;
     const auto lit = [&](AlarmKind kind) { return now - state(kind).lastTime <= kAlarmHoldSeconds; };
@@ -235,6 +262,13 @@ std::vector<AlarmLine> Alarms::lines(double now) const {
         std::snprintf(text, sizeof text, "MID-AIR: %zu spheres at rest off the floor (up to %.0f), held by v ← μ v on "
                       "spheres that touch only each other (slide 13)", heldNow_, s.worst);
         lines.push_back({AlarmKind::HeldInMidAir, text, s.hint, lit(AlarmKind::HeldInMidAir)});
+    }
+    if (const State& s = state(AlarmKind::EventCap); s.count > 0) {
+        lines.push_back({AlarmKind::EventCap,
+                         formatted("IMPACT CAP: %.0f steps reached %.0f impacts and were projected from there, "
+                                   "last at t = %.2f s",
+                                   double(s.count), s.worst, s.lastTime),
+                         s.hint, lit(AlarmKind::EventCap)});
     }
     return lines;
 }

@@ -8,7 +8,9 @@
 //   - spheres escaped: a centre left the box (crossed a wall within a step), with
 //     how many are outside and the step the first one left;
 //   - held in mid-air: spheres at rest that nothing below carries, stopped by slide
-//     13's v <- mu v on their own velocity (physics::spheresHeldInMidAir).
+//     13's v <- mu v on their own velocity (physics::spheresHeldInMidAir);
+//   - impact cap: a continuous step reached its most impacts (Params::maxEvents) and
+//     was projected from there.
 // The rules are pure functions over the world, its parameters and diagnostics;
 // Alarms keeps what the panel shows (when each fired last, how often, the worst).
 #include <array>
@@ -20,6 +22,7 @@
 
 #include "physics/diagnostics.h"
 #include "physics/params.h"
+#include "physics/step.h"
 #include "physics/world.h"
 
 namespace app {
@@ -92,7 +95,10 @@ std::string escapeHint(const physics::Params& params);
 // Why spheres rest in mid-air, and what lets them fall.
 std::string heldInMidAirHint(const physics::Params& params);
 
-enum class AlarmKind { NonFinite, EnergyCreated, Penetration, Escaped, HeldInMidAir, Count };
+// Why a continuous step met more impacts than its cap, and what to do.
+std::string eventCapHint(const physics::Params& params);
+
+enum class AlarmKind { NonFinite, EnergyCreated, Penetration, Escaped, HeldInMidAir, EventCap, Count };
 
 // One line of the panel.
 struct AlarmLine {
@@ -114,6 +120,8 @@ public:
     bool checkStep(const physics::World& world, const physics::Params& params, double before, double after);
     // On each new measurement (once per frame).
     void checkMeasurement(const physics::Diagnostics& diagnostics, const physics::Params& params, double time);
+    // After a step: whether a continuous step reached the cap on impacts (StepStats::cappedSteps).
+    void checkEvents(const physics::StepStats& stats, const physics::Params& params, double time);
     // Counts the spheres held in mid-air, at most every kHeldInMidAirPeriod of simulated time.
     void checkRest(const physics::World& world, const physics::Params& params);
 

@@ -7,6 +7,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "physics/collision_response.h"
+
 namespace app {
 namespace {
 
@@ -29,10 +31,11 @@ void predictPair(const glm::dvec3 v[2], const double m[2], const glm::dvec3& u, 
     const double s = glm::dot(v[1] - v[0], u);  // m/s, approaching when > 0
     const bool lecture = params.response == physics::ResponseModel::LectureAttenuation;
     if (isStatic) {
+        const bool relativeFriction = physics::frictionOnRelativeVelocity(params);
         const double jc = s > 0.0 ? mass * s : 0.0;  // kg m/s, perfectly inelastic
         out[0] = v[0] + (jc / m[0]) * u;
         out[1] = v[1] - (jc / m[1]) * u;
-        if (lecture) {
+        if (!relativeFriction) {
             out[0] *= params.mu;
             out[1] *= params.mu;
         } else {
@@ -78,6 +81,24 @@ std::string splitText(const char* name, const VelocitySplit& s, const char* n) {
     return format("%s⊥ = %.3f %s,   %s∥ = %s", name, clean(s.normal), n, name, vec(s.par).c_str());
 }
 
+// Why a method moves no sphere after the response.
+const char* noCorrectionNote(const physics::Params& p) {
+    switch (p.method) {
+        case physics::Method::VelocityBased: return "velocity based: no projection; stage C cancels what still approaches";
+        case physics::Method::Continuous: return "continuous: answered at the instant of contact, nothing to correct";
+        default: return "response only (slides 5-6): no position correction";
+    }
+}
+
+// Slide 7, go back in time: when within the step the continuous method met the contact.
+void instantLine(std::vector<Line>& lines, const ContactExplanation& e, const physics::Params& p) {
+    if (e.timeOfImpact < 0.0) return;
+    add(lines, Line::Kind::Heading, "Slide 7: back to the instant of collision");
+    add(lines, Line::Kind::Formula,
+        format("t* = %.6f s into the step of %.6f s; the velocities below are those at t*", e.timeOfImpact,
+               p.solverStep()));
+}
+
 void matchLine(std::vector<Line>& lines, const ContactExplanation& e) {
     if (e.mismatch <= 1e-9 * std::max(1.0, glm::length(e.velocityBefore[0]) + glm::length(e.velocityBefore[1]))) {
         add(lines, Line::Kind::Result, "the solver's result: the same");
@@ -91,6 +112,7 @@ void planeLines(const ContactExplanation& e, const physics::Params& p, int boxPl
     add(lines, Line::Kind::Heading,
         format("Sphere #%u and the %s, pass %d of %d", e.sphere, planeName(e.other, boxPlaneCount).c_str(), e.pass + 1,
                p.passes));
+    instantLine(lines, e, p);
     add(lines, Line::Kind::Heading, "Slide 3: detection, (p − a)·n ≤ r");
     add(lines, Line::Kind::Formula, "n = " + vec(e.normal) + "  (unit, into the free side)");
     add(lines, Line::Kind::Formula, format("d = r − (p − a)·n = %.4g m  (distance of penetration, slide 8)", e.depth));
@@ -116,12 +138,13 @@ void planeLines(const ContactExplanation& e, const physics::Params& p, int boxPl
     add(lines, Line::Kind::Formula, "after:   " + splitText("v", e.after[0], "n"));
     matchLine(lines, e);
     add(lines, Line::Kind::Heading, "Position correction");
-    if (e.correction == PositionCorrection::Projection) {
+    if (e.correction == PositionCorrection::Projection && e.reflected) {
+        add(lines, Line::Kind::Formula,
+            format("slide 7, reflection: p ← p + (1 + β) d n: the sphere moves %.4g m along n", e.shift[0]));
+    } else if (e.correction == PositionCorrection::Projection) {
         add(lines, Line::Kind::Formula, format("slide 8: p ← p + d n: the sphere moves %.4g m along n", e.shift[0]));
     } else {
-        add(lines, Line::Kind::Note, p.method == physics::Method::VelocityBased
-                                         ? "velocity based: no projection; stage C cancels what still approaches"
-                                         : "response only (slides 5-6): no position correction");
+        add(lines, Line::Kind::Note, noCorrectionNote(p));
     }
 }
 
@@ -129,6 +152,7 @@ void pairLines(const ContactExplanation& e, const physics::Params& p, std::vecto
     const bool lecture = p.response == physics::ResponseModel::LectureAttenuation;
     add(lines, Line::Kind::Heading,
         format("Sphere 1 = #%u and sphere 2 = #%d, pass %d of %d", e.sphere, e.other, e.pass + 1, p.passes));
+    instantLine(lines, e, p);
     add(lines, Line::Kind::Heading, "Slides 9 and 11: ‖p₁ − p₂‖ ≤ r₁ + r₂, u = (p₁ − p₂) / ‖p₁ − p₂‖");
     add(lines, Line::Kind::Formula, "u = " + vec(e.normal) + "  (from 2 to 1)");
     add(lines, Line::Kind::Formula, format("d = r₁ + r₂ − ‖p₁ − p₂‖ = %.4g m  (collision depth, slide 13)", e.depth));
@@ -155,7 +179,11 @@ void pairLines(const ContactExplanation& e, const physics::Params& p, std::vecto
         add(lines, Line::Kind::Formula,
             format("approach removed (perfectly inelastic): j/2 = (v₂ − v₁)·u / (1/m₁ + 1/m₂) = %.4g kg m/s",
                    e.normalSpeed > 0.0 ? 0.5 * e.impulse : 0.0));
-        if (!lecture) add(lines, Line::Kind::Note, "momentum-conserving: μ damps the relative tangential velocity");
+        if (physics::frictionOnRelativeVelocity(p)) {
+            add(lines, Line::Kind::Note,
+                lecture ? "continuous: μ damps the relative tangential velocity (momentum kept)"
+                        : "momentum-conserving: μ damps the relative tangential velocity");
+        }
     } else if (lecture) {
         add(lines, Line::Kind::Heading, format("Slide 12: with α = %.3g, β = %.3g", p.alpha, p.beta));
         add(lines, Line::Kind::Formula, "v₁ ← α v₁∥ + β (v₁⊥ + j/m₁ u),   v₂ ← α v₂∥ + β (v₂⊥ − j/m₂ u)");
@@ -168,8 +196,13 @@ void pairLines(const ContactExplanation& e, const physics::Params& p, std::vecto
     add(lines, Line::Kind::Formula, "after:   " + splitText("v₁", e.after[0], "u"));
     add(lines, Line::Kind::Formula, "         " + splitText("v₂", e.after[1], "u"));
     matchLine(lines, e);
-    add(lines, Line::Kind::Heading, "Slide 13, step 3: position correction");
-    if (e.correction == PositionCorrection::HalfHalf) {
+    add(lines, Line::Kind::Heading,
+        e.reflected ? "Slide 7, reflection: position correction by (1 + β) d" : "Slide 13, step 3: position correction");
+    if (e.reflected) {
+        add(lines, Line::Kind::Formula,
+            format("p₁ ← p₁ + (1 + β) d s₁ u = %.4g m,  p₂ ← p₂ − (1 + β) d s₂ u = %.4g m  (s: the split)", e.shift[0],
+                   e.shift[1]));
+    } else if (e.correction == PositionCorrection::HalfHalf) {
         add(lines, Line::Kind::Formula,
             format("p₁ ← p₁ + d/2 u,  p₂ ← p₂ − d/2 u: %.4g m each", e.shift[0]));
     } else if (e.correction == PositionCorrection::MassWeighted) {
@@ -177,9 +210,7 @@ void pairLines(const ContactExplanation& e, const physics::Params& p, std::vecto
             format("p₁ ← p₁ + d m₂/(m₁ + m₂) u = %.4g m,  p₂ ← p₂ − d m₁/(m₁ + m₂) u = %.4g m", e.shift[0],
                    e.shift[1]));
     } else {
-        add(lines, Line::Kind::Note, p.method == physics::Method::VelocityBased
-                                         ? "velocity based: no projection; stage C cancels what still approaches"
-                                         : "response only (slides 5-6): no position correction");
+        add(lines, Line::Kind::Note, noCorrectionNote(p));
     }
 }
 
@@ -203,6 +234,10 @@ ContactExplanation explainContact(const physics::ContactEvent& event, const phys
     e.depth = event.depth;
     e.epsilon = params.epsilon;
     e.recordedBounce = event.bounce;
+    e.timeOfImpact = event.timeOfImpact;
+    e.reflected = params.method == physics::Method::Reflection;
+    const bool corrects = params.method == physics::Method::PositionBased || e.reflected;
+    const double moved = e.reflected ? (1.0 + params.beta) * event.depth : event.depth;  // m
     for (int k = 0; k < 2; ++k) {
         e.mass[k] = event.massOf[k];
         e.velocityBefore[k] = event.velocityBefore[k];
@@ -214,23 +249,22 @@ ContactExplanation explainContact(const physics::ContactEvent& event, const phys
         e.normalSpeed = e.before[0].normal;
         e.staticContact = std::abs(e.normalSpeed) <= params.epsilon;
         e.predicted[0] = predictPlane(event.velocityBefore[0], event.normal, e.staticContact, params);
-        e.correction = params.method == physics::Method::PositionBased ? PositionCorrection::Projection
-                                                                       : PositionCorrection::None;
-        e.shift[0] = e.correction == PositionCorrection::None ? 0.0 : e.depth;
+        e.correction = corrects ? PositionCorrection::Projection : PositionCorrection::None;
+        e.shift[0] = corrects ? moved : 0.0;
     } else {
         e.normalSpeed = e.before[1].normal - e.before[0].normal;
         e.staticContact = std::abs(e.normalSpeed) <= params.epsilon;
         e.impulse = 2.0 * reducedMass(e.mass[0], e.mass[1]) * e.normalSpeed;
         predictPair(event.velocityBefore, e.mass, event.normal, e.staticContact, params, e.predicted);
-        if (params.method != physics::Method::PositionBased) {
+        if (!corrects) {
             e.correction = PositionCorrection::None;
         } else if (params.split == physics::PositionSplit::HalfHalf) {
             e.correction = PositionCorrection::HalfHalf;
-            e.shift[0] = e.shift[1] = 0.5 * e.depth;
+            e.shift[0] = e.shift[1] = 0.5 * moved;
         } else {
             e.correction = PositionCorrection::MassWeighted;
-            e.shift[0] = e.depth * e.mass[1] / (e.mass[0] + e.mass[1]);
-            e.shift[1] = e.depth * e.mass[0] / (e.mass[0] + e.mass[1]);
+            e.shift[0] = moved * e.mass[1] / (e.mass[0] + e.mass[1]);
+            e.shift[1] = moved * e.mass[0] / (e.mass[0] + e.mass[1]);
         }
     }
     for (int k = 0; k < (e.plane ? 1 : 2); ++k) {

@@ -29,7 +29,7 @@ enum class PositionCorrection {
     Projection,    // a plane: p <- p + d n (slide 8)
     HalfHalf,      // two spheres: p1 <- p1 + d/2 u, p2 <- p2 - d/2 u (slide 13)
     MassWeighted,  // two spheres: the lighter one moves more
-    None,          // velocity based or response only: no projection
+    None,          // velocity based, response only or continuous: no projection
 };
 
 struct ContactExplanation {
@@ -53,7 +53,9 @@ struct ContactExplanation {
     glm::dvec3 predicted[2]{};       // m/s, the formula with the current parameters
     double mismatch = 0.0;           // m/s, largest |predicted - recorded|
     PositionCorrection correction = PositionCorrection::None;
+    bool reflected = false;     // slide 7's reflection: the correction moves (1 + beta) d, not d
     double shift[2]{0.0, 0.0};  // m: sphere 1 moves shift[0] along normal, sphere 2 shift[1] against it
+    double timeOfImpact = -1.0;  // s into the solver step: continuous method; -1 otherwise
 };
 
 ContactExplanation explainContact(const physics::ContactEvent& event, const physics::Params& params);
