@@ -196,23 +196,30 @@ class KineticRatioMeter : public detail::Meter {
 // --- event meters: one sample per apex or impact of each watched sphere ---
 
 // Each apex (the centre's highest z in a flight, m), or its bounce ratio
-// (apex - r) / (previous apex - r), the first counted from the height at t = 0.
+// (apex - r) / (previous apex - r), the first counted from the height at t = 0, or the
+// same ratio of the flight's height from E~ (the parabola's apex over the floor at
+// z = 0: E~ / (m |g|) - r, as the panel's "beta^2 measured"), not sampled by the steps.
 class ApexMeter : public detail::Meter {
   public:
-    ApexMeter(const Claim& claim, const Scene& variant, bool ratio)
-        : claim_(claim), stretch_(stretchOf(claim, variant)), ratio_(ratio) {}
+    enum class Sample { Apex, Ratio, EnergyRatio };
+    ApexMeter(const Claim& claim, const Scene& variant, Sample sample)
+        : claim_(claim), stretch_(stretchOf(claim, variant)), params_(variant.params), sample_(sample) {}
     void observe(const World& world) override {
         if (last_.empty()) {
-            for (std::size_t i = 0; i < world.size(); ++i) last_.push_back({world.position[i].z, world.velocity[i].z, world.position[i].z});
+            for (std::size_t i = 0; i < world.size(); ++i) {
+                last_.push_back({world.position[i].z, world.velocity[i].z, apexOf(world, i, world.position[i].z)});
+            }
         }
         for (std::size_t i : watched(claim_, world)) {
             if (i >= last_.size()) continue;
             Track& t = last_[i];
             const double z = world.position[i].z, vz = world.velocity[i].z;
             if (t.vz > 0.0 && vz <= 0.0) {
-                const double apex = std::max(z, t.z);
+                const double apex = apexOf(world, i, std::max(z, t.z));
                 const double r = world.radius[i];
-                if (stretch_.contains(world.time)) samples_.push_back(ratio_ ? (apex - r) / (t.apex - r) : apex);
+                if (stretch_.contains(world.time)) {
+                    samples_.push_back(sample_ == Sample::Apex ? apex : (apex - r) / (t.apex - r));
+                }
                 t.apex = apex;
             }
             t.z = z;
@@ -224,9 +231,17 @@ class ApexMeter : public detail::Meter {
     struct Track {
         double z, vz, apex;  // m, m/s, m
     };
+    // m: the apex of sphere i's flight, `highest` its highest centre the steps saw.
+    double apexOf(const World& world, std::size_t i, double highest) const {
+        if (sample_ != Sample::EnergyRatio) return highest;
+        const glm::dvec3 v = world.velocity[i] + (0.5 * params_.solverStep()) * params_.gravity;  // m/s
+        return -glm::dot(params_.gravity, world.position[i]) / glm::length(params_.gravity) +
+               0.5 * glm::dot(v, v) / glm::length(params_.gravity);
+    }
     const Claim& claim_;
     Stretch stretch_;
-    bool ratio_;
+    const physics::Params& params_;
+    Sample sample_;
     std::vector<Track> last_;
 };
 
@@ -392,8 +407,11 @@ const std::vector<MeterEntry>& meterTable() {
          planeReadout([](const physics::Plane& p) { return p.thickness; })},
         {{"gap", "m", "a sphere's gap to planes[plane]: the distance less r (< 0: inside it)"}, planeMeter(1.0)},
         {{"displacement", "m", "how far a sphere has moved since the stretch's start"}, make<DisplacementMeter>()},
-        {{"apex", "m", "each apex of a sphere: its centre's highest z in a flight"}, make<ApexMeter>(false)},
-        {{"bounce_ratio", "", "each apex's (apex - r) / (the previous one - r), the first from the drop"}, make<ApexMeter>(true)},
+        {{"apex", "m", "each apex of a sphere: its centre's highest z in a flight"}, make<ApexMeter>(ApexMeter::Sample::Apex)},
+        {{"bounce_ratio", "", "each apex's (apex - r) / (the previous one - r), the first from the drop"},
+         make<ApexMeter>(ApexMeter::Sample::Ratio)},
+        {{"energy_bounce_ratio", "", "the same from E~: each flight's E~ / (m |g|) - r over the previous one's"},
+         make<ApexMeter>(ApexMeter::Sample::EnergyRatio)},
         {{"z_step", "m", "how far a sphere's centre moved up in one time step"}, make<StepMeter>(true)},
         {{"step_length", "m", "how far a sphere's centre moved in one time step"}, make<StepMeter>(false)},
         {{"impact_depth", "r", "each impact's deepest penetration into a plane / r (impacts deeper than 1 % of r)"},

@@ -116,7 +116,7 @@ TEST_P(LabSheet, EveryNumberOfTheTextIsInAClaim) {
     const std::string& text = scene.description;
     const auto spans = quotedSpans(text, scene, ClaimSource::Description);
     std::vector<std::pair<std::size_t, std::size_t>> references;
-    const std::regex reference("slides? [0-9]+(–[0-9]+)?|option [0-9]+");
+    const std::regex reference("[Ss]lides? [0-9]+(–[0-9]+)?|option [0-9]+");
     for (auto it = std::sregex_iterator(text.begin(), text.end(), reference); it != std::sregex_iterator(); ++it) {
         references.emplace_back(it->position(), it->position() + it->length());
     }
