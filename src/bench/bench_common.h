@@ -150,4 +150,23 @@ inline bool parseCounts(const std::string& text, std::vector<int>& out) {
     return !out.empty();
 }
 
+// A program's name and usage text, for the two below.
+struct Usage {
+    const char* program;
+    const char* text;
+};
+
+// Prints "program: why" and the usage on stderr; exits with code 2.
+[[noreturn]] inline void usageError(const Usage& usage, const std::string& why) {
+    std::fprintf(stderr, "%s: %s\n%s", usage.program, why.c_str(), usage.text);
+    std::exit(2);
+}
+
+// With --help or -h, prints the usage and exits with code 0.
+inline void helpIfAsked(const Usage& usage, const std::string& option) {
+    if (option != "--help" && option != "-h") return;
+    std::fputs(usage.text, stdout);
+    std::exit(0);
+}
+
 }  // namespace bench

@@ -76,7 +76,7 @@ struct Options {
     double stepSeconds = 0.0;     // s per step of every engine; 0: the preset's h / substeps
 };
 
-const char* const kUsage =
+const bench::Usage kUsage{"spheres_bench_peers",
     "usage: spheres_bench_peers [options]\n"
     "Times one step of our solver, Bullet and ODE on the same scenes; prints markdown tables.\n"
     "  --quick            N = 1k,4k, 3 repetitions, settle 1 s (well under a minute)\n"
@@ -100,7 +100,7 @@ const char* const kUsage =
     "  --bullet-box-walls Bullet's walls as slabs (btBoxShape) instead of static planes\n"
     "  --h S              seconds per step of every engine, e.g. 1/60 (default: the\n"
     "                     preset's h / substeps, 1/240: the steps the demo takes)\n"
-    "An engine whose step takes more than 5 s is dropped at that N and above.\n";
+    "An engine whose step takes more than 5 s is dropped at that N and above.\n"};
 
 std::vector<std::string> splitList(const std::string& text) {
     std::vector<std::string> parts;
@@ -113,10 +113,7 @@ std::vector<std::string> splitList(const std::string& text) {
     return parts;
 }
 
-[[noreturn]] void usageError(const std::string& why) {
-    std::fprintf(stderr, "spheres_bench_peers: %s\n%s", why.c_str(), kUsage);
-    std::exit(2);
-}
+[[noreturn]] void usageError(const std::string& why) { bench::usageError(kUsage, why); }
 
 double parsePositive(const std::string& option, const char* text) {
     char* end = nullptr;
@@ -160,10 +157,7 @@ Options parseOptions(int argc, char** argv) {
     Options o;
     for (int k = 1; k < argc; ++k) {
         const std::string option = argv[k];
-        if (option == "--help" || option == "-h") {
-            std::fputs(kUsage, stdout);
-            std::exit(0);
-        }
+        bench::helpIfAsked(kUsage, option);
         if (option == "--quick") {
             o.counts = {1000, 4000};
             o.repetitions = 3;

@@ -29,7 +29,7 @@ namespace {
 constexpr int kWidth = 1280;  // px
 constexpr int kHeight = 720;  // px
 
-const char* const kUsage =
+const bench::Usage kUsage{"spheres_bench_render",
     "usage: spheres_bench_render [options]\n"
     "Times drawing N spheres headless at 1280x720 (draw + glFinish); prints a markdown table.\n"
     "  --backend B    auto (OSMesa, else EGL), osmesa or egl (default auto)\n"
@@ -37,12 +37,9 @@ const char* const kUsage =
     "  --samples LIST MSAA samples per pixel, 0 for none (default 0,4: the window's 4)\n"
     "  --frames F     timed frames per row, after 2 untimed ones (default 7)\n"
     "  --quick        --n 1k,10k,100k --frames 3\n"
-    "  --save DIR     also write each drawn frame as DIR/render_<N>_<samples>.png\n";
+    "  --save DIR     also write each drawn frame as DIR/render_<N>_<samples>.png\n"};
 
-[[noreturn]] void usageError(const std::string& why) {
-    std::fprintf(stderr, "spheres_bench_render: %s\n%s", why.c_str(), kUsage);
-    std::exit(2);
-}
+[[noreturn]] void usageError(const std::string& why) { bench::usageError(kUsage, why); }
 
 struct Options {
     platform::HeadlessBackend backend = platform::HeadlessBackend::Auto;
@@ -56,10 +53,7 @@ Options parseOptions(int argc, char** argv) {
     Options o;
     for (int k = 1; k < argc; ++k) {
         const std::string option = argv[k];
-        if (option == "--help" || option == "-h") {
-            std::fputs(kUsage, stdout);
-            std::exit(0);
-        }
+        bench::helpIfAsked(kUsage, option);
         if (option == "--quick") {
             o.counts = {1000, 10000, 100000};
             o.frames = 3;

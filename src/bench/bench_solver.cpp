@@ -55,7 +55,7 @@ struct Options {
 // The most seconds a busy process of --busy lives, whatever happens to this one.
 constexpr unsigned kBusyLifetime = 900;
 
-const char* const kUsage =
+const bench::Usage kUsage{"spheres_bench_solver",
     "usage: spheres_bench_solver [options]\n"
     "Times our solver on the pile, N = 1k to 1M, on 1 and 2 threads; prints a markdown table.\n"
     "  --quick        N = 1k,4k,16k,64k,100k, 2 repetitions\n"
@@ -71,12 +71,9 @@ const char* const kUsage =
     "                 the same result (chains of pairs that share a sphere)\n"
     "  --busy B       instead: threads 1, 2 and auto on N = 16k,64k, alone and beside B busy\n"
     "                 processes (started and stopped here), 2 s per run; prints the ratios\n"
-    "                 (--n, --threads with 'auto' for automatic, --reps apply)\n";
+    "                 (--n, --threads with 'auto' for automatic, --reps apply)\n"};
 
-[[noreturn]] void usageError(const std::string& why) {
-    std::fprintf(stderr, "spheres_bench_solver: %s\n%s", why.c_str(), kUsage);
-    std::exit(2);
-}
+[[noreturn]] void usageError(const std::string& why) { bench::usageError(kUsage, why); }
 
 std::vector<int> countsFrom(const std::string& option, const char* text) {
     std::vector<int> counts;
@@ -100,10 +97,7 @@ Options parseOptions(int argc, char** argv) {
     Options o;
     for (int k = 1; k < argc; ++k) {
         const std::string option = argv[k];
-        if (option == "--help" || option == "-h") {
-            std::fputs(kUsage, stdout);
-            std::exit(0);
-        }
+        bench::helpIfAsked(kUsage, option);
         if (option == "--quick") {
             o.counts = {1000, 4000, 16000, 64000, 100000};
             o.repetitions = 2;
