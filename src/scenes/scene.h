@@ -105,6 +105,9 @@ struct Scene {
     std::vector<Generator> generators;
     std::vector<Emitter> emitters;
     std::vector<Claim> claims;  // what the texts say, as the lab-sheet test checks it (claims.h)
+    // Side by side on opening: the overrides of the other views, as --compare takes them
+    // ("method=position,reflection,continuous"; overrides.h). Empty: one view.
+    std::vector<std::string> compare;
     // A saved state (a file with "time") resumes its clock; its contacts may
     // overlap a little, so buildWorld only refuses gross overlaps for it.
     bool snapshot = false;

@@ -10,6 +10,7 @@
 
 #include "scenes/generate.h"
 #include "scenes/json_locate.h"
+#include "scenes/overrides.h"
 #include "scenes/parameters.h"
 #include "scenes/suggest.h"
 
@@ -22,7 +23,7 @@ using Keys = std::vector<std::string_view>;
 
 const Keys kSceneKeys = {"title", "slide",   "description", "box",      "planes", "parameters",
                          "seed",  "spheres", "generate",    "emitters", "time",   "steps",
-                         "claims"};
+                         "claims", "compare"};
 const Keys kBoxKeys = {"size", "tilt"};
 const Keys kPlaneKeys = {"point", "normal", "thickness"};
 const Keys kSphereKeys = {"p", "v", "r", "m"};
@@ -100,6 +101,7 @@ class SceneReader {
         readParameters(root, scene);
         scene.claims = readList(root, "claims", &SceneReader::readClaim);
         checkClaims(scene);
+        readCompare(root, scene);
         return scene;
     }
 
@@ -372,6 +374,15 @@ class SceneReader {
             out.push_back(whole(v[i], detail::childPointer(pointer, i), 0, kMaxGeneratedCount));
         }
         return out;
+    }
+
+    // "compare": the other views' overrides, checked as --compare checks them.
+    void readCompare(const Json& root, Scene& scene) const {
+        if (!find(root, "compare")) return;
+        scene.compare = {string(root, "", "compare")};
+        if (const std::string error = checkCompare(scene, scene.compare); !error.empty()) {
+            fail("/compare", "compare: " + error);
+        }
     }
 
     // Each claim's settings, meter and bounds make sense for this scene.

@@ -99,6 +99,73 @@ TEST(SideBySide, OverridesAreSplitCheckedAndLabelled) {
     EXPECT_EQ(session.runCount(), 1);
 }
 
+// Slide 7's three answers from one state: a name with several values makes a view per
+// value; the one A already shows is left out.
+TEST(SideBySide, ANameWithSeveralValuesMakesAViewEach) {
+    const scenes::Scene scene = preset("02_bounce_projection");
+    app::Variants variants;
+    ASSERT_EQ(app::overrideVariants(scene, {"method=position,reflection,continuous"}, variants), "");
+    EXPECT_EQ(variants, (app::Variants{{"method=reflection"}, {"method=continuous"}}));
+    ASSERT_EQ(app::overrideVariants(scene, {"method=velocity,reflection, passes=1"}, variants), "");
+    EXPECT_EQ(variants, (app::Variants{{"method=velocity", "passes=1"}, {"method=reflection", "passes=1"}}));
+    EXPECT_EQ(app::overrideVariants(scene, {"method=velocity"}, variants), "");
+    EXPECT_EQ(variants, (app::Variants{{"method=velocity"}}));
+    EXPECT_EQ(app::overrideVariants(scene, {"method=position"}, variants), "");  // nothing differs: kept
+    EXPECT_EQ(variants, (app::Variants{{"method=position"}}));
+    EXPECT_EQ(app::overrideVariants(scene, {"reflection"}, variants), "'reflection' has no name: write name=value,value");
+    EXPECT_EQ(app::overrideVariants(scene, {"method=velocity,reflection,beta=0.5,0.6"}, variants),
+              "only one name may take several values (method, beta)");
+    EXPECT_NE(app::overrideVariants(scene, {"beta=0.1,0.2,0.3,0.4,0.5"}, variants).find("at most 4"), std::string::npos);
+    EXPECT_NE(app::overrideVariants(scene, {"method=velocity,fast"}, variants).find("method=fast"), std::string::npos);
+
+    app::Simulation simulation(scene);
+    app::Session session(simulation);
+    ASSERT_EQ(session.startComparison({"method=position,reflection,continuous"}), "");
+    ASSERT_EQ(session.runCount(), 3);
+    EXPECT_EQ(session.run(1).params().method, physics::Method::Reflection);
+    EXPECT_EQ(session.run(2).params().method, physics::Method::Continuous);
+    EXPECT_EQ(session.comparison()->primaryLabel(simulation.scene()), "method = position");
+    EXPECT_EQ(session.comparison()->label(1), "method = continuous");
+    for (int frame = 0; frame < 60; ++frame) session.advance(kFrame);
+    for (int k = 1; k < 3; ++k) {
+        EXPECT_EQ(session.run(k).world().stepCount, session.run(0).world().stepCount);
+        EXPECT_NE(physics::stateHash(session.run(k).world()), physics::stateHash(session.run(0).world()));
+    }
+    session.stopComparison();
+    EXPECT_EQ(session.runCount(), 1);
+}
+
+// A scene's "compare" opens side by side; the next scene without one closes it, but
+// not a side by side the user started.
+TEST(SideBySide, ASceneThatAsksForViewsOpensThemAndTheNextSceneClosesThem) {
+    app::Simulation simulation(preset("14_three_answers"));
+    app::Session session(simulation);
+    session.sceneChanged();
+    ASSERT_EQ(session.runCount(), 3);
+    EXPECT_EQ(session.comparison()->label(1), "method = continuous");
+    simulation.setScene(preset("02_bounce_projection"));
+    session.sceneChanged();
+    EXPECT_EQ(session.runCount(), 1);
+    ASSERT_EQ(session.startComparison({"method=velocity"}), "");
+    simulation.setScene(preset("03_head_on"));
+    session.sceneChanged();
+    EXPECT_EQ(session.runCount(), 2);
+}
+
+// Three views in a row on a wide viewport, four in two rows, A at the top left.
+TEST(SideBySide, ViewportsMakeAGridThatKeepsEachViewLargest) {
+    glm::ivec4 views[app::kMostViews];
+    app::splitViewport({0, 0, 1920, 600}, 4, 3, views);
+    EXPECT_EQ(views[0], glm::ivec4(0, 0, 637, 600));
+    EXPECT_EQ(views[2], glm::ivec4(1282, 0, 637, 600));
+    app::splitViewport({400, 60, 880, 740}, 4, 4, views);
+    EXPECT_EQ(views[0], glm::ivec4(400, 432, 438, 368));  // top left
+    EXPECT_EQ(views[1], glm::ivec4(842, 432, 438, 368));
+    EXPECT_EQ(views[3], glm::ivec4(842, 60, 438, 368));   // bottom right
+    app::splitViewport({400, 60, 880, 740}, 4, 3, views);  // narrow: two rows, the last cell empty
+    EXPECT_EQ(views[2], glm::ivec4(400, 60, 438, 368));
+}
+
 TEST(SideBySide, ViewportsSplitInTwoHalvesWithAGap) {
     glm::ivec4 left, right;
     app::splitViewport({400, 60, 880, 740}, 4, left, right);
@@ -173,6 +240,28 @@ TEST_F(CaptureCompare, WritesFramesWithTwoLabelledViews) {
         for (int x = 330; x < 480; ++x) light += capture_test::luminance(image.pixel(x, y)) > 200.0f;
     }
     EXPECT_GT(light, 50);
+}
+
+TEST_F(CaptureCompare, WritesThreeViewsForSlideSevensAnswers) {
+    const std::string out = capture_test::freshFolder("compare_three");
+    app::CaptureOptions options = capture_test::smallCapture("02_bounce_projection", out, platform::HeadlessBackend::Auto);
+    options.size = "960x300";
+    options.at = "0,40";
+    options.compare = {"method=position,reflection,continuous"};
+    ASSERT_EQ(app::runCapture(options), 0);
+    const nlohmann::json manifest = capture_test::readManifest(out);
+    EXPECT_EQ(manifest["compare"]["labels"],
+              nlohmann::json::array({"method = position", "method = reflection", "method = continuous"}));
+    ASSERT_EQ(manifest["compare"]["viewports"].size(), 3u);
+    EXPECT_EQ(manifest["compare"]["viewports"][2][0], 642);  // three in a row, 317 px wide
+    const auto& last = manifest["frames"][1];
+    ASSERT_EQ(last["compare_hashes"].size(), 2u);
+    EXPECT_NE(last["compare_hashes"][0], last["compare_hashes"][1]);
+    const render::Image image = capture_test::readFrame(out, 40);
+    for (int k = 0; k < 3; ++k) {
+        const int x = manifest["compare"]["viewports"][k][0];
+        EXPECT_GT(countSaturated(image, x, x + 316), 100) << "view " << k;
+    }
 }
 
 TEST_F(CaptureCompare, RefusesAnUnknownOverrideBeforeWritingAnything) {

@@ -144,7 +144,7 @@ TEST_P(LabSheet, EverySentenceOfTheTextHasAClaim) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Presets, LabSheet, testing::ValuesIn(scenes::listPresets()),
-                         [](const testing::TestParamInfo<std::string>& info) { return info.param; });
+                         [](const testing::TestParamInfo<std::string>& param) { return param.param; });
 
 // Every clause ("; ") of the README teaching table's third column quotes a claim of a
 // preset of its row (the claim with "in": "README").

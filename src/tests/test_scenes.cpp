@@ -296,7 +296,8 @@ TEST(Presets, OnePerLecturePhenomenonInLectureOrder) {
         "01_bounce_response_only", "02_bounce_projection", "03_head_on", "04_head_on_unequal",
         "05_billiard",             "06_gas",               "07_inclined_plane",
         "08_newtons_cradle",       "09_column",            "10_pyramid",
-        "11_pile",                 "12_rain",              "13_tunnelling"};
+        "11_pile",                 "12_rain",              "13_tunnelling",
+        "14_three_answers"};
     EXPECT_EQ(scenes::listPresets(), expected);
     EXPECT_TRUE(std::filesystem::exists(scenes::presetPath("01_bounce_response_only")));
     EXPECT_EQ(scenes::presetPath("03_head_on.json"), scenes::presetPath("03_head_on"));
@@ -462,6 +463,14 @@ TEST(SceneFile, RefusesAClaimThatCannotBeChecked) {
     expectError(head + "{\"says\": \"x\", \"measure\": \"apex\", \"sphere\": 1.5, \"max\": 1}]}", "3:48",
                 {"whole number"});
     EXPECT_EQ(errorOf(head + "{\"says\": \"x\", \"measure\": \"apex\", \"sphere\": [0], \"max\": 1}]}"), "");
+}
+
+TEST(SceneFile, RefusesACompareItCannotShow) {
+    expectError("{\n  \"compare\": \"method=fast\"}", "2:14", {"compare: method=fast", "is not a choice"});
+    expectError("{\n  \"compare\": \"reflection\"}", "2:14", {"compare: 'reflection' has no name"});
+    expectError("{\n  \"compare\": [\"method=velocity\"]}", "2:14", {"compare", "must be a string"});
+    expectError("{\n  \"compare\": \"beta=0.1,0.2,0.3,0.4,0.5\"}", "2:14", {"at most 4"});
+    EXPECT_EQ(errorOf("{\n  \"compare\": \"method=velocity,continuous\"}"), "");
 }
 
 }  // namespace

@@ -85,6 +85,22 @@ TEST(Window, ShowsThePanelAndTheSpheresInTheBox) {
     EXPECT_LT(fraction(image, kSceneX0, 0, kSceneX1, 60, saturated), 0.01);
 }
 
+// Slide 7's preset opens side by side in three views (its "compare" key), each with
+// its ball: in two rows right of the panel (A, B above, C below left), the grid that
+// keeps each view largest at 1280x800.
+TEST(Window, ThePresetOfThreeAnswersOpensInThreeViews) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run not found: install the xvfb package to run the window tests";
+    const std::string path = screenshot("window_three_answers", "--scene 14_three_answers --frames 30");
+    ASSERT_FALSE(path.empty()) << "spheres did not run or wrote no screenshot under Xvfb";
+    const render::Image image = load(path);
+    const int views[3][2] = {{430, 150}, {855, 150}, {430, 520}};  // x, y of each view's middle band
+    for (int k = 0; k < 3; ++k) {
+        const int x = views[k][0], y = views[k][1];
+        EXPECT_GT(fraction(image, x, y, x + 415, y + 210, saturated), 0.001) << "view " << char('A' + k);
+    }
+    EXPECT_LT(fraction(image, 860, 380, 1270, 720, saturated), 0.0001);  // no fourth view
+}
+
 TEST(Window, FramesChangeWhileRunningAndNotWhilePaused) {
     if (!haveXvfb()) GTEST_SKIP() << "xvfb-run not found: install the xvfb package to run the window tests";
     const std::string early = screenshot("window_run_early", "--scene 11_pile --frames 5");

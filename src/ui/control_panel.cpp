@@ -265,6 +265,15 @@ void readoutsBody(const Readouts& r, const PanelState& state, PanelActions& acti
     tooltip("A bounce is a contact whose relative normal speed is above epsilon; a static contact is at or below it (slide 13).");
     ImGui::Text("bounces since restart %llu", static_cast<unsigned long long>(r.bouncesSinceRestart));
     tooltip("Contacts answered as a bounce since the last restart, counted in every pass and substep.");
+    if (r.continuous) {
+        ImGui::Text("impacts last step %llu, TOI iterations %llu", static_cast<unsigned long long>(r.stats.events),
+                    static_cast<unsigned long long>(r.stats.toiIterations));
+        tooltip("Continuous method: impacts answered at their instant in the last time step (bounces and static "
+                "contacts, all substeps), and the bisection's halvings spent finding those instants (0 with the "
+                "closed form): slide 7's \"computationally heavy\", counted.");
+        ImGui::Text("steps at the impact cap since restart %llu", static_cast<unsigned long long>(r.cappedSinceRestart));
+        tooltip("Solver steps that reached the most impacts per step and were projected from there.");
+    }
     ImGui::Text("kinetic %.5g J", d.kinetic);
     ImGui::Text("potential %.5g J", d.potential);
     ImGui::Text("total %.6g J", d.total);

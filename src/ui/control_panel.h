@@ -76,6 +76,8 @@ struct Readouts {
     const std::vector<double>* plotTimes = nullptr;  // s, the samples' times, oldest first
 
     std::uint64_t bouncesSinceRestart = 0;  // contacts answered as a bounce, all passes
+    bool continuous = false;                // the continuous method: its impacts are shown
+    std::uint64_t cappedSinceRestart = 0;   // continuous solver steps that reached the impact cap
     // Invariant alarms (app/alarms.h), most serious first.
     struct Alarm {
         std::string text;

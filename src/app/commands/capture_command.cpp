@@ -436,7 +436,7 @@ class Capturer {
     render::Renderer renderer_;
     render::FrameSnapshot snapshot_;
     std::unique_ptr<UiOverlay> ui_;
-    std::unique_ptr<CaptureComparison> compare_;  // --compare: the right half
+    std::unique_ptr<CaptureComparison> compare_;  // --compare: views B, C, D
     glm::ivec4 view_{0};  // x, y, width, height in px (GL's lower-left origin)
     render::Camera camera_;
     Json frames_ = Json::array();
@@ -469,8 +469,10 @@ Capturer::Capturer(const CaptureOptions& options, const CapturePlan& plan,
         panel = ui_->panelPixels();
     }
     view_ = viewportRightOf(plan.size, panel);
-    if (!options.compare.empty()) {
-        compare_ = std::make_unique<CaptureComparison>(simulation_, options.compare, view_, plan.size, options.withUi);
+    // --compare, or else the scene's own "compare".
+    const std::vector<std::string>& compare = options.compare.empty() ? simulation_.scene().compare : options.compare;
+    if (!compare.empty()) {
+        compare_ = std::make_unique<CaptureComparison>(simulation_, compare, view_, plan.size, options.withUi);
         view_ = compare_->left();
         if (ui_) {  // the views' labels carry both runs' readouts: fold the window that would hide view B
             ImGui::SetWindowCollapsed("Readouts", true);
@@ -518,10 +520,15 @@ void Capturer::writeFrame(int index) {
                            {"steps", world.stepCount},
                            {"hash", hashText(physics::stateHash(world))},
                            {"file", name}});
-    if (compare_) {
+    if (compare_) {  // view B's, and every other view's in order
         const physics::World& other = compare_->comparison().simulation().world();
         frames_.back()["compare_hash"] = hashText(physics::stateHash(other));
         frames_.back()["compare_steps"] = other.stepCount;
+        Json hashes = Json::array();
+        for (int k = 0; k < compare_->comparison().count(); ++k) {
+            hashes.push_back(hashText(physics::stateHash(compare_->comparison().simulation(k).world())));
+        }
+        frames_.back()["compare_hashes"] = hashes;
     }
 }
 
@@ -562,11 +569,22 @@ Json Capturer::manifest() const {
                 {"frames", frames_}};
     if (compare_) {
         const Comparison& comparison = compare_->comparison();
+        const auto viewport = [&](int k) {
+            const glm::ivec4& v = compare_->view(k);
+            return Json{v.x, v.y, v.z, v.w};
+        };
+        Json labels = Json::array({comparison.primaryLabel(scene)}), viewports = Json::array({viewport(0)});
+        for (int k = 0; k < comparison.count(); ++k) {
+            labels.push_back(comparison.label(k));
+            viewports.push_back(viewport(k + 1));
+        }
+        // View B's keys, and every view's (A first) in the lists.
         json["compare"] = Json{{"settings", comparison.overrides()},
                                {"label_a", comparison.primaryLabel(scene)},
                                {"label_b", comparison.label()},
-                               {"viewport_b", {compare_->right().x, compare_->right().y, compare_->right().z,
-                                               compare_->right().w}}};
+                               {"viewport_b", viewport(1)},
+                               {"labels", labels},
+                               {"viewports", viewports}};
     }
     return json;
 }
@@ -609,7 +627,7 @@ int runCapture(const CaptureOptions& options) {
     const CapturePlan plan = planCapture(options);
     scenes::Scene scene = loadSceneWithSettings(options.scene, options.settings);
     if (!options.compare.empty()) {
-        if (const std::string error = checkOverrides(scene, splitOverrides(options.compare)); !error.empty())
+        if (const std::string error = checkCompare(scene, options.compare); !error.empty())
             throw UsageError("--compare " + error);
     }
     auto context = openContext(plan.backend, plan.size);

@@ -1,8 +1,8 @@
 #pragma once
-// `spheres capture --compare name=value[,name=value]`: the second run side by side.
-// The capture's viewport is split in two: left the scene as given, right the same
-// with the overrides, both advanced by the same frames and drawn with the same
-// camera, each labelled with what differs and its readouts.
+// `spheres capture --compare name=value[,value][,name=value]`: the other runs side by
+// side. The capture's viewport is split (splitViewport): A the scene as given, B, C, D
+// the same with each view's overrides, all advanced by the same frames and drawn with
+// the same camera, each labelled with what differs and its readouts.
 #include <memory>
 #include <string>
 #include <vector>
@@ -27,11 +27,11 @@ public:
                       glm::ivec2 size, bool labelsAtBottom);
 
     const glm::ivec4& left() const { return views_[0]; }   // the primary's viewport
-    const glm::ivec4& right() const { return views_[1]; }  // the comparison's
+    const glm::ivec4& view(int k) const { return views_[k]; }  // run k's (0: the primary's)
 
     // One frame of real time, after the primary's.
     void advance(const Simulation& primary, double seconds);
-    // Draws the comparison into right() and both labels into the bound framebuffer.
+    // Draws the other runs into their views and every label into the bound framebuffer.
     void draw(render::Renderer& renderer, const render::Camera& camera, const ui::PanelState& view,
               const Simulation& primary);
 
@@ -39,7 +39,7 @@ public:
 
 private:
     Comparison comparison_;
-    glm::ivec4 views_[2];
+    glm::ivec4 views_[kMostViews];
     glm::ivec2 size_;
     bool labelsAtBottom_;
     render::FrameSnapshot snapshot_;

@@ -9,86 +9,60 @@
 #include "scenes/parameters.h"
 
 namespace app {
-namespace {
 
-std::string_view trim(std::string_view text) {
-    while (!text.empty() && (text.front() == ' ' || text.front() == '\t')) text.remove_prefix(1);
-    while (!text.empty() && (text.back() == ' ' || text.back() == '\t')) text.remove_suffix(1);
-    return text;
-}
-
-std::string nameOf(std::string_view setting) { return std::string(trim(setting.substr(0, setting.find('=')))); }
-
-}  // namespace
-
-std::vector<std::string> splitOverrides(const std::vector<std::string>& lists) {
-    std::vector<std::string> settings;
-    for (const std::string& list : lists) {
-        std::size_t start = 0;
-        while (start <= list.size()) {
-            const std::size_t comma = std::min(list.find(',', start), list.size());
-            const std::string_view part = trim(std::string_view(list).substr(start, comma - start));
-            if (!part.empty()) settings.emplace_back(part);
-            start = comma + 1;
-        }
+Comparison::Comparison(const scenes::Scene& primary, Variants variants) {
+    if (variants.empty() || int(variants.size()) > kMostViews - 1) {
+        throw UsageError("--compare: 1 to " + std::to_string(kMostViews - 1) + " views besides A");
     }
-    return settings;
-}
-
-std::string checkOverrides(const scenes::Scene& scene, const std::vector<std::string>& overrides) {
-    if (overrides.empty()) return "give at least one name=value to compare, e.g. method=velocity";
-    scenes::Scene copy = scene;
-    for (const std::string& setting : overrides) {
-        if (const std::string error = scenes::applySetting(copy, setting); !error.empty()) {
-            return setting + ": " + error;
-        }
+    for (std::vector<std::string>& overrides : variants) {
+        scenes::Scene scene = withOverrides(primary, overrides);
+        runs_.push_back({std::move(overrides), std::make_unique<Simulation>(std::move(scene))});
     }
-    return "";
 }
 
-std::string overrideLabel(const scenes::Scene& scene, const std::vector<std::string>& overrides) {
-    std::string label;
-    std::vector<std::string> seen;
-    for (const std::string& setting : overrides) {
-        const std::string name = nameOf(setting);
-        const scenes::Parameter* parameter = scenes::findParameter(name);
-        if (!parameter || std::find(seen.begin(), seen.end(), name) != seen.end()) continue;
-        seen.push_back(name);
-        if (!label.empty()) label += ", ";
-        label += name + " = " + scenes::formatValue(*parameter, scene);
-    }
-    return label;
-}
-
-Comparison::Comparison(const scenes::Scene& primary, std::vector<std::string> overrides)
-    : overrides_(std::move(overrides)), simulation_(withOverrides(primary)) {}
-
-scenes::Scene Comparison::withOverrides(const scenes::Scene& primary) const {
-    if (const std::string error = checkOverrides(primary, overrides_); !error.empty()) {
+scenes::Scene Comparison::withOverrides(const scenes::Scene& primary, const std::vector<std::string>& overrides) {
+    if (const std::string error = checkOverrides(primary, overrides); !error.empty()) {
         throw UsageError("--compare " + error);
     }
     scenes::Scene scene = primary;
-    for (const std::string& setting : overrides_) scenes::applySetting(scene, setting);
+    for (const std::string& setting : overrides) scenes::applySetting(scene, setting);
     return scene;
 }
 
 void Comparison::restartFrom(const scenes::Scene& primary) {
-    const double timeScale = simulation_.timeScale;
-    const bool paused = simulation_.paused;
-    simulation_.setScene(withOverrides(primary));
-    simulation_.timeScale = timeScale;
-    simulation_.paused = paused;
+    for (Run& run : runs_) {
+        const double timeScale = run.simulation->timeScale;
+        const bool paused = run.simulation->paused;
+        run.simulation->setScene(withOverrides(primary, run.overrides));
+        run.simulation->timeScale = timeScale;
+        run.simulation->paused = paused;
+    }
 }
 
 void Comparison::follow(const Simulation& primary) {
-    scenes::Scene& scene = simulation_.editableScene();
-    scene.params = primary.scene().params;
-    for (const std::string& setting : overrides_) {
-        const scenes::Parameter* parameter = scenes::findParameter(nameOf(setting));
-        if (parameter && parameter->applies == scenes::Applies::Live) scenes::applySetting(scene, setting);
+    for (Run& run : runs_) {
+        scenes::Scene& scene = run.simulation->editableScene();
+        scene.params = primary.scene().params;
+        for (const std::string& setting : run.overrides) {
+            const scenes::Parameter* parameter = scenes::findParameter(scenes::settingName(setting));
+            if (parameter && parameter->applies == scenes::Applies::Live) scenes::applySetting(scene, setting);
+        }
+        run.simulation->timeScale = primary.timeScale;
+        run.simulation->paused = primary.paused;
     }
-    simulation_.timeScale = primary.timeScale;
-    simulation_.paused = primary.paused;
+}
+
+std::string Comparison::primaryLabel(const scenes::Scene& primary) const {
+    std::vector<std::string> every;
+    for (const Run& run : runs_) every.insert(every.end(), run.overrides.begin(), run.overrides.end());
+    return overrideLabel(primary, every);
+}
+
+bool Comparison::changesNothing(const scenes::Scene& primary) const {
+    for (const Run& run : runs_) {
+        if (overrideLabel(primary, run.overrides) != overrideLabel(run.simulation->scene(), run.overrides)) return false;
+    }
+    return true;
 }
 
 void splitViewport(glm::ivec4 view, int gap, glm::ivec4& left, glm::ivec4& right) {
@@ -96,6 +70,26 @@ void splitViewport(glm::ivec4 view, int gap, glm::ivec4& left, glm::ivec4& right
     const int rightWidth = std::max(view.z - gap - leftWidth, 1);
     left = {view.x, view.y, leftWidth, view.w};
     right = {view.x + view.z - rightWidth, view.y, rightWidth, view.w};
+}
+
+void splitViewport(glm::ivec4 view, int gap, int count, glm::ivec4 out[kMostViews]) {
+    count = std::clamp(count, 1, kMostViews);
+    int bestColumns = 1;
+    double bestSide = -1.0;  // px: the smaller side of a view
+    for (int columns = 1; columns <= count; ++columns) {
+        const int rows = (count + columns - 1) / columns;
+        const double side = std::min(double(view.z - (columns - 1) * gap) / columns, double(view.w - (rows - 1) * gap) / rows);
+        if (side > bestSide) bestSide = side, bestColumns = columns;
+    }
+    const int rows = (count + bestColumns - 1) / bestColumns;
+    const int width = std::max((view.z - (bestColumns - 1) * gap) / bestColumns, 1);
+    const int height = std::max((view.w - (rows - 1) * gap) / rows, 1);
+    for (int k = 0; k < count; ++k) {
+        const int column = k % bestColumns, row = k / bestColumns;  // row 0 at the top
+        out[k] = {view.x + column * (width + gap), view.y + view.w - (row + 1) * height - row * gap, width, height};
+    }
+    // Two side by side keep the halves splitViewport(left, right) gives (the right one to the edge).
+    if (count == 2 && bestColumns == 2) splitViewport(view, gap, out[0], out[1]);
 }
 
 std::vector<std::string> viewReadoutLines(const ViewReadout& view) {

@@ -1,8 +1,9 @@
 #pragma once
-// Side by side: a second Simulation of the same scene with one or more parameters
-// overridden ("method=velocity"), built from the same initial state and advanced
-// with the same real seconds, so that two views step together and differ only by
-// what the overrides say. The window and `spheres capture --compare` both use it.
+// Side by side: one to three more Simulations of the same scene, each with one or more
+// parameters overridden ("method=velocity"), built from the same initial state and
+// advanced with the same real seconds, so that the views step together and differ
+// only by what the overrides say. The window and `spheres capture --compare` use it.
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -10,50 +11,64 @@
 
 #include "app/run/simulation.h"
 #include "physics/diagnostics.h"
+#include "scenes/overrides.h"
 
 namespace app {
 
-// "name=value[,name=value]" lists (each string may hold several, separated by
-// commas) as single "name=value" settings, trimmed, empty ones dropped.
-std::vector<std::string> splitOverrides(const std::vector<std::string>& lists);
-
-// "" when every override applies to a copy of `scene`, else one line naming the bad one.
-std::string checkOverrides(const scenes::Scene& scene, const std::vector<std::string>& overrides);
-
-// What a view shows about its parameters: "method = velocity, order = reversed",
-// the overridden names with their values in `scene`.
-std::string overrideLabel(const scenes::Scene& scene, const std::vector<std::string>& overrides);
+using scenes::checkCompare;
+using scenes::checkOverrides;
+using scenes::kMostViews;
+using scenes::overrideLabel;
+using scenes::overrideVariants;
+using scenes::splitOverrides;
+using scenes::Variants;
 
 class Comparison {
 public:
-    // The second run: `primary`'s scene with `overrides` applied (checked first with
-    // checkOverrides; throws UsageError when one is refused), from its initial state.
-    Comparison(const scenes::Scene& primary, std::vector<std::string> overrides);
+    // The other runs: `primary`'s scene with each variant's overrides applied (checked
+    // first with checkOverrides; throws UsageError when one is refused), from its
+    // initial state. One variant per view, at most kMostViews - 1.
+    Comparison(const scenes::Scene& primary, Variants variants);
+    Comparison(const scenes::Scene& primary, std::vector<std::string> overrides)
+        : Comparison(primary, Variants{std::move(overrides)}) {}
 
     // Rebuilds from the primary's scene (after a restart, a new preset or file).
     void restartFrom(const scenes::Scene& primary);
     // Before each frame: the primary's live parameters (what the panel edits), its
-    // time scale and pause, then the overrides again.
+    // time scale and pause, then each run's overrides again.
     void follow(const Simulation& primary);
 
-    Simulation& simulation() { return simulation_; }
-    const Simulation& simulation() const { return simulation_; }
-    const std::vector<std::string>& overrides() const { return overrides_; }
+    int count() const { return int(runs_.size()); }  // the other runs: B, C, D
+    Simulation& simulation(int k = 0) { return *runs_[std::size_t(k)].simulation; }
+    const Simulation& simulation(int k = 0) const { return *runs_[std::size_t(k)].simulation; }
+    const std::vector<std::string>& overrides(int k = 0) const { return runs_[std::size_t(k)].overrides; }
 
-    // "method = position" (the primary's values) and "method = velocity" (this run's).
-    std::string primaryLabel(const scenes::Scene& primary) const { return overrideLabel(primary, overrides_); }
-    std::string label() const { return overrideLabel(simulation_.scene(), overrides_); }
+    // "method = position" (the primary's values of every overridden name) and
+    // "method = velocity" (run k's).
+    std::string primaryLabel(const scenes::Scene& primary) const;
+    std::string label(int k = 0) const { return overrideLabel(simulation(k).scene(), overrides(k)); }
+    // Whether every run shows what the primary shows: the overrides change nothing.
+    bool changesNothing(const scenes::Scene& primary) const;
 
 private:
-    scenes::Scene withOverrides(const scenes::Scene& primary) const;
+    struct Run {
+        std::vector<std::string> overrides;
+        std::unique_ptr<Simulation> simulation;
+    };
+    static scenes::Scene withOverrides(const scenes::Scene& primary, const std::vector<std::string>& overrides);
 
-    std::vector<std::string> overrides_;
-    Simulation simulation_;
+    std::vector<Run> runs_;
 };
 
 // The two halves of a viewport (x, y, width, height; GL's lower-left origin), with a
 // gap of `gap` pixels between them: left is the primary run, right the comparison.
 void splitViewport(glm::ivec4 view, int gap, glm::ivec4& left, glm::ivec4& right);
+
+// `count` views (1 to kMostViews) in a grid of the viewport, `gap` px apart, in the
+// order A, B, ... row by row from the top left: as many columns as give each view
+// the largest smaller side (two side by side, three in a row on a wide viewport, four
+// in two rows).
+void splitViewport(glm::ivec4 view, int gap, int count, glm::ivec4 out[kMostViews]);
 
 // One view's title and numbers, for its label.
 struct ViewReadout {

@@ -20,7 +20,18 @@ constexpr float kOutlineWidth = 8.0f;       // px
 
 }  // namespace
 
-Session::Session(Simulation& primary) : primary_(primary) { keep(); }
+Session::Session(Simulation& primary) : primary_(primary) {
+    resizeRuns();
+    keep();
+}
+
+void Session::resizeRuns() {
+    // Two runs keep 10 s each as one did; more share twice one run's memory.
+    const std::size_t runs = std::size_t(runCount());
+    const std::size_t bytes = runs <= 2 ? RewindBuffer::kDefaultBytes : 2 * RewindBuffer::kDefaultBytes / runs;
+    rewind_.assign(runs, RewindBuffer(RewindBuffer::kDefaultFrames, bytes));
+    stale_.assign(runs, 0);
+}
 
 template <class Edit>
 void Session::forEachWorld(Edit edit) {
@@ -28,21 +39,24 @@ void Session::forEachWorld(Edit edit) {
 }
 
 std::string Session::startComparison(const std::vector<std::string>& lists) {
-    const std::vector<std::string> overrides = splitOverrides(lists);
-    if (const std::string error = checkOverrides(primary_.scene(), overrides); !error.empty()) return error;
+    Variants variants;
+    if (const std::string error = overrideVariants(primary_.scene(), lists, variants); !error.empty()) return error;
     try {
-        comparison_ = std::make_unique<Comparison>(primary_.scene(), overrides);
+        comparison_ = std::make_unique<Comparison>(primary_.scene(), std::move(variants));
     } catch (const std::exception& e) {
         return e.what();
     }
+    comparisonFromScene_ = false;
+    resizeRuns();
     restart();
     return "";
 }
 
 void Session::stopComparison() {
     comparison_.reset();
-    rewind_[1].clear();
-    stale_[1] = false;
+    comparisonFromScene_ = false;
+    rewind_.resize(1);
+    stale_.resize(1);
 }
 
 void Session::prepareToStep() {
@@ -66,13 +80,15 @@ int Session::advance(double realSeconds) {
         const double seconds = std::min(piece, left);
         left = slice ? left - seconds : 0.0;
         const int ran = primary_.advance(seconds);
-        if (comparison_) comparison_->simulation().wallBudget = primary_.wallBudget;
-        otherSteps += comparison_ ? comparison_->simulation().advance(seconds) : 0;
+        for (int k = 1; k < runCount(); ++k) {
+            run(k).wallBudget = primary_.wallBudget;
+            otherSteps += run(k).advance(seconds);
+        }
         steps += ran;
         if (ran > 0) noteContacts();
     }
     if (steps > 0 || otherSteps > 0) {
-        stale_[0] = stale_[1] = false;
+        std::fill(stale_.begin(), stale_.end(), 0);
         keep();
     }
     return steps;
@@ -80,9 +96,8 @@ int Session::advance(double realSeconds) {
 
 void Session::singleStep() {
     prepareToStep();
-    primary_.singleStep();
-    if (comparison_) comparison_->simulation().singleStep();
-    stale_[0] = stale_[1] = false;
+    for (int k = 0; k < runCount(); ++k) run(k).singleStep();
+    std::fill(stale_.begin(), stale_.end(), 0);
     noteContacts();
     keep();
 }
@@ -94,6 +109,12 @@ void Session::restart() {
 
 void Session::sceneChanged() {
     selected_ = -1;
+    const std::vector<std::string>& asked = primary_.scene().compare;
+    if (!asked.empty() && startComparison(asked).empty()) {
+        comparisonFromScene_ = true;
+        return;
+    }
+    if (comparisonFromScene_) stopComparison();
     startAgain();
 }
 
@@ -137,9 +158,7 @@ void Session::startAgain() {
             stopComparison();
         }
     }
-    rewind_[0].clear();
-    rewind_[1].clear();
-    stale_[0] = stale_[1] = false;
+    resizeRuns();
     drag_.release();
     if (selected_ >= 0 && static_cast<std::size_t>(selected_) >= primary_.world().size()) selected_ = -1;
     keep();
@@ -159,12 +178,12 @@ void Session::edited() {
 void Session::touched() {
     for (int k = 0; k < runCount(); ++k) {
         run(k).markEnergyInjected();  // not the solver's doing: no energy alarm
-        stale_[k] = true;
+        stale_[std::size_t(k)] = 1;
     }
 }
 
 void Session::keep() {
-    for (int k = 0; k < runCount(); ++k) rewind_[k].push(run(k).world(), selected_);
+    for (int k = 0; k < runCount(); ++k) rewind_[std::size_t(k)].push(run(k).world(), selected_);
 }
 
 std::string Session::editSelected(const SphereFields& fields) {
@@ -210,12 +229,12 @@ glm::dvec3 Session::endDrag() {
 std::string Session::shoot(const render::Ray& aim, double speed) {
     double radius = 0.0, mass = 0.0;
     typicalSphere(primary_.world(), &radius, &mass);
-    Shot shots[2];
+    std::vector<Shot> shots(static_cast<std::size_t>(runCount()));
     for (int k = 0; k < runCount(); ++k) {
-        const std::string refusal = planShot(run(k).world(), aim, speed, radius, mass, &shots[k]);
-        if (!refusal.empty()) return runCount() > 1 ? std::string(k == 0 ? "A: " : "B: ") + refusal : refusal;
+        const std::string refusal = planShot(run(k).world(), aim, speed, radius, mass, &shots[std::size_t(k)]);
+        if (!refusal.empty()) return runCount() > 1 ? std::string(1, char('A' + k)) + ": " + refusal : refusal;
     }
-    for (int k = 0; k < runCount(); ++k) addShot(run(k).editableWorld(), shots[k]);
+    for (int k = 0; k < runCount(); ++k) addShot(run(k).editableWorld(), shots[std::size_t(k)]);
     select(static_cast<int>(primary_.world().size() - 1));
     edited();
     return "";
@@ -225,7 +244,7 @@ void Session::scrubTo(std::size_t index) {
     if (timeline().empty()) return;
     for (int k = 0; k < runCount(); ++k) {
         run(k).paused = true;
-        rewind_[k].restore(index, run(k).editableWorld());
+        rewind_[std::size_t(k)].restore(index, run(k).editableWorld());
     }
     touched();
     if (selected_ >= 0 && static_cast<std::size_t>(selected_) >= primary_.world().size()) selected_ = -1;
@@ -246,7 +265,7 @@ void Session::scrubTo(std::size_t index) {
 
 physics::Diagnostics Session::diagnostics(int k) const {
     const Simulation& simulation = run(k);
-    return stale_[k] ? physics::measure(simulation.world(), simulation.params()) : simulation.diagnostics();
+    return stale_[std::size_t(k)] ? physics::measure(simulation.world(), simulation.params()) : simulation.diagnostics();
 }
 
 void Session::appendSelection(int k, const render::Camera& camera, render::FrameSnapshot& snapshot) const {

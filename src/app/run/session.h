@@ -1,8 +1,8 @@
 #pragma once
-// What the window steps and edits: the primary Simulation, optionally a second one
+// What the window steps and edits: the primary Simulation, optionally up to three more
 // side by side (Comparison), a rewind buffer for each, and the selected sphere.
-// Every edit (drag, throw, shot, inspector) goes to both runs, so that the two
-// views stay comparable; every frame that changes a world is kept for stepping back.
+// Every edit (drag, throw, shot, inspector) goes to every run, so that the views
+// stay comparable; every frame that changes a world is kept for stepping back.
 // No window, no ImGui: the tests drive it as the window does.
 #include <cstddef>
 #include <memory>
@@ -22,13 +22,14 @@ class Session {
 public:
     explicit Session(Simulation& primary);
 
-    // ---- the runs: 1, or 2 side by side ----
-    int runCount() const { return comparison_ ? 2 : 1; }
-    Simulation& run(int k) { return k == 1 && comparison_ ? comparison_->simulation() : primary_; }
-    const Simulation& run(int k) const { return k == 1 && comparison_ ? comparison_->simulation() : primary_; }
+    // ---- the runs: 1, or 2 to kMostViews side by side ----
+    int runCount() const { return comparison_ ? 1 + comparison_->count() : 1; }
+    Simulation& run(int k) { return k > 0 && comparison_ ? comparison_->simulation(k - 1) : primary_; }
+    const Simulation& run(int k) const { return k > 0 && comparison_ ? comparison_->simulation(k - 1) : primary_; }
     const Comparison* comparison() const { return comparison_.get(); }
-    // Side by side with the overrides ("name=value[,name=value]" each): both restart
-    // from the scene's initial state. Returns "" or why not (the runs are then unchanged).
+    // Side by side with the overrides ("name=value[,name=value]" each; a name with
+    // several values, a view each: overrideVariants): every run restarts from the
+    // scene's initial state. Returns "" or why not (the runs are then unchanged).
     std::string startComparison(const std::vector<std::string>& lists);
     void stopComparison();
 
@@ -38,7 +39,9 @@ public:
     // Both runs from the scene; the timeline starts again. Side by side stops when its
     // overrides no longer apply to the scene (takeNote() says so).
     void restart();
-    // After the primary's setScene (which restarted it): the same, no selection.
+    // After the primary's setScene (which restarted it): the same, no selection. A scene
+    // with a "compare" key opens side by side with it; side by side that the previous
+    // scene asked for ends with it.
     void sceneChanged();
     // What happened that the user did not ask for (side by side stopped), once; or "".
     std::string takeNote() { return std::move(note_); }
@@ -107,14 +110,16 @@ private:
 
     Simulation& primary_;
     std::unique_ptr<Comparison> comparison_;
-    RewindBuffer rewind_[2];
+    bool comparisonFromScene_ = false;  // started by the scene's "compare" key
+    std::vector<RewindBuffer> rewind_;  // one per run
     int selected_ = -1;
     SphereDrag drag_;
     Contacts latest_;
     bool catchEveryStep_ = false;
     std::string note_;
     int dragView_ = 0;
-    bool stale_[2] = {false, false};  // edited since the last step: Simulation::diagnostics() is old
+    std::vector<char> stale_;  // per run: edited since the last step, Simulation::diagnostics() is old
+    void resizeRuns();         // one rewind buffer and stale flag per run
 };
 
 }  // namespace app

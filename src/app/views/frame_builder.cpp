@@ -95,6 +95,8 @@ ui::Readouts makeReadouts(const Simulation& simulation, const ui::FrameTimes& ti
     }
     r.plotTimes = &history.times();
     r.bouncesSinceRestart = simulation.bouncesSinceRestart();
+    r.continuous = simulation.params().method == physics::Method::Continuous;
+    r.cappedSinceRestart = simulation.alarms().count(AlarmKind::EventCap);
     for (const AlarmLine& line : simulation.alarms().lines(simulation.world().time)) {
         r.alarms.push_back({line.text, line.hint, line.lit});
     }

@@ -10,14 +10,15 @@
 namespace app {
 
 std::vector<ViewLabel> comparisonLabels(const Simulation& primary, const Comparison& comparison,
-                                        const glm::ivec4 views[2], glm::ivec2 framebufferSize,
+                                        const glm::ivec4 views[kMostViews], glm::ivec2 framebufferSize,
                                         glm::vec2 pixelsPerUnit, glm::vec2 offset, bool atBottom) {
-    const Simulation* runs[2] = {&primary, &comparison.simulation()};
-    const std::string titles[2] = {"A   " + comparison.primaryLabel(primary.scene()), "B   " + comparison.label()};
     std::vector<ViewLabel> labels;
-    for (int k = 0; k < 2; ++k) {
-        const physics::World& world = runs[k]->world();
-        ViewReadout readout{titles[k], physics::measure(world, runs[k]->params()), world.time, world.stepCount};
+    for (int k = 0; k <= comparison.count(); ++k) {
+        const Simulation& run = k == 0 ? primary : comparison.simulation(k - 1);
+        const std::string title = std::string(1, char('A' + k)) + "   " +
+                                  (k == 0 ? comparison.primaryLabel(primary.scene()) : comparison.label(k - 1));
+        const physics::World& world = run.world();
+        ViewReadout readout{title, physics::measure(world, run.params()), world.time, world.stepCount};
         const glm::ivec4& view = views[k];
         const float top = float(framebufferSize.y - (view.y + view.w));  // px from the framebuffer's top
         const glm::vec2 corner(float(view.x), atBottom ? top + float(view.w) : top);

@@ -15,15 +15,17 @@ struct ImGuiContext;
 
 namespace app {
 
-constexpr glm::u8vec4 kViewColors[2] = {{120, 200, 255, 255}, {255, 190, 90, 255}};  // A, B titles
+// The titles' colours of views A, B, C, D.
+constexpr glm::u8vec4 kViewColors[kMostViews] = {
+    {120, 200, 255, 255}, {255, 190, 90, 255}, {150, 235, 140, 255}, {235, 150, 235, 255}};
 
-// Labels "A  method = position" and "B  method = velocity" with each run's readouts,
+// Labels "A  method = position", "B  method = velocity", ... with each run's readouts,
 // at the top left of `views` (GL viewports in framebuffer pixels, lower-left origin)
 // moved by `offset` (ImGui units), or at their bottom left moved by `offset` when
 // `atBottom`, for a framebuffer of `framebufferSize` pixels that holds
 // `pixelsPerUnit` pixels per ImGui unit.
 std::vector<ViewLabel> comparisonLabels(const Simulation& primary, const Comparison& comparison,
-                                        const glm::ivec4 views[2], glm::ivec2 framebufferSize,
+                                        const glm::ivec4 views[kMostViews], glm::ivec2 framebufferSize,
                                         glm::vec2 pixelsPerUnit, glm::vec2 offset, bool atBottom = false);
 
 // Draws labels with an ImGui context of its own, at UI scale 1 (capture mode).

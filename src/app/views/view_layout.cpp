@@ -40,9 +40,8 @@ ViewLayout layoutViews(glm::ivec2 framebuffer, glm::vec2 pixelsPerUnit, float pa
     const int bar = std::clamp(static_cast<int>(barUnits * pixelsPerUnit.y + 0.5f), 0, std::max(framebuffer.y - 1, 0));
     scene.y += bar;
     scene.w = std::max(scene.w - bar, 1);
-    layout.count = count == 2 ? 2 : 1;
-    layout.views[0] = scene;
-    if (layout.count == 2) splitViewport(scene, gap, layout.views[0], layout.views[1]);
+    layout.count = std::clamp(count, 1, kMostViews);
+    splitViewport(scene, gap, layout.count, layout.views);
     return layout;
 }
 

@@ -74,12 +74,29 @@ void InteractionInput::shoot(const ViewLayout& views, const render::Camera& came
     }
 }
 
+namespace {
+
+std::string joined(const std::vector<std::string>& lists) {
+    std::string text;
+    for (const std::string& list : lists) text += (text.empty() ? "" : ",") + list;
+    return text;
+}
+
+}  // namespace
+
 std::string InteractionInput::startComparison(const std::vector<std::string>& lists) {
-    tools_.compareText.clear();
-    for (const std::string& list : lists) tools_.compareText += (tools_.compareText.empty() ? "" : ",") + list;
+    tools_.compareText = joined(lists);
     const std::string error = session_.startComparison(lists);
     foldReadouts_ = error.empty();
     return error;
+}
+
+void InteractionInput::sceneChanged() {
+    session_.sceneChanged();
+    const std::vector<std::string>& asked = session_.run(0).scene().compare;
+    if (asked.empty() || !session_.comparison()) return;
+    tools_.compareText = joined(asked);
+    foldReadouts_ = true;
 }
 
 bool InteractionInput::toggleCompare(double now) {
@@ -98,12 +115,15 @@ bool InteractionInput::applyCompare(double now) {
     }
     const Comparison& comparison = *session_.comparison();
     const std::string primary = comparison.primaryLabel(session_.run(0).scene());
-    if (primary == comparison.label()) {
-        say(now, "side by side: %s in both views: the overrides change nothing, so the two views are the same",
-            primary.c_str());
+    if (comparison.changesNothing(session_.run(0).scene())) {
+        const bool two = comparison.count() == 1;
+        say(now, "side by side: %s in %s: the overrides change nothing, so the %s are the same", primary.c_str(),
+            two ? "both views" : "every view", two ? "two views" : "views");
     } else {
-        say(now, "side by side: %s against %s, both restarted from the scene's initial state", primary.c_str(),
-            comparison.label().c_str());
+        std::string others;
+        for (int k = 0; k < comparison.count(); ++k) others += (k == 0 ? "" : " and ") + comparison.label(k);
+        say(now, "side by side: %s against %s, all restarted from the scene's initial state", primary.c_str(),
+            others.c_str());
     }
     foldReadouts_ = true;
     return true;

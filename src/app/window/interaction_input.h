@@ -44,6 +44,9 @@ public:
 
     // "name=value,..." given on the command line: side by side from the start.
     std::string startComparison(const std::vector<std::string>& lists);
+    // After the primary's scene changed: Session::sceneChanged, and the bar shows the
+    // overrides of the side by side the new scene opens with, if any.
+    void sceneChanged();
 
     // The message centred above the timeline bar, for a few seconds from `now`.
     void say(double now, const char* format, ...) __attribute__((format(printf, 3, 4)));

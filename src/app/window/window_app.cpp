@@ -69,7 +69,7 @@ private:
     WindowAppOptions options_;
     render::Renderer renderer_;
     render::Camera camera_;
-    render::FrameSnapshot snapshots_[2];
+    render::FrameSnapshot snapshots_[kMostViews];  // one per view
     ui::ImGuiGlRenderer imguiRenderer_;
     ui::PanelState panel_;
     InteractionInput input_;
@@ -94,8 +94,10 @@ WindowApp::WindowApp(std::unique_ptr<platform::Window> window, scenes::Scene sce
     for (std::size_t k = 0; k < presets_.size(); ++k) {
         if (scenes::presetPath(presets_[k]) == panel_.scenePath) panel_.presetIndex = static_cast<int>(k);
     }
-    if (!options.compare.empty()) {
-        if (const std::string error = input_.startComparison(options.compare); !error.empty()) {
+    // --compare, or else the scene's own "compare" (checked by the loader).
+    const std::vector<std::string>& compare = options.compare.empty() ? simulation_.scene().compare : options.compare;
+    if (!compare.empty()) {
+        if (const std::string error = input_.startComparison(compare); !error.empty()) {
             throw UsageError("--compare " + error);
         }
     }
@@ -218,7 +220,7 @@ void WindowApp::loadFile(const std::string& path) {
         panel_.scrollToTop = true;
         panel_.refusal.clear();
         panel_.pendingName.clear();  // a slider held while the scene changed edits nothing
-        session_.sceneChanged();
+        input_.sceneChanged();
         notify(ui::PanelState::FileButton::Scene, "loaded " + path, false);
         resetCamera();
     } catch (const std::exception& e) {
@@ -386,7 +388,7 @@ int runWindowApp(const WindowAppOptions& options) {
     scenes::Scene scene = loadSceneWithSettings(options.scene, options.settings);
     checkWritable("--screenshot", options.screenshot);
     if (!options.compare.empty()) {
-        if (const std::string error = checkOverrides(scene, splitOverrides(options.compare)); !error.empty()) {
+        if (const std::string error = checkCompare(scene, options.compare); !error.empty()) {
             throw UsageError("--compare " + error);
         }
     }

@@ -1,0 +1,113 @@
+#include "scenes/overrides.h"
+
+#include <algorithm>
+#include <string_view>
+
+#include "scenes/parameters.h"
+
+namespace scenes {
+namespace {
+
+std::string_view trim(std::string_view text) {
+    while (!text.empty() && (text.front() == ' ' || text.front() == '\t')) text.remove_prefix(1);
+    while (!text.empty() && (text.back() == ' ' || text.back() == '\t')) text.remove_suffix(1);
+    return text;
+}
+
+}  // namespace
+
+std::vector<std::string> splitOverrides(const std::vector<std::string>& lists) {
+    std::vector<std::string> settings;
+    for (const std::string& list : lists) {
+        std::size_t start = 0;
+        while (start <= list.size()) {
+            const std::size_t comma = std::min(list.find(',', start), list.size());
+            const std::string_view part = trim(std::string_view(list).substr(start, comma - start));
+            if (!part.empty()) settings.emplace_back(part);
+            start = comma + 1;
+        }
+    }
+    return settings;
+}
+
+std::string checkOverrides(const Scene& scene, const std::vector<std::string>& overrides) {
+    if (overrides.empty()) return "give at least one name=value to compare, e.g. method=velocity";
+    Scene copy = scene;
+    for (const std::string& setting : overrides) {
+        if (const std::string error = applySetting(copy, setting); !error.empty()) {
+            return setting + ": " + error;
+        }
+    }
+    return "";
+}
+
+std::string overrideLabel(const Scene& scene, const std::vector<std::string>& overrides) {
+    std::string label;
+    std::vector<std::string> seen;
+    for (const std::string& setting : overrides) {
+        const std::string name = settingName(setting);
+        const Parameter* parameter = findParameter(name);
+        if (!parameter || std::find(seen.begin(), seen.end(), name) != seen.end()) continue;
+        seen.push_back(name);
+        if (!label.empty()) label += ", ";
+        label += name + " = " + formatValue(*parameter, scene);
+    }
+    return label;
+}
+
+namespace {
+
+bool hasName(std::string_view setting) { return setting.find('=') != std::string_view::npos; }
+
+}  // namespace
+
+std::string overrideVariants(const Scene& scene, const std::vector<std::string>& lists, Variants& variants) {
+    // The settings, with each value without a name joined to the name before it.
+    std::vector<std::string> common;
+    std::string last;     // the name of the last setting with a name
+    std::string several;  // the name that takes several values
+    std::vector<std::string> values;
+    for (const std::string& part : splitOverrides(lists)) {
+        if (hasName(part)) {
+            common.push_back(part);
+            last = settingName(part);
+            continue;
+        }
+        if (last.empty()) return "'" + part + "' has no name: write name=value,value";
+        if (!several.empty() && last != several) return "only one name may take several values (" + several + ", " + last + ")";
+        if (several.empty()) {
+            several = last;
+            values.push_back(common.back().substr(common.back().find('=') + 1));
+            common.pop_back();
+        }
+        values.push_back(part);
+    }
+    if (values.empty()) values.push_back("");  // one view: the common settings alone
+    if (int(values.size()) > kMostViews) {
+        return "at most " + std::to_string(kMostViews) + " values of " + several + " (one view each)";
+    }
+    Variants all;
+    for (const std::string& value : values) {
+        std::vector<std::string> variant = common;
+        if (!several.empty()) variant.insert(variant.begin(), several + "=" + std::string(trim(value)));
+        if (const std::string error = checkOverrides(scene, variant); !error.empty()) return error;
+        all.push_back(std::move(variant));
+    }
+    // Views that show what A shows are left out, unless none differs.
+    Variants differing;
+    for (const std::vector<std::string>& variant : all) {
+        Scene copy = scene;
+        for (const std::string& setting : variant) applySetting(copy, setting);
+        if (overrideLabel(copy, variant) != overrideLabel(scene, variant)) differing.push_back(variant);
+    }
+    if (!differing.empty()) all = std::move(differing);
+    if (int(all.size()) > kMostViews - 1) {
+        return "at most " + std::to_string(kMostViews) + " views: A and " + std::to_string(kMostViews - 1) + " others";
+    }
+    variants = std::move(all);
+    return "";
+}
+
+std::string settingName(std::string_view setting) { return std::string(trim(setting.substr(0, setting.find('=')))); }
+
+}  // namespace scenes

@@ -1,0 +1,44 @@
+#pragma once
+// Overrides of a scene's parameters, "name=value[,name=value]", as side by side takes
+// them (the window's bar, --compare, a scene's "compare" key): split, checked,
+// labelled, and spread over views when one name takes several values.
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "scenes/scene.h"
+
+namespace scenes {
+
+// The most views side by side: the scene as given (A) and up to three others.
+constexpr int kMostViews = 4;
+
+// "name=value[,name=value]" lists (each string may hold several, separated by
+// commas) as single "name=value" settings, trimmed, empty ones dropped.
+std::vector<std::string> splitOverrides(const std::vector<std::string>& lists);
+
+// The overrides of each view but A. A value after a comma without a name is another
+// value of the name before it, and each of that name's values is a view of its own:
+// "method=reflection,continuous,passes=1" gives {method=reflection, passes=1} and
+// {method=continuous, passes=1}. One name only may take several values. A view whose
+// overrides change nothing in `scene` is left out when another view does change
+// something (A shows it already). Returns "" or why not; `variants` is then filled.
+using Variants = std::vector<std::vector<std::string>>;
+std::string overrideVariants(const Scene& scene, const std::vector<std::string>& lists, Variants& variants);
+// "" when overrideVariants takes the lists, else why not.
+inline std::string checkCompare(const Scene& scene, const std::vector<std::string>& lists) {
+    Variants variants;
+    return overrideVariants(scene, lists, variants);
+}
+
+// "" when every override applies to a copy of `scene`, else one line naming the bad one.
+std::string checkOverrides(const Scene& scene, const std::vector<std::string>& overrides);
+
+// What a view shows about its parameters: "method = velocity, order = reversed",
+// the overridden names with their values in `scene`.
+std::string overrideLabel(const Scene& scene, const std::vector<std::string>& overrides);
+
+// The name of a "name=value" setting, trimmed.
+std::string settingName(std::string_view setting);
+
+}  // namespace scenes
