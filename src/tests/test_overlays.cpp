@@ -401,3 +401,38 @@ TEST(OverlayCapture, UnknownOverlayIsRefused) {
     }
     EXPECT_FALSE(capture_test::fs::exists(options.out));
 }
+
+// Slide 7's ghosts: with the continuous method and the ball selected, its bounce leaves
+// a green wire sphere touching the floor (the instant of contact) and an orange one where
+// projection would have put it at the end of that step: on the floor too, further down
+// the fall. Another method leaves none.
+TEST(Overlays, ContinuousBounceLeavesGhostsAtTheContactAndWhereProjectionPutsIt) {
+    scenes::Scene scene = dropScene();
+    scene.params.method = physics::Method::Continuous;
+    scene.params.timeStep = 1.0 / 30.0;
+    scene.params.substeps = 1;
+    Simulation sim(scene);
+    ui::PanelState view;
+    view.selectedSphere = 0;
+    render::FrameSnapshot snapshot;
+    app::buildSnapshot(sim, view, snapshot);  // selects the sphere: contacts are recorded
+    ASSERT_TRUE(stepUntilBounce(sim));
+    const auto& ghost = sim.contactGhosts().latest();
+    ASSERT_TRUE(ghost);
+    EXPECT_NEAR(ghost->atContact.z, kRadius, 1e-12);  // touching, not inside
+    EXPECT_GE(ghost->instant, 0.0);
+    EXPECT_LE(ghost->instant, 1.0 / 30.0);
+    EXPECT_NEAR(ghost->projected.z, kRadius, 1e-12);  // projected back onto the floor
+    EXPECT_NEAR(ghost->projected.x, 0.0, 1e-12);
+    app::buildSnapshot(sim, view, snapshot);
+    EXPECT_EQ(linesOf(snapshot, app::kGhostAtContactColor).size(), 120u);  // three circles of 40
+    EXPECT_EQ(linesOf(snapshot, app::kGhostProjectedColor).size(), 120u);
+    for (int k = 0; k < 5; ++k) sim.singleStep();
+    EXPECT_TRUE(sim.contactGhosts().latest());  // it stays until the next contact
+
+    scene.params.method = physics::Method::PositionBased;
+    Simulation projected(scene);
+    app::buildSnapshot(projected, view, snapshot);
+    ASSERT_TRUE(stepUntilBounce(projected));
+    EXPECT_FALSE(projected.contactGhosts().latest());
+}

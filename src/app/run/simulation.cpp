@@ -23,6 +23,7 @@ void Simulation::startFrom(physics::World world) {
     behind_ = false;
     history_.clear();
     overlays_.reset();
+    ghosts_.reset();
     alarms_.clear();
     restitution_.reset();
     bounces_ = 0;
@@ -34,6 +35,7 @@ void Simulation::startFrom(physics::World world) {
 
 void Simulation::resetOverlays() {
     overlays_.reset();
+    ghosts_.reset();
     restitution_.forgetFlights();
     skipEnergyCheck_ = true;
 }
@@ -106,6 +108,7 @@ bool Simulation::beforeStep() {
     // drawn from the later state would no longer match it.
     if (world_.time < lastStepTime_) {
         overlays_.reset();
+    ghosts_.reset();
         restitution_.forgetFlights();
     }
     energyBefore_ = physics::modifiedEnergy(world_, scene_.params);
@@ -126,6 +129,7 @@ void Simulation::afterStep() {
     }
     overlays_.afterStep(world_, overlayFlags_, selected_);
     restitution_.afterStep(world_, scene_.params, selected_);
+    ghosts_.afterStep(world_, scene_.params, selected_);
     lastStepTime_ = world_.time;
 }
 

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "app/teaching/alarms.h"
+#include "app/teaching/contact_ghost.h"
 #include "app/run/history.h"
 #include "app/teaching/overlays.h"
 #include "app/teaching/restitution.h"
@@ -63,6 +64,8 @@ public:
 
     const Alarms& alarms() const { return alarms_; }
     const RestitutionMeter& restitution() const { return restitution_; }
+    // Slide 7's ghosts of the selected sphere's last continuous contact.
+    const ContactGhosts& contactGhosts() const { return ghosts_; }
     // Contacts answered as a bounce (speed above epsilon), every pass and substep, since restart.
     std::uint64_t bouncesSinceRestart() const { return bounces_; }
     // The app itself put energy in (a drag, a throw, an emitted sphere): the next
@@ -99,6 +102,7 @@ private:
     OverlayState overlays_;
     Alarms alarms_;
     RestitutionMeter restitution_;
+    ContactGhosts ghosts_;
     std::uint64_t bounces_ = 0;
     double energyBefore_ = 0.0;   // J, E~ before the running step
     std::size_t sizeBefore_ = 0;  // spheres before the running step

@@ -43,6 +43,8 @@ void buildSnapshot(Simulation& simulation, const ui::PanelState& view, render::F
     snapshot.clear();
     render::snapshotSpheres(world, static_cast<render::ColorBy>(view.colorBy), snapshot);
     render::snapshotPlanes(world, snapshot);
+    const std::optional<ContactGhost>& ghost = simulation.contactGhosts().latest();
+    if (ghost && simulation.selectedSphere() >= 0) appendContactGhost(*ghost, snapshot);
     if (!flags.any()) return;
     // Under the arrows: trails, then overlaps; the arrows and points last, on top.
     if (flags.trails) appendTrails(simulation.overlays(), world, snapshot);
@@ -103,8 +105,15 @@ ui::Readouts makeReadouts(const Simulation& simulation, const ui::FrameTimes& ti
     r.betaSquared = simulation.params().beta * simulation.params().beta;
     for (const BounceMeasurement& m : simulation.restitution().last()) r.measuredBetaSquared.push_back(m.ratio());
     if (r.measuredBetaSquared.empty()) r.restitutionNote = restitutionNote(simulation);
-    for (const LegendLine& line :
-         overlayLegend(simulation.overlayFlags(), simulation.world().size(), simulation.selectedSphere())) {
+    std::vector<LegendLine> legend =
+        overlayLegend(simulation.overlayFlags(), simulation.world().size(), simulation.selectedSphere());
+    if (const auto& ghost = simulation.contactGhosts().latest(); ghost && simulation.selectedSphere() >= 0) {
+        char text[200];
+        std::snprintf(text, sizeof text, "slide 7: green, the sphere at the instant of contact, t* = %.2f ms into "
+                      "the step; orange, where projection would have put it", 1e3 * ghost->instant);
+        legend.push_back({text, kGhostAtContactColor});
+    }
+    for (const LegendLine& line : legend) {
         r.legend.push_back({line.text,
                             {line.color.x / 255.0f, line.color.y / 255.0f, line.color.z / 255.0f, 1.0f}});
     }
