@@ -120,7 +120,8 @@ std::string penetrationHint(const physics::Params& params) {
         case physics::Method::Reflection:
             break;
     }
-    return "the passes did not resolve every overlap: raise passes or substeps, or lower h";
+    return "the passes did not resolve every overlap, or spheres too fast for the step met deep inside each "
+           "other: raise passes or substeps, lower h, or switch method to continuous (slide 7)";
 }
 
 // ---------------------------------------------------------------- the record
