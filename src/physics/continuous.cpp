@@ -281,7 +281,7 @@ StepStats stepContinuous(World& world, const Params& params, double h) {
         const PredictedImpact impact = cw.queue.back();
         cw.queue.pop_back();
         if (stale(world, impact)) continue;
-        if (stats.events == std::uint64_t(params.maxEvents)) {
+        if (stats.events == params.maxEvents(world.size())) {
             stats.cappedSteps = 1;
             break;
         }

@@ -1,6 +1,10 @@
 #pragma once
 // The lecture's parameters, in SI units. The table that gives each one its
 // label, range, tooltip and JSON / --set name lives in scenes/parameters.h.
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+
 #include <glm/vec3.hpp>
 
 namespace physics {
@@ -56,9 +60,16 @@ struct Params {
     PairOrder order = PairOrder::Index;
     BroadPhase broadPhase = BroadPhase::Grid;
     TimeOfImpact timeOfImpact = TimeOfImpact::ClosedForm;
-    // The continuous method's most impacts per solver step: past it the rest of the step
-    // is projected (and counted, StepStats::cappedSteps), so a step never hangs.
-    int maxEvents = 100000;
+    // The continuous method's most impacts per sphere in a solver step: past N times it,
+    // the rest of the step is projected (and counted, StepStats::cappedSteps), so a step
+    // never hangs. A sphere at rest makes one or two a step, one bouncing in place with
+    // epsilon = 0 about 30 before its speed rounds to 0.
+    int maxEventsPerSphere = 50;
+
+    // The most impacts a continuous solver step of `spheres` spheres handles.
+    std::uint64_t maxEvents(std::size_t spheres) const {
+        return std::uint64_t(maxEventsPerSphere) * std::max<std::uint64_t>(spheres, 1);
+    }
     // Threads the solver may use, 0: one per usable core (at most 8) from 8192 spheres,
     // one below, and one while more were measured slower (AutomaticThreads). Any count gives the same result, bit for bit, in every order: a thread
     // waits before a pair until the pair that met one of its spheres before is done.

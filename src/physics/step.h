@@ -18,7 +18,7 @@ struct StepStats {
     std::uint64_t staticContacts = 0;  // contacts handled as static (slide 13), all passes
     // The continuous method: impacts handled at their instant (bounces and static
     // contacts), bisection iterations spent finding those instants, and solver steps that
-    // reached Params::maxEvents and were projected from there.
+    // reached Params::maxEvents() and were projected from there.
     std::uint64_t events = 0;
     std::uint64_t toiIterations = 0;
     std::uint64_t cappedSteps = 0;

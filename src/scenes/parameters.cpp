@@ -199,11 +199,13 @@ std::vector<Parameter> makeTable() {
                "bisection: the slide's binary search on the same gap, halving the interval "
                "until it is 1e-12 s long (about 35 halvings per impact).",
                param<&Params::timeOfImpact>())),
-        onlyWith(isContinuous, integer("max_events", "most impacts per step", 1, 10000000, kDefaults.maxEvents,
-                "Continuous method only: the most impacts handled in one solver step. Past "
-                "it the rest of the step is projected as the position method would, and the "
-                "alarms say so: a step never hangs.",
-                param<&Params::maxEvents>())),
+        onlyWith(isContinuous, integer("max_events", "most impacts per sphere", 1, 100000, kDefaults.maxEventsPerSphere,
+                "Continuous method only: a solver step of N spheres handles at most N times "
+                "this many impacts. Past it the rest of the step is projected as the position "
+                "method would, and the alarms say so: a step never hangs. A sphere at rest "
+                "makes one or two impacts a step; one bouncing in place with \u03b5 = 0 about "
+                "30, until its speed rounds to 0.",
+                param<&Params::maxEventsPerSphere>())),
         choice("response", "sphere-sphere response", {"lecture", "momentum"},
                static_cast<double>(kDefaults.response),
                "lecture: slide 12, v1 \u2190 \u03b1 v1// + \u03b2 (v1\u22a5 + j/m1 u); with "

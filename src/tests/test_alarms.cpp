@@ -339,18 +339,18 @@ TEST(Alarms, SpheresHeldInMidAirAreNamedWithTheirCountAndTheRemedy) {
 // The continuous method with epsilon = 0: a sphere bouncing in place at beta = 0.3
 // would collide infinitely often within a step (each flight 0.3 times the last; in
 // doubles, until its speed rounds to 0: 32 impacts per solver step here). A cap of 20
-// ends each of the 4 solver steps; the alarm counts them and says what to change.
+// per sphere ends each of the 4 solver steps; the alarm counts them and says what to change.
 TEST(Alarms, AContinuousStepThatReachesTheImpactCapIsCounted) {
     scenes::Scene scene = dropScene(0.3, physics::Method::Continuous);
     scene.spheres[0].p.z = kRadius;  // on the floor
     scene.params.epsilon = 0.0;
-    scene.params.maxEvents = 20;
+    scene.params.maxEventsPerSphere = 20;
     Simulation sim(scene);
     sim.singleStep();
     ASSERT_TRUE(sim.alarms().fired(AlarmKind::EventCap));
     const auto lines = sim.alarms().lines(sim.world().time);
     ASSERT_EQ(lines.size(), 1u);
-    EXPECT_TRUE(contains(lines[0].text, "IMPACT CAP: 4 steps reached 20 impacts")) << lines[0].text;
+    EXPECT_TRUE(contains(lines[0].text, "IMPACT CAP: 4 steps reached 20 impacts per sphere")) << lines[0].text;
     EXPECT_TRUE(contains(lines[0].hint, "Raise max_events or ε")) << lines[0].hint;
     EXPECT_NEAR(sim.world().position[0].z, kRadius, 1e-9);  // projected: still on the floor
 

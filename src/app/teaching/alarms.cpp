@@ -216,15 +216,15 @@ void Alarms::checkRest(const physics::World& world, const physics::Params& param
 }
 
 std::string eventCapHint(const physics::Params& params) {
-    return formatted("the continuous method answers impacts one at a time, at most %.0f per solver step: a pile "
-                     "makes several per sphere each step, a sphere bouncing in place with ε = 0 infinitely many. "
-                     "Raise max_events or ε, or lower h",
-                     double(params.maxEvents));
+    return formatted("the continuous method answers impacts one at a time, at most %.0f per sphere in a solver "
+                     "step: a sphere at rest makes one or two, one bouncing in place with ε = 0 infinitely many "
+                     "(until its speed rounds to 0). Raise max_events or ε, or lower h",
+                     double(params.maxEventsPerSphere));
 }
 
 void Alarms::checkEvents(const physics::StepStats& stats, const physics::Params& params, double time) {
     for (std::uint64_t k = 0; k < stats.cappedSteps; ++k) {  // each solver step counts
-        fire(AlarmKind::EventCap, time, double(params.maxEvents), eventCapHint(params));
+        fire(AlarmKind::EventCap, time, double(params.maxEventsPerSphere), eventCapHint(params));
     }
 }
 
@@ -266,7 +266,7 @@ std::vector<AlarmLine> Alarms::lines(double now) const {
     }
     if (const State& s = state(AlarmKind::EventCap); s.count > 0) {
         lines.push_back({AlarmKind::EventCap,
-                         formatted("IMPACT CAP: %.0f steps reached %.0f impacts and were projected from there, "
+                         formatted("IMPACT CAP: %.0f steps reached %.0f impacts per sphere and were projected from there, "
                                    "last at t = %.2f s",
                                    double(s.count), s.worst, s.lastTime),
                          s.hint, lit(AlarmKind::EventCap)});

@@ -9,7 +9,7 @@
 //     how many are outside and the step the first one left;
 //   - held in mid-air: spheres at rest that nothing below carries, stopped by slide
 //     13's v <- mu v on their own velocity (physics::spheresHeldInMidAir);
-//   - impact cap: a continuous step reached its most impacts (Params::maxEvents) and
+//   - impact cap: a continuous step reached its most impacts (Params::maxEvents()) and
 //     was projected from there.
 // The rules are pure functions over the world, its parameters and diagnostics;
 // Alarms keeps what the panel shows (when each fired last, how often, the worst).
