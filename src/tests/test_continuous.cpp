@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <vector>
 
 #include "physics/broad_phase.h"
 #include "physics/diagnostics.h"
@@ -249,4 +251,43 @@ TEST(Continuous, NoPresetCreatesEnergy) {
         std::printf("%-26s %6zu spheres %9.1f events per step\n", name.c_str(), world.size(),
                     double(stats.events) / (3.0 / params.solverStep()));
     }
+}
+
+// The same holds in a run: from one state of a gas under gravity, a step with each finder
+// meets the same impacts, in the same order, at the same instants but for the
+// bisection's tolerance carried down a chain of impacts (each later impact inherits the
+// paths of the earlier ones): 5.6e-13 s apart at the median, 1.7e-10 s at most over the
+// 6 296 impacts of 20 steps (measured).
+TEST(Continuous, BisectionMeetsEveryImpactOfAStepWhereTheRootsDo) {
+    physics::Params params = continuous(1.0 / 30.0);
+    params.epsilon = 0.05;
+    physics::World start;
+    fixtures::addBox(start, {1.0, 1.0, 1.0});
+    fixtures::addRandomSpheres(start, 400, 0.02, 0.04, 0.9, {0, 0, 0.5}, 3.0, 23);
+    start.recordContacts = true;
+    for (int k = 0; k < 30; ++k) physics::step(start, params);  // some resting on the floor
+    std::vector<double> apart;  // s
+    for (int k = 0; k < 20; ++k) {
+        physics::World exact = start, searched = start;
+        params.timeOfImpact = physics::TimeOfImpact::ClosedForm;
+        physics::step(exact, params);
+        params.timeOfImpact = physics::TimeOfImpact::Bisection;
+        const physics::StepStats stats = physics::step(searched, params);
+        ASSERT_EQ(exact.contacts.size(), searched.contacts.size()) << "step " << k;
+        for (std::size_t e = 0; e < exact.contacts.size(); ++e) {
+            const physics::ContactEvent &a = exact.contacts[e], &b = searched.contacts[e];
+            ASSERT_EQ(a.i, b.i);
+            ASSERT_EQ(a.other, b.other);
+            apart.push_back(std::abs(a.timeOfImpact - b.timeOfImpact));
+        }
+        EXPECT_GT(stats.toiIterations, 0u);
+        params.timeOfImpact = physics::TimeOfImpact::ClosedForm;
+        physics::step(start, params);
+    }
+    ASSERT_GT(apart.size(), 500u);
+    std::sort(apart.begin(), apart.end());
+    std::printf("%zu impacts: median %.2g s, largest %.2g s apart\n", apart.size(), apart[apart.size() / 2],
+                apart.back());
+    EXPECT_LE(apart[apart.size() / 2], 2 * physics::kBisectionTolerance);
+    EXPECT_LE(apart.back(), 1e-9);
 }
