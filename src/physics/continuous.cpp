@@ -49,10 +49,36 @@ double travel(const World& world, std::uint32_t i, double end, const glm::dvec3&
     return glm::length(world.velocity[i]) * dt + 0.5 * glm::length(g) * dt * dt;
 }
 
+// Static marks of the pairs kept from the last candidate list (both sorted by (i, j)).
+void carryRestingMarks(ContinuousWorkspace& cw, const std::vector<SpherePair>& pairs) {
+    const auto key = [](const SpherePair& p) { return (std::uint64_t(p.i) << 32) | p.j; };
+    cw.pairResting.assign(pairs.size(), 0);
+    for (std::size_t k = 0, old = 0; k < pairs.size() && old < cw.previousPairs.size(); ++k) {
+        while (old < cw.previousPairs.size() && key(cw.previousPairs[old]) < key(pairs[k])) ++old;
+        if (old < cw.previousPairs.size() && key(cw.previousPairs[old]) == key(pairs[k])) {
+            cw.pairResting[k] = cw.previousResting[old];
+        }
+    }
+}
+
+// pairStart and pairOf: each sphere's candidate pairs, by a counting sort.
+void indexPairsBySphere(ContinuousWorkspace& cw, const std::vector<SpherePair>& pairs, std::size_t spheres) {
+    cw.pairStart.assign(spheres + 1, 0);
+    for (const SpherePair& p : pairs) ++cw.pairStart[p.i + 1], ++cw.pairStart[p.j + 1];
+    for (std::size_t i = 0; i < spheres; ++i) cw.pairStart[i + 1] += cw.pairStart[i];
+    cw.pairOf.resize(2 * pairs.size());
+    cw.nextSlot.assign(cw.pairStart.begin(), cw.pairStart.end() - 1);
+    for (std::uint32_t k = 0; k < pairs.size(); ++k) {
+        cw.pairOf[cw.nextSlot[pairs[k].i]++] = k;
+        cw.pairOf[cw.nextSlot[pairs[k].j]++] = k;
+    }
+}
+
 // Candidate pairs (Workspace::pairs, by sphere in ContinuousWorkspace): every pair that
 // can meet before time `end` (s) while no sphere travels farther than `reach` from
 // where its path starts now. Keeps the static contacts found so far.
 void findCandidates(World& world, const Params& params, double end, StepStats& stats) {
+    const StageTimer timer(stats.broadPhaseSeconds);
     Workspace& ws = world.workspace;
     ContinuousWorkspace& cw = ws.continuous;
     double reach = 0.0;  // m
@@ -65,25 +91,8 @@ void findCandidates(World& world, const Params& params, double end, StepStats& s
     stats.pairTests += findPairs(params.broadPhase, world, 2.0 * cw.reach * (1.0 + 1e-9) + 1e-12, ws);
     ++stats.broadPhaseBuilds;
     stats.candidatePairs += ws.pairs.size();
-    // Carry the static marks over: both lists are sorted by (i, j).
-    cw.pairResting.assign(ws.pairs.size(), 0);
-    for (std::size_t k = 0, old = 0; k < ws.pairs.size() && old < cw.previousPairs.size(); ++k) {
-        const auto key = [](const SpherePair& p) { return (std::uint64_t(p.i) << 32) | p.j; };
-        while (old < cw.previousPairs.size() && key(cw.previousPairs[old]) < key(ws.pairs[k])) ++old;
-        if (old < cw.previousPairs.size() && key(cw.previousPairs[old]) == key(ws.pairs[k])) {
-            cw.pairResting[k] = cw.previousResting[old];
-        }
-    }
-    cw.pairStart.assign(world.size() + 1, 0);
-    for (const SpherePair& p : ws.pairs) ++cw.pairStart[p.i + 1], ++cw.pairStart[p.j + 1];
-    for (std::size_t i = 0; i < world.size(); ++i) cw.pairStart[i + 1] += cw.pairStart[i];
-    cw.pairOf.resize(2 * ws.pairs.size());
-    std::vector<std::uint32_t>& next = ws.cellOfSphere;  // scratch: the broad phase is done with it
-    next.assign(cw.pairStart.begin(), cw.pairStart.end() - 1);
-    for (std::uint32_t k = 0; k < ws.pairs.size(); ++k) {
-        cw.pairOf[next[ws.pairs[k].i]++] = k;
-        cw.pairOf[next[ws.pairs[k].j]++] = k;
-    }
+    carryRestingMarks(cw, ws.pairs);
+    indexPairsBySphere(cw, ws.pairs, world.size());
 }
 
 // The earliest impact first; ties in a fixed order, so that a run repeats exactly.
@@ -263,7 +272,6 @@ void projectOverlaps(World& world, const Params& params) {
 
 StepStats stepContinuous(World& world, const Params& params, double h) {
     StepStats stats;
-    const StageTimer timer(stats.passesSeconds);
     ContinuousWorkspace& cw = world.workspace.continuous;
     const glm::dvec3& g = params.gravity;
     world.workspace.cached = false;  // the other methods' pair cache: not kept up to date here
@@ -273,7 +281,8 @@ StepStats stepContinuous(World& world, const Params& params, double h) {
     cw.planeResting.assign(world.size() * world.planes.size(), 0);
     cw.pairResting.clear();
     world.workspace.pairs.clear();
-    findCandidates(world, params, h, stats);
+    findCandidates(world, params, h, stats);  // timed as the broad phase, the rest as the passes
+    const StageTimer timer(stats.passesSeconds);
     cw.queue.clear();
     predictAll(world, params, h, stats);  // A
     while (!cw.queue.empty()) {

@@ -100,6 +100,7 @@ struct ContinuousWorkspace {
     double reach = 0.0;                     // m: no sphere moves farther than this from its anchor
     std::vector<std::uint32_t> pairStart;   // sphere i's candidate pairs: pairOf[pairStart[i], pairStart[i + 1])
     std::vector<std::uint32_t> pairOf;      // indices into Workspace::pairs
+    std::vector<std::uint32_t> nextSlot;    // scratch of that index: per sphere, its next slot
     std::vector<std::uint8_t> pairResting;  // per candidate pair: in static contact this step
     std::vector<std::uint8_t> planeResting;  // per sphere and plane (i * planes + k): the same
     std::vector<PredictedImpact> queue;     // a heap, earliest first
