@@ -18,6 +18,16 @@ enum class Method {
     Continuous,     // slide 7, option 3: back to the instant of contact, impacts in time order
 };
 
+// Slide 14, "multiple collisions": how the velocity stage treats the contacts of a step.
+enum class Solver {
+    Sequential,      // K passes, one contact at a time in the pair order (the lecture's)
+    UntilConverged,  // sequential passes until no touching contact approaches, K the cap
+    Simultaneous,    // pairwise Jacobi: each pass answers every contact from the same velocities
+};
+
+// m/s: until-converged stops once no touching contact approaches faster than this.
+constexpr double kConvergedApproachSpeed = 1e-9;
+
 // How the continuous method finds the instant of contact (slide 7: "binary search, etc.").
 enum class TimeOfImpact {
     ClosedForm,  // the earliest root of the distance function (a quadratic)
@@ -59,6 +69,7 @@ struct Params {
     PositionSplit split = PositionSplit::HalfHalf;
     PairOrder order = PairOrder::Index;
     BroadPhase broadPhase = BroadPhase::Grid;
+    Solver solver = Solver::Sequential;
     TimeOfImpact timeOfImpact = TimeOfImpact::ClosedForm;
     // The continuous method's most impacts per sphere in a solver step: past N times it,
     // the rest of the step is projected (and counted, StepStats::cappedSteps), so a step

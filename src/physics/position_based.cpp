@@ -5,15 +5,17 @@
 //   B and C repeated for K passes.
 // (+) walls are never crossed, since they are handled last; (-) stacked spheres jitter.
 // Reflection (slide 7's second answer, reflection.cpp) runs the same stages with its
-// own position response.
+// own position response. With slide 14's simultaneous solver the velocities of a pass
+// are answered together first (respondSimultaneously), and B and C only move.
 #include "physics/solver_stages.h"
 
 namespace physics {
 namespace {
 
-// Each move lowers the spheres' wall clearance by its length.
+// Each move lowers the spheres' wall clearance by its length. `respond`: the velocity
+// response too (else the velocities of this pass are answered already).
 void particlesVelocityAndPosition(World& world, const Params& params, StepStats& stats,
-                                  int pass, PositionResponse response) {
+                                  int pass, PositionResponse response, bool respond) {
     std::vector<double>& clearance = world.workspace.wallClearance;  // m
     forEachPairInPassOrder(world, params, stats, [&](const SpherePair* pairs, std::uint32_t first,
                                                      std::uint32_t last, StepStats& s) {
@@ -21,7 +23,7 @@ void particlesVelocityAndPosition(World& world, const Params& params, StepStats&
             const SpherePair& pair = pairs[k];
             SphereContact contact;
             if (!touching(world, pair, contact)) continue;
-            respondToContact(world, pair, contact, params, s, pass);
+            if (respond) respondToContact(world, pair, contact, params, s, pass);
             const Separation moved =
                 separateSpheres(world.position[pair.i], world.position[pair.j], world.mass[pair.i],
                                 world.mass[pair.j], contact.u,
@@ -34,13 +36,13 @@ void particlesVelocityAndPosition(World& world, const Params& params, StepStats&
 
 // A sphere whose wall clearance is above 0 touches no plane: passed by.
 void wallsVelocityAndPosition(World& world, const Params& params, StepStats& stats,
-                              int pass, PositionResponse response) {
+                              int pass, PositionResponse response, bool respond) {
     std::vector<double>& clearance = world.workspace.wallClearance;  // m
     const double scale = planeScale(world);                          // m
     forEachSphere(world, params, stats, [&](std::uint32_t i, StepStats& s) {
         if (clearance[i] > 0.0) return;
         forEachTouchedPlane(world, i, [&](std::size_t k, const Plane& face) {
-            respondToContact(world, i, k, face, params, s, pass);
+            if (respond) respondToContact(world, i, k, face, params, s, pass);
             if (response == PositionResponse::Projection) {
                 projectOnPlane(world.position[i], world.radius[i], face);
             } else {
@@ -62,10 +64,15 @@ StepStats stepWithPositionResponse(World& world, const Params& params, double h,
     {
         const StageTimer timer(stats.passesSeconds);
         findWallClearances(world, params);
-        for (int pass = 0; pass < params.passes; ++pass) {
-            particlesVelocityAndPosition(world, params, stats, pass, response);  // B
-            wallsVelocityAndPosition(world, params, stats, pass, response);      // C
-        }
+        const bool together = params.solver == Solver::Simultaneous;
+        runPasses(world, params, stats, [&](int pass) {
+            if (together) {
+                findContacts(world, params);
+                respondSimultaneously(world, params, stats, pass);
+            }
+            particlesVelocityAndPosition(world, params, stats, pass, response, !together);  // B
+            wallsVelocityAndPosition(world, params, stats, pass, response, !together);      // C
+        });
     }
     return stats;
 }

@@ -17,9 +17,13 @@ StepStats stepResponseOnly(World& world, const Params& params, double h) {
     {
         const StageTimer timer(stats.passesSeconds);
         findContacts(world, params);  // positions stay put during B
-        for (int pass = 0; pass < params.passes; ++pass) {
-            respondToAllContacts(world, params, stats, pass);  // B
-        }
+        runPasses(world, params, stats, [&](int pass) {  // B
+            if (params.solver == Solver::Simultaneous) {
+                respondSimultaneously(world, params, stats, pass);
+            } else {
+                respondToAllContacts(world, params, stats, pass);
+            }
+        });
     }
     return stats;
 }

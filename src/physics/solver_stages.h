@@ -304,6 +304,31 @@ void findContacts(World& world, const Params& params);
 // as findContacts found them.
 void respondToAllContacts(World& world, const Params& params, StepStats& stats, int pass);
 
+// The same contacts answered simultaneously (slide 14's pairwise Jacobi): every response
+// from the velocities at the start of the pass, the changes summed per sphere and applied
+// together (simultaneous.cpp).
+void respondSimultaneously(World& world, const Params& params, StepStats& stats, int pass);
+
+// Whether a touching contact of the current positions still approaches faster than
+// kConvergedApproachSpeed (finds the contacts again, as findContacts).
+bool contactsStillApproach(World& world, const Params& params);
+
+// Slide 14, "multiple collisions": runs pass(k) for k = 0, 1, ... K - 1, or with the
+// until-converged solver only until no touching contact approaches (K the cap: a step
+// that reaches it is counted). Counts the passes run.
+template <class Pass>
+void runPasses(World& world, const Params& params, StepStats& stats, const Pass& pass) {
+    const bool untilConverged = params.solver == Solver::UntilConverged;
+    int run = 0;
+    bool converged = false;
+    while (run < params.passes && !converged) {
+        pass(run++);
+        converged = untilConverged && !contactsStillApproach(world, params);
+    }
+    stats.passesUsed += std::uint64_t(run);
+    stats.passCapHits += untilConverged && !converged;
+}
+
 // Slide 7's answers to a penetration found after the fact that move the sphere: (1)
 // project it on the constraint (out by d), (2) approximate the correct position by
 // reflection (out by (1 + beta) d, where it would be had it bounced at the instant

@@ -217,14 +217,18 @@ int automaticMany() {
 // Whether automatic mode chooses this world's threads (AutomaticThreads).
 bool threadsChosenAutomatically(const World& world, const Params& params) {
     return params.threads == 0 && world.size() >= kAutomaticParallelMinSpheres && automaticMany() > 1 &&
-           params.method != Method::Continuous;
+           params.method != Method::Continuous && params.solver != Solver::Simultaneous;
 }
 
 }  // namespace
 
 int solverThreads(const World& world, const Params& params) {
-    // Impacts in time order are one sequence: the continuous method runs on one thread.
-    if (world.size() < kParallelMinSpheres || params.method == Method::Continuous) return 1;
+    // Impacts in time order are one sequence: the continuous method runs on one thread; so
+    // does the simultaneous solver, whose sums per sphere then add in one order.
+    if (world.size() < kParallelMinSpheres || params.method == Method::Continuous ||
+        params.solver == Solver::Simultaneous) {
+        return 1;
+    }
     if (params.threads > 0) return std::min(params.threads, kMostSolverThreads);
     if (!threadsChosenAutomatically(world, params)) return 1;
     const int chosen = world.workspace.automaticThreads.current();
@@ -239,6 +243,8 @@ StepStats& StepStats::operator+=(const StepStats& o) {
     wallContacts += o.wallContacts;
     collisions += o.collisions;
     staticContacts += o.staticContacts;
+    passesUsed += o.passesUsed;
+    passCapHits += o.passCapHits;
     events += o.events;
     toiIterations += o.toiIterations;
     cappedSteps += o.cappedSteps;
@@ -371,6 +377,23 @@ void findContacts(World& world, const Params& params) {
         });
         ws.wallStart[i + 1] = static_cast<std::uint32_t>(ws.wallContacts.size());
     }
+}
+
+bool contactsStillApproach(World& world, const Params& params) {
+    findContacts(world, params);
+    const Workspace& ws = world.workspace;
+    const std::vector<SpherePair>& pairs = pairsAsVisited(world, params);
+    for (std::size_t k = 0; k < pairs.size(); ++k) {
+        if (!ws.pairTouches[k]) continue;
+        const glm::dvec3 relative = world.velocity[pairs[k].j] - world.velocity[pairs[k].i];  // m/s
+        if (glm::dot(relative, ws.pairContacts[k].u) > kConvergedApproachSpeed) return true;
+    }
+    for (std::uint32_t i = 0; i < world.size(); ++i) {
+        for (std::uint32_t w = ws.wallStart[i]; w < ws.wallStart[i + 1]; ++w) {
+            if (glm::dot(world.velocity[i], ws.wallContacts[w].face.normal) < -kConvergedApproachSpeed) return true;
+        }
+    }
+    return false;
 }
 
 void findWallClearances(World& world, const Params& params) {

@@ -19,6 +19,10 @@ struct StepStats {
     // The continuous method: impacts handled at their instant (bounces and static
     // contacts), bisection iterations spent finding those instants, and solver steps that
     // reached Params::maxEvents() and were projected from there.
+    // Slide 14's solvers: passes run (all solver steps), and the solver steps whose
+    // until-converged passes reached K with a contact still approaching.
+    std::uint64_t passesUsed = 0;
+    std::uint64_t passCapHits = 0;
     std::uint64_t events = 0;
     std::uint64_t toiIterations = 0;
     std::uint64_t cappedSteps = 0;

@@ -41,9 +41,13 @@ StepStats stepVelocityBased(World& world, const Params& params, double h) {
     {
         const StageTimer timer(stats.passesSeconds);
         findContacts(world, params);  // positions stay put until D
-        for (int pass = 0; pass < params.passes; ++pass) {
-            respondToAllContacts(world, params, stats, pass);  // B
-        }
+        runPasses(world, params, stats, [&](int pass) {  // B
+            if (params.solver == Solver::Simultaneous) {
+                respondSimultaneously(world, params, stats, pass);
+            } else {
+                respondToAllContacts(world, params, stats, pass);
+            }
+        });
         cancelPenetratingVelocity(world, params);  // C
     }
     integratePosition(world, params, h);  // D

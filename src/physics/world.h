@@ -155,6 +155,10 @@ struct Workspace {
     std::vector<SphereContact> pairContacts;   // valid where pairTouches
     std::vector<std::uint32_t> wallStart;      // sphere i's wall contacts: [wallStart[i], wallStart[i + 1])
     std::vector<WallContact> wallContacts;     // by sphere, then plane
+    // Slide 14's simultaneous solver: the velocities at the start of a pass (m/s), and
+    // each sphere's changes summed over the pass's contacts (m/s).
+    std::vector<glm::dvec3> passStart;
+    std::vector<glm::dvec3> velocityChange;
     // Params::threads = 0: the count in use, measured against the other (step()).
     AutomaticThreads automaticThreads;
     ContinuousWorkspace continuous;

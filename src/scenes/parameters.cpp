@@ -192,6 +192,16 @@ std::vector<Parameter> makeTable() {
                "at its instant within the step and answered there, in time order (physically "
                "correct, computationally heavy; one thread).",
                param<&Params::method>()),
+        choice("solver", "multiple collisions", {"sequential", "until-converged", "simultaneous"},
+               static_cast<double>(kDefaults.solver),
+               "Slide 14: how the contacts of a step are answered. sequential: K passes, one "
+               "contact at a time in the pair order, each seeing what the previous ones did (the "
+               "lecture's). until-converged: the same passes until no touching contact still "
+               "approaches, K the cap (the passes used are in the readouts). simultaneous: "
+               "pairwise Jacobi, each pass answers every contact from the velocities at its start "
+               "and applies them together: the order no longer matters, but a sphere hit from "
+               "several sides takes every change at once (one thread).",
+               param<&Params::solver>()),
         onlyWith(isContinuous, choice("toi", "time of impact", {"closed-form", "bisection"},
                static_cast<double>(kDefaults.timeOfImpact),
                "Continuous method only: how the instant of contact is found. closed-form: the "

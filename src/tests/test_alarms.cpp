@@ -360,3 +360,24 @@ TEST(Alarms, AContinuousStepThatReachesTheImpactCapIsCounted) {
     EXPECT_FALSE(resting.alarms().fired(AlarmKind::EventCap));
 }
 
+
+// Bernoulli's problem under the simultaneous solver gains 75 % kinetic energy
+// (test_multiple_collisions.cpp): the alarm fires and names the solver's flaw.
+TEST(Alarms, TheSimultaneousSolversEnergyIsNamed) {
+    scenes::Scene scene;
+    scene.params.gravity = glm::dvec3(0.0);
+    scene.params.solver = physics::Solver::Simultaneous;
+    scene.params.method = physics::Method::VelocityBased;
+    scene.params.alpha = scene.params.beta = scene.params.mu = 1.0;
+    scene.params.epsilon = 0.0;
+    const double s3 = std::sqrt(3.0) / 2.0;
+    scene.spheres = {{{0.0, 0.0, 1.0 + 0.2 * s3}, {0.0, 0.0, -1.0}, kRadius, 1.0},
+                     {{-0.1, 0.0, 1.0}, {0.0, 0.0, 0.0}, kRadius, 1.0},
+                     {{0.1, 0.0, 1.0}, {0.0, 0.0, 0.0}, kRadius, 1.0}};
+    Simulation sim(scene);
+    sim.singleStep();
+    ASSERT_TRUE(sim.alarms().fired(AlarmKind::EnergyCreated));
+    // +0.375 J over the scale, the larger kinetic energy after (0.875 J): 3/7.
+    EXPECT_NEAR(sim.alarms().worst(AlarmKind::EnergyCreated), 3.0 / 7.0, 1e-9);
+    EXPECT_TRUE(contains(sim.alarms().lines(sim.world().time)[0].hint, "simultaneous solver"));
+}

@@ -265,6 +265,13 @@ void readoutsBody(const Readouts& r, const PanelState& state, PanelActions& acti
     tooltip("A bounce is a contact whose relative normal speed is above epsilon; a static contact is at or below it (slide 13).");
     ImGui::Text("bounces since restart %llu", static_cast<unsigned long long>(r.bouncesSinceRestart));
     tooltip("Contacts answered as a bounce since the last restart, counted in every pass and substep.");
+    if (r.untilConverged) {
+        ImGui::Text("passes used last step %llu (K = %d each), %llu at K",
+                    static_cast<unsigned long long>(r.stats.passesUsed), r.passCap,
+                    static_cast<unsigned long long>(r.stats.passCapHits));
+        tooltip("Until converged: the passes run in the last time step, all substeps, and how many solver steps "
+                "reached K with a contact still approaching (raise K to let them converge).");
+    }
     if (r.continuous) {
         ImGui::Text("impacts last step %llu, TOI iterations %llu", static_cast<unsigned long long>(r.stats.events),
                     static_cast<unsigned long long>(r.stats.toiIterations));

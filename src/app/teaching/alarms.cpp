@@ -82,6 +82,11 @@ bool energyCreated(double before, double after, double scale, const physics::Par
 }
 
 std::string energyHint(const physics::Params& params) {
+    if (params.solver == physics::Solver::Simultaneous) {
+        return "the simultaneous solver answers each contact as if it were alone and sums the answers: a sphere "
+               "hit from several sides at once can leave faster than it came (slide 14: the global approach "
+               "solves the contacts together); switch solver to sequential";
+    }
     if (params.method == physics::Method::VelocityBased) {
         return "velocity-based bounce reflects this step's gravity kick: the contact is found after "
                "v ← v + h g, and the response sends that back too (about 2 g h / s per bounce; "

@@ -1,0 +1,133 @@
+// Slide 14's "multiple collisions", answered by each solver (physics.md, "Slide 14, the
+// global approach"), on inputs whose outcome is derived by hand in the comments.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "physics/diagnostics.h"
+#include "physics/step.h"
+#include "physics_fixtures.h"
+
+using glm::dvec3;
+using physics::Method;
+using physics::Solver;
+
+namespace {
+
+constexpr double kS3 = 0.8660254037844386;  // sqrt(3) / 2 = cos 30 degrees
+
+physics::Params exact(Solver solver, Method method = Method::PositionBased) {
+    physics::Params params = fixtures::exactParams(1.0 / 240.0, dvec3(0.0));
+    params.solver = solver;
+    params.method = method;
+    return params;
+}
+
+// Bernoulli's problem: sphere 0 moving down at 1 m/s onto spheres 1 (left) and 2
+// (right), which touch each other; all three touch, 1 kg, r = 0.1 m, no gravity. The
+// centres form an equilateral triangle: u from 1 to 0 is (1/2, 0, sqrt3/2), from 2 to 0
+// (-1/2, 0, sqrt3/2). Mirror symmetric in x. The position based method moves before its
+// passes: for it sphere 0 starts one step's travel higher, and touches when they run.
+physics::World bernoulli(Method method) {
+    const double lift = method == Method::PositionBased ? 1.0 / 240.0 : 0.0;  // m: h times 1 m/s
+    physics::World world;
+    world.addSphere({0.0, 0.0, 0.2 * kS3 + lift}, {0.0, 0.0, -1.0}, 0.1, 1.0);
+    world.addSphere({-0.1, 0.0, 0.0}, {0.0, 0.0, 0.0}, 0.1, 1.0);
+    world.addSphere({0.1, 0.0, 0.0}, {0.0, 0.0, 0.0}, 0.1, 1.0);
+    return world;
+}
+
+void expectVelocity(const physics::World& world, std::size_t i, dvec3 expected) {
+    EXPECT_LT(glm::length(world.velocity[i] - expected), 1e-9)
+        << "sphere " << i << ": (" << world.velocity[i].x << ", " << world.velocity[i].y << ", " << world.velocity[i].z
+        << ")";
+}
+
+double kinetic(const physics::World& world) {
+    double sum = 0.0;  // J
+    for (std::size_t i = 0; i < world.size(); ++i) sum += 0.5 * world.mass[i] * glm::dot(world.velocity[i], world.velocity[i]);
+    return sum;
+}
+
+// Five touching spheres of radius 0.125 m on the x axis; sphere 0 strikes at v0.
+physics::World cradle(double v0) {
+    physics::World world;
+    for (int k = 0; k < 5; ++k) world.addSphere({0.25 * k, 0, 0}, {k == 0 ? v0 : 0.0, 0, 0}, 0.125, 1.0);
+    return world;
+}
+
+}  // namespace
+
+// Sequential, pairs (0,1), (0,2), (1,2) in index order, elastic (equal masses swap their
+// normal velocities). Pass 1: (0,1): v0.u = -sqrt3/2, so sphere 0 gets +sqrt3/2 u =
+// (sqrt3/4, 0, 3/4) - (0,0,1) = (0.4330, 0, -0.25) and sphere 1 gets -sqrt3/2 u =
+// (-0.4330, 0, -0.75). (0,2): v0.u' = -0.4330, so sphere 0 becomes (0.2165, 0, 0.125) and
+// sphere 2 (0.2165, 0, -0.375). (1,2) separate. Pass 2: nothing approaches. The energy is
+// kept (0.0625 + 0.75 + 0.1875 = 1 = |v|^2 before), but the mirror symmetry is lost:
+// sphere 1 leaves at 0.866 m/s, sphere 2 at 0.433, sphere 0 drifts right.
+TEST(MultipleCollisions, SequentialBreaksBernoullisSymmetry) {
+    for (Solver solver : {Solver::Sequential, Solver::UntilConverged}) {
+        physics::World world = bernoulli(Method::PositionBased);
+        const physics::StepStats stats = physics::step(world, exact(solver));
+        expectVelocity(world, 0, {kS3 / 4, 0.0, 0.125});
+        expectVelocity(world, 1, {-kS3 / 2, 0.0, -0.75});
+        expectVelocity(world, 2, {kS3 / 4, 0.0, -0.375});
+        EXPECT_NEAR(kinetic(world), 0.5, 1e-12);
+        EXPECT_NEAR(glm::length(world.velocity[1]) - glm::length(world.velocity[2]), kS3 / 2, 1e-9);
+        // Until converged stops after the pass that left nothing approaching: 1 of K = 4.
+        EXPECT_EQ(stats.passesUsed, solver == Solver::Sequential ? 4u : 1u);
+    }
+}
+
+// Simultaneous (Jacobi): both contacts of sphere 0 answered from the same velocities.
+// (0,1) alone would give sphere 0 +sqrt3/2 u and (0,2) alone +sqrt3/2 u'; together
+// sqrt3/2 (u + u') = sqrt3/2 (0, 0, sqrt3) = (0, 0, 3/2): sphere 0 leaves upward at
+// 0.5 m/s, spheres 1 and 2 at -sqrt3/2 u = (-sqrt3/4, 0, -3/4) and its mirror image.
+// Symmetric, but both contacts gave
+// sphere 0 the whole of its approach back: the kinetic energy is 1.75 times what it was
+// (0.25 + 0.75 + 0.75 = 1.75), the flaw of summing impulses that each assume they are alone.
+TEST(MultipleCollisions, SimultaneousKeepsTheSymmetryAndCreatesEnergy) {
+    for (Method method : {Method::PositionBased, Method::VelocityBased}) {
+        physics::World world = bernoulli(method);
+        physics::step(world, exact(Solver::Simultaneous, method));
+        expectVelocity(world, 0, {0.0, 0.0, 0.5});
+        expectVelocity(world, 1, {-kS3 / 2, 0.0, -0.75});
+        expectVelocity(world, 2, {kS3 / 2, 0.0, -0.75});
+        EXPECT_NEAR(kinetic(world) / 0.5, 1.75, 1e-12);
+        EXPECT_EQ(world.velocity[1].x, -world.velocity[2].x);  // mirror images, bit for bit
+        EXPECT_EQ(world.velocity[1].z, world.velocity[2].z);
+    }
+}
+
+// The cradle in reversed order needs one pass per contact (slide 14): with K = 100
+// until-converged takes the 4 it needs and stops; with K = 2 it stops at the cap with
+// the speed on sphere 2 and says so.
+TEST(MultipleCollisions, UntilConvergedTakesThePassesTheCradleNeedsAndReportsTheCap) {
+    physics::Params params = exact(Solver::UntilConverged);
+    params.order = physics::PairOrder::Reversed;
+    params.passes = 100;
+    physics::World world = cradle(2.0);
+    physics::StepStats stats = physics::step(world, params);
+    EXPECT_EQ(stats.passesUsed, 4u);
+    EXPECT_EQ(stats.passCapHits, 0u);
+    for (int k = 0; k < 5; ++k) EXPECT_NEAR(world.velocity[k].x, k == 4 ? 2.0 : 0.0, 1e-12) << k;
+    params.passes = 2;
+    world = cradle(2.0);
+    stats = physics::step(world, params);
+    EXPECT_EQ(stats.passesUsed, 2u);
+    EXPECT_EQ(stats.passCapHits, 1u);
+    EXPECT_NEAR(world.velocity[2].x, 2.0, 1e-12);
+}
+
+// Velocity based, reversed, one pass: stage C meets spheres the pass has not reached
+// and cancels their approach, 2 J -> 0.69 J. Until converged the passes carry the speed
+// to the end first, and C finds nothing approaching: the 2 J stay.
+TEST(MultipleCollisions, UntilConvergedSavesTheVelocityMethodsCradle) {
+    physics::Params params = exact(Solver::UntilConverged, Method::VelocityBased);
+    params.order = physics::PairOrder::Reversed;
+    params.passes = 10;
+    physics::World world = cradle(2.0);
+    for (int k = 0; k < 60; ++k) physics::step(world, params);
+    EXPECT_NEAR(kinetic(world), 2.0, 1e-12);
+    EXPECT_NEAR(world.velocity[4].x, 2.0, 1e-12);
+}
