@@ -23,6 +23,7 @@ enum class Solver {
     Sequential,      // K passes, one contact at a time in the pair order (the lecture's)
     UntilConverged,  // sequential passes until no touching contact approaches, K the cap
     Simultaneous,    // pairwise Jacobi: each pass answers every contact from the same velocities
+    Lcp,             // global: one complementarity problem over every touching contact (lcp.cpp)
 };
 
 // m/s: until-converged stops once no touching contact approaches faster than this.

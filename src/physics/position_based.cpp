@@ -5,8 +5,8 @@
 //   B and C repeated for K passes.
 // (+) walls are never crossed, since they are handled last; (-) stacked spheres jitter.
 // Reflection (slide 7's second answer, reflection.cpp) runs the same stages with its
-// own position response. With slide 14's simultaneous solver the velocities of a pass
-// are answered together first (respondSimultaneously), and B and C only move.
+// own position response. With slide 14's simultaneous and global solvers the velocities
+// of a pass are answered together first (respondWithSolver), and B and C only move.
 #include "physics/solver_stages.h"
 
 namespace physics {
@@ -64,11 +64,11 @@ StepStats stepWithPositionResponse(World& world, const Params& params, double h,
     {
         const StageTimer timer(stats.passesSeconds);
         findWallClearances(world, params);
-        const bool together = params.solver == Solver::Simultaneous;
+        const bool together = params.solver == Solver::Simultaneous || params.solver == Solver::Lcp;
         runPasses(world, params, stats, [&](int pass) {
             if (together) {
                 findContacts(world, params);
-                respondSimultaneously(world, params, stats, pass);
+                respondWithSolver(world, params, stats, pass);
             }
             particlesVelocityAndPosition(world, params, stats, pass, response, !together);  // B
             wallsVelocityAndPosition(world, params, stats, pass, response, !together);      // C

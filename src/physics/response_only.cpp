@@ -17,13 +17,7 @@ StepStats stepResponseOnly(World& world, const Params& params, double h) {
     {
         const StageTimer timer(stats.passesSeconds);
         findContacts(world, params);  // positions stay put during B
-        runPasses(world, params, stats, [&](int pass) {  // B
-            if (params.solver == Solver::Simultaneous) {
-                respondSimultaneously(world, params, stats, pass);
-            } else {
-                respondToAllContacts(world, params, stats, pass);
-            }
-        });
+        runPasses(world, params, stats, [&](int pass) { respondWithSolver(world, params, stats, pass); });  // B
     }
     return stats;
 }

@@ -309,6 +309,21 @@ void respondToAllContacts(World& world, const Params& params, StepStats& stats, 
 // together (simultaneous.cpp).
 void respondSimultaneously(World& world, const Params& params, StepStats& stats, int pass);
 
+// Slide 14's global approach: every contact findContacts found in one complementarity
+// problem, solved by projected Gauss-Seidel (lcp.cpp).
+void solveContactsTogether(World& world, const Params& params, StepStats& stats);
+
+// The velocity stage of one pass with the chosen solver, over the contacts findContacts
+// found: in turn (sequential, until-converged), from the same velocities (simultaneous)
+// or together (lcp).
+inline void respondWithSolver(World& world, const Params& params, StepStats& stats, int pass) {
+    switch (params.solver) {
+        case Solver::Simultaneous: respondSimultaneously(world, params, stats, pass); return;
+        case Solver::Lcp: solveContactsTogether(world, params, stats); return;
+        default: respondToAllContacts(world, params, stats, pass); return;
+    }
+}
+
 // Whether a touching contact of the current positions still approaches faster than
 // kConvergedApproachSpeed (finds the contacts again, as findContacts).
 bool contactsStillApproach(World& world, const Params& params);

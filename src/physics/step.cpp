@@ -217,7 +217,8 @@ int automaticMany() {
 // Whether automatic mode chooses this world's threads (AutomaticThreads).
 bool threadsChosenAutomatically(const World& world, const Params& params) {
     return params.threads == 0 && world.size() >= kAutomaticParallelMinSpheres && automaticMany() > 1 &&
-           params.method != Method::Continuous && params.solver != Solver::Simultaneous;
+           params.method != Method::Continuous && params.solver != Solver::Simultaneous &&
+           params.solver != Solver::Lcp;
 }
 
 }  // namespace
@@ -226,7 +227,7 @@ int solverThreads(const World& world, const Params& params) {
     // Impacts in time order are one sequence: the continuous method runs on one thread; so
     // does the simultaneous solver, whose sums per sphere then add in one order.
     if (world.size() < kParallelMinSpheres || params.method == Method::Continuous ||
-        params.solver == Solver::Simultaneous) {
+        params.solver == Solver::Simultaneous || params.solver == Solver::Lcp) {
         return 1;
     }
     if (params.threads > 0) return std::min(params.threads, kMostSolverThreads);
@@ -245,6 +246,8 @@ StepStats& StepStats::operator+=(const StepStats& o) {
     staticContacts += o.staticContacts;
     passesUsed += o.passesUsed;
     passCapHits += o.passCapHits;
+    lcpSweeps += o.lcpSweeps;
+    lcpResidual = std::max(lcpResidual, o.lcpResidual);
     events += o.events;
     toiIterations += o.toiIterations;
     cappedSteps += o.cappedSteps;

@@ -23,6 +23,10 @@ struct StepStats {
     // until-converged passes reached K with a contact still approaching.
     std::uint64_t passesUsed = 0;
     std::uint64_t passCapHits = 0;
+    // The global solve (lcp): projected Gauss-Seidel sweeps, and the largest residual
+    // left (m/s, the most a contact ended off its target; max, not summed).
+    std::uint64_t lcpSweeps = 0;
+    double lcpResidual = 0.0;
     std::uint64_t events = 0;
     std::uint64_t toiIterations = 0;
     std::uint64_t cappedSteps = 0;

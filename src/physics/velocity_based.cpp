@@ -41,13 +41,7 @@ StepStats stepVelocityBased(World& world, const Params& params, double h) {
     {
         const StageTimer timer(stats.passesSeconds);
         findContacts(world, params);  // positions stay put until D
-        runPasses(world, params, stats, [&](int pass) {  // B
-            if (params.solver == Solver::Simultaneous) {
-                respondSimultaneously(world, params, stats, pass);
-            } else {
-                respondToAllContacts(world, params, stats, pass);
-            }
-        });
+        runPasses(world, params, stats, [&](int pass) { respondWithSolver(world, params, stats, pass); });  // B
         cancelPenetratingVelocity(world, params);  // C
     }
     integratePosition(world, params, h);  // D

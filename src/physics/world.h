@@ -108,6 +108,16 @@ struct ContinuousWorkspace {
     std::vector<std::uint8_t> previousResting;
 };
 
+// One contact of slide 14's global solve (lcp.cpp).
+struct LcpContact {
+    std::uint32_t i = 0;
+    std::int64_t j = -1;        // the other sphere, or -1: a plane
+    glm::dvec3 u{0.0};          // unit, from j to i
+    double target = 0.0;        // m/s: the least relative normal velocity after
+    double lambda = 0.0;        // kg m/s: its impulse, >= 0
+    bool isStatic = false;      // |relative normal speed| <= epsilon before (slide 13)
+};
+
 // Scratch memory reused from step to step, so a step allocates nothing once warm.
 struct Workspace {
     std::vector<SpherePair> pairs;          // candidate pairs (i, j), in index order
@@ -159,6 +169,7 @@ struct Workspace {
     // each sphere's changes summed over the pass's contacts (m/s).
     std::vector<glm::dvec3> passStart;
     std::vector<glm::dvec3> velocityChange;
+    std::vector<LcpContact> lcpContacts;  // the global solve's contacts
     // Params::threads = 0: the count in use, measured against the other (step()).
     AutomaticThreads automaticThreads;
     ContinuousWorkspace continuous;

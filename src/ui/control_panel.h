@@ -78,6 +78,7 @@ struct Readouts {
     std::uint64_t bouncesSinceRestart = 0;  // contacts answered as a bounce, all passes
     bool continuous = false;                // the continuous method: its impacts are shown
     bool untilConverged = false;            // slide 14's until-converged solver: its passes are shown
+    bool globalSolve = false;               // slide 14's lcp solver: its sweeps and residual are shown
     int passCap = 0;                        // K
     std::uint64_t cappedSinceRestart = 0;   // continuous solver steps that reached the impact cap
     // Invariant alarms (app/alarms.h), most serious first.

@@ -100,6 +100,7 @@ ui::Readouts makeReadouts(const Simulation& simulation, const ui::FrameTimes& ti
     r.continuous = simulation.params().method == physics::Method::Continuous;
     r.untilConverged = simulation.params().solver == physics::Solver::UntilConverged;
     r.passCap = simulation.params().passes;
+    r.globalSolve = simulation.params().solver == physics::Solver::Lcp;
     r.cappedSinceRestart = simulation.alarms().count(AlarmKind::EventCap);
     for (const AlarmLine& line : simulation.alarms().lines(simulation.world().time)) {
         r.alarms.push_back({line.text, line.hint, line.lit});
