@@ -5,6 +5,8 @@
 // The pile lands first (--warm-up simulated seconds, position based). A row gives ms
 // per solver step (median of the repetitions), impacts and bisection iterations per
 // solver step, and the ratio to the position method on the same state.
+// With --solvers: slide 14's solvers instead, position based, on the same states
+// (until-converged with K = 100), with passes and LCP sweeps per solver step.
 //   usage: spheres_bench_methods --help
 #include <cstdio>
 #include <cstdlib>
@@ -22,6 +24,7 @@ struct Options {
     double warmUp = 1.5;  // s simulated: the pile has landed
     double block = 1.0;   // s of wall time per repetition (at least 3 time steps)
     int repetitions = 3;
+    bool solvers = false;  // slide 14's solvers instead of slide 7's answers
 };
 
 const bench::Usage kUsage{"spheres_bench_methods",
@@ -31,7 +34,8 @@ const bench::Usage kUsage{"spheres_bench_methods",
     "  --n LIST       sphere counts (default 1k,10k)\n"
     "  --scene NAME   gas or pile (default both)\n"
     "  --warm-up S    simulated seconds of the pile before timing (default 1.5)\n"
-    "  --reps R       timed repetitions (default 3)\n"};
+    "  --reps R       timed repetitions (default 3)\n"
+    "  --solvers      slide 14's solvers (sequential, until-converged, simultaneous, lcp) instead\n"};
 
 [[noreturn]] void usageError(const std::string& why) { bench::usageError(kUsage, why); }
 
@@ -40,6 +44,10 @@ Options parseOptions(int argc, char** argv) {
     for (int k = 1; k < argc; ++k) {
         const std::string option = argv[k];
         bench::helpIfAsked(kUsage, option);
+        if (option == "--solvers") {
+            o.solvers = true;
+            continue;
+        }
         if (k + 1 >= argc) usageError(option + ": expected a value after it");
         const std::string value = argv[++k];
         std::vector<int> numbers;
@@ -73,6 +81,13 @@ struct Method {
     std::vector<std::string> settings;
 };
 
+const std::vector<Method> kSolvers = {
+    {"sequential, K = 4 (the lecture's)", {"solver=sequential"}},
+    {"until-converged, K = 100", {"solver=until-converged", "passes=100"}},
+    {"simultaneous, K = 4", {"solver=simultaneous"}},
+    {"lcp", {"solver=lcp"}},
+};
+
 const std::vector<Method> kMethods = {
     {"position (projection)", {"method=position"}},
     {"reflection", {"method=reflection"}},
@@ -83,6 +98,7 @@ const std::vector<Method> kMethods = {
 struct Timing {
     double msPerStep = 0.0;  // ms per solver step, median
     double events = 0.0, iterations = 0.0, capped = 0.0;  // per solver step
+    double passes = 0.0, sweeps = 0.0;                    // per solver step
 };
 
 Timing timeMethod(const scenes::Scene& base, const Method& method, const physics::World& start, const Options& o) {
@@ -105,6 +121,8 @@ Timing timeMethod(const scenes::Scene& base, const Method& method, const physics
         timing.events = double(stats.events) / solverSteps;
         timing.iterations = double(stats.toiIterations) / solverSteps;
         timing.capped = double(stats.cappedSteps) / solverSteps;
+        timing.passes = double(stats.passesUsed) / solverSteps;
+        timing.sweeps = double(stats.lcpSweeps) / solverSteps;
     }
     timing.msPerStep = bench::median(perStep);
     return timing;
@@ -114,9 +132,16 @@ Timing timeMethod(const scenes::Scene& base, const Method& method, const physics
 
 int main(int argc, char** argv) {
     const Options o = parseOptions(argc, argv);
-    std::printf("Slide 7's answers, one thread; %s; load %s\n\n", bench::cpuModel().c_str(), bench::loadAverage().c_str());
-    std::printf("| scene | N | method | ms per solver step | × position | impacts per step | bisection iterations per step | capped steps |\n");
-    std::printf("|---|---:|---|---:|---:|---:|---:|---:|\n");
+    const std::vector<Method>& rows = o.solvers ? kSolvers : kMethods;
+    std::printf("%s, one thread; %s; load %s\n\n", o.solvers ? "Slide 14's solvers" : "Slide 7's answers",
+                bench::cpuModel().c_str(), bench::loadAverage().c_str());
+    if (o.solvers) {
+        std::printf("| scene | N | solver | ms per solver step | × sequential | passes per step | LCP sweeps per step |\n");
+        std::printf("|---|---:|---|---:|---:|---:|---:|\n");
+    } else {
+        std::printf("| scene | N | method | ms per solver step | × position | impacts per step | bisection iterations per step | capped steps |\n");
+        std::printf("|---|---:|---|---:|---:|---:|---:|---:|\n");
+    }
     for (const std::string& name : o.scenes) {
         for (int count : o.counts) {
             scenes::Scene scene = sceneOf(name, count);
@@ -126,12 +151,18 @@ int main(int argc, char** argv) {
                 for (double t = 0.0; t < o.warmUp; t += scene.params.timeStep) physics::step(start, scene.params);
             }
             double position = 0.0;
-            for (const Method& method : kMethods) {
+            for (const Method& method : rows) {
                 const Timing t = timeMethod(scene, method, start, o);
                 if (position == 0.0) position = t.msPerStep;
-                std::printf("| %s | %s | %s | %.3f | %.2f | %.1f | %.0f | %.0f %% |\n", name.c_str(),
-                            bench::grouped(count).c_str(), method.label, t.msPerStep, t.msPerStep / position, t.events,
-                            t.iterations, 100.0 * t.capped);
+                if (o.solvers) {
+                    std::printf("| %s | %s | %s | %.3f | %.2f | %.1f | %.0f |\n", name.c_str(),
+                                bench::grouped(count).c_str(), method.label, t.msPerStep, t.msPerStep / position,
+                                t.passes, t.sweeps);
+                } else {
+                    std::printf("| %s | %s | %s | %.3f | %.2f | %.1f | %.0f | %.0f %% |\n", name.c_str(),
+                                bench::grouped(count).c_str(), method.label, t.msPerStep, t.msPerStep / position,
+                                t.events, t.iterations, 100.0 * t.capped);
+                }
                 std::fflush(stdout);
             }
         }
