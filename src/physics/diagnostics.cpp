@@ -128,7 +128,10 @@ std::size_t spheresHeldInMidAir(const World& world, const Params& params) {
     for (std::size_t i : order) {
         carried[i] = onAPlane(world, i, down) ||
                      std::any_of(lower[i].begin(), lower[i].end(), [&](std::uint32_t j) { return carried[j]; });
-        held += !carried[i] && touchesASphere[i] && world.contactState[i] == ContactState::Static;
+        // At rest: a static contact, and no faster than epsilon (spheres falling together touch
+        // statically too: a falling lattice is not held).
+        held += !carried[i] && touchesASphere[i] && world.contactState[i] == ContactState::Static &&
+                glm::length(world.velocity[i]) <= params.epsilon;
     }
     return held;
 }
