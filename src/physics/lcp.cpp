@@ -45,18 +45,24 @@ void gatherContacts(World& world, const Params& params, std::vector<LcpContact>&
     const Workspace& ws = world.workspace;
     const std::vector<SpherePair>& pairs = pairsAsVisited(world, params);
     contacts.clear();
-    const auto add = [&](std::uint32_t i, std::int64_t j, const glm::dvec3& u) {
-        LcpContact c{i, j, u, 0.0, 0.0, false};
+    const auto add = [&](std::uint32_t i, std::int64_t j, std::int32_t other, const glm::dvec3& u, double depth) {
+        LcpContact c{i, j, other, u, depth, 0.0, 0.0, false};
         const double approach = relativeNormal(world, c);  // m/s, < 0 approaching
         c.isStatic = std::abs(approach) <= params.epsilon;
         c.target = approach < 0.0 && !c.isStatic ? -params.beta * approach : 0.0;
         contacts.push_back(c);
     };
     for (std::size_t k = 0; k < pairs.size(); ++k) {
-        if (ws.pairTouches[k]) add(pairs[k].i, pairs[k].j, ws.pairContacts[k].u);
+        if (ws.pairTouches[k]) {
+            add(pairs[k].i, pairs[k].j, std::int32_t(pairs[k].j), ws.pairContacts[k].u, ws.pairContacts[k].depth);
+        }
     }
     for (std::uint32_t i = 0; i < world.size(); ++i) {
-        for (std::uint32_t w = ws.wallStart[i]; w < ws.wallStart[i + 1]; ++w) add(i, -1, ws.wallContacts[w].face.normal);
+        for (std::uint32_t w = ws.wallStart[i]; w < ws.wallStart[i + 1]; ++w) {
+            const Plane& face = ws.wallContacts[w].face;
+            const double depth = world.radius[i] - glm::dot(world.position[i] - face.point, face.normal);  // m
+            add(i, -1, -1 - std::int32_t(ws.wallContacts[w].plane), face.normal, depth);
+        }
     }
 }
 
@@ -90,16 +96,33 @@ void dampTangential(World& world, const Params& params, const std::vector<LcpCon
     }
 }
 
+// With world.recordContacts: each contact that pushed, or was static, as a ContactEvent
+// whose velocities are those before and after the whole solve (the others' shares in).
+void logContacts(World& world, const std::vector<LcpContact>& contacts, const std::vector<glm::dvec3>& before,
+                 int pass) {
+    for (const LcpContact& c : contacts) {
+        if (c.lambda <= 0.0 && !c.isStatic) continue;
+        const std::size_t j = c.j >= 0 ? std::size_t(c.j) : 0;
+        const glm::dvec3 none(0.0);
+        world.contacts.push_back({c.i, c.other, pass, !c.isStatic, c.u, world.position[c.i] - world.radius[c.i] * c.u,
+                                  c.depth, {before[c.i], c.j >= 0 ? before[j] : none},
+                                  {world.velocity[c.i], c.j >= 0 ? world.velocity[j] : none},
+                                  {world.mass[c.i], c.j >= 0 ? world.mass[j] : 0.0}});
+    }
+}
+
 }  // namespace
 
-void solveContactsTogether(World& world, const Params& params, StepStats& stats) {
+void solveContactsTogether(World& world, const Params& params, StepStats& stats, int pass) {
     std::vector<LcpContact>& contacts = world.workspace.lcpContacts;
     gatherContacts(world, params, contacts);
     if (contacts.empty()) return;
+    if (world.recordContacts) world.workspace.passStart = world.velocity;
     double residual = 0.0;  // m/s
     stats.lcpSweeps += std::uint64_t(projectedGaussSeidel(world, contacts, residual));
     stats.lcpResidual = std::max(stats.lcpResidual, residual);
     dampTangential(world, params, contacts);
+    if (world.recordContacts) logContacts(world, contacts, world.workspace.passStart, pass);
     for (const LcpContact& c : contacts) {
         if (c.lambda <= 0.0 && !c.isStatic) continue;
         const ContactState state = c.isStatic ? ContactState::Static : ContactState::Colliding;

@@ -311,7 +311,7 @@ void respondSimultaneously(World& world, const Params& params, StepStats& stats,
 
 // Slide 14's global approach: every contact findContacts found in one complementarity
 // problem, solved by projected Gauss-Seidel (lcp.cpp).
-void solveContactsTogether(World& world, const Params& params, StepStats& stats);
+void solveContactsTogether(World& world, const Params& params, StepStats& stats, int pass);
 
 // The velocity stage of one pass with the chosen solver, over the contacts findContacts
 // found: in turn (sequential, until-converged), from the same velocities (simultaneous)
@@ -319,7 +319,7 @@ void solveContactsTogether(World& world, const Params& params, StepStats& stats)
 inline void respondWithSolver(World& world, const Params& params, StepStats& stats, int pass) {
     switch (params.solver) {
         case Solver::Simultaneous: respondSimultaneously(world, params, stats, pass); return;
-        case Solver::Lcp: solveContactsTogether(world, params, stats); return;
+        case Solver::Lcp: solveContactsTogether(world, params, stats, pass); return;
         default: respondToAllContacts(world, params, stats, pass); return;
     }
 }

@@ -112,7 +112,9 @@ struct ContinuousWorkspace {
 struct LcpContact {
     std::uint32_t i = 0;
     std::int64_t j = -1;        // the other sphere, or -1: a plane
+    std::int32_t other = -1;    // as ContactEvent::other: j, or -1 - (plane index)
     glm::dvec3 u{0.0};          // unit, from j to i
+    double depth = 0.0;         // m, the overlap when found
     double target = 0.0;        // m/s: the least relative normal velocity after
     double lambda = 0.0;        // kg m/s: its impulse, >= 0
     bool isStatic = false;      // |relative normal speed| <= epsilon before (slide 13)

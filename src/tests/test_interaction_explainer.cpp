@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <glm/geometric.hpp>
 #include <string>
 
@@ -245,4 +246,35 @@ TEST(ContactExplanation, NamesSlideSevensAnswers) {
     EXPECT_TRUE(hasLine(lines, "continuous: answered at the instant of contact"));
 }
 
+// Slide 14's global solve: each contact is logged with the velocities before and after the
+// whole solve, and the explanation says that the others' shares are in them (Bernoulli's
+// problem: sphere 0 from (0, 0, -1) to (0, 0, 0.2), test_multiple_collisions.cpp).
+TEST(ContactExplanation, SaysALcpContactWasSolvedWithTheOthers) {
+    physics::Params params;
+    params.method = physics::Method::VelocityBased;
+    params.solver = physics::Solver::Lcp;
+    params.gravity = glm::dvec3(0.0);
+    params.alpha = params.beta = params.mu = 1.0;
+    params.epsilon = 0.0;
+    params.substeps = 1;
+    const double s3 = std::sqrt(3.0) / 2.0;
+    physics::World world;
+    world.addSphere({0.0, 0.0, 0.2 * s3}, {0.0, 0.0, -1.0}, 0.1, 1.0);
+    world.addSphere({-0.1, 0.0, 0.0}, {0.0, 0.0, 0.0}, 0.1, 1.0);
+    world.addSphere({0.1, 0.0, 0.0}, {0.0, 0.0, 0.0}, 0.1, 1.0);
+    world.recordContacts = true;
+    physics::step(world, params);
+    int bounces = 0;
+    for (const physics::ContactEvent& event : world.contacts) {
+        if (event.i != 0 || !event.bounce) continue;
+        ++bounces;
+        expectVector(event.velocityBefore[0], {0.0, 0.0, -1.0});
+        expectVector(event.velocityAfter[0], {0.0, 0.0, 0.2}, 1e-9);
+        const auto lines = app::explanationLines(app::explainContact(event, params), params, 0);
+        EXPECT_TRUE(hasLine(lines, "lcp (slide 14): solved together with every touching contact"));
+    }
+    EXPECT_EQ(bounces, 2);
+}
+
 }  // namespace
+

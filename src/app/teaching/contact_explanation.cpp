@@ -99,7 +99,13 @@ void instantLine(std::vector<Line>& lines, const ContactExplanation& e, const ph
                p.solverStep()));
 }
 
-void matchLine(std::vector<Line>& lines, const ContactExplanation& e) {
+void matchLine(std::vector<Line>& lines, const ContactExplanation& e, const physics::Params& p) {
+    if (p.solver == physics::Solver::Lcp) {
+        add(lines, Line::Kind::Note,
+            format("lcp (slide 14): solved together with every touching contact; the velocities after hold the "
+                   "others' shares too (%.3g m/s from the formula for this contact alone)", e.mismatch));
+        return;
+    }
     if (e.mismatch <= 1e-9 * std::max(1.0, glm::length(e.velocityBefore[0]) + glm::length(e.velocityBefore[1]))) {
         add(lines, Line::Kind::Result, "the solver's result: the same");
     } else {
@@ -136,7 +142,7 @@ void planeLines(const ContactExplanation& e, const physics::Params& p, int boxPl
                    clean(e.before[0].normal), vec(e.predicted[0]).c_str()));
     }
     add(lines, Line::Kind::Formula, "after:   " + splitText("v", e.after[0], "n"));
-    matchLine(lines, e);
+    matchLine(lines, e, p);
     add(lines, Line::Kind::Heading, "Position correction");
     if (e.correction == PositionCorrection::Projection && e.reflected) {
         add(lines, Line::Kind::Formula,
@@ -195,7 +201,7 @@ void pairLines(const ContactExplanation& e, const physics::Params& p, std::vecto
     add(lines, Line::Kind::Formula, "v₁ ← " + vec(e.predicted[0]) + ",   v₂ ← " + vec(e.predicted[1]));
     add(lines, Line::Kind::Formula, "after:   " + splitText("v₁", e.after[0], "u"));
     add(lines, Line::Kind::Formula, "         " + splitText("v₂", e.after[1], "u"));
-    matchLine(lines, e);
+    matchLine(lines, e, p);
     add(lines, Line::Kind::Heading,
         e.reflected ? "Slide 7, reflection: position correction by (1 + β) d" : "Slide 13, step 3: position correction");
     if (e.reflected) {
