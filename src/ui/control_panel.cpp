@@ -266,15 +266,14 @@ void readoutsBody(const Readouts& r, const PanelState& state, PanelActions& acti
     ImGui::Text("bounces since restart %llu", static_cast<unsigned long long>(r.bouncesSinceRestart));
     tooltip("Contacts answered as a bounce since the last restart, counted in every pass and substep.");
     if (r.untilConverged) {
-        ImGui::Text("passes used last step %llu (K = %d each), %llu at K",
-                    static_cast<unsigned long long>(r.stats.passesUsed), r.passCap,
-                    static_cast<unsigned long long>(r.stats.passCapHits));
+        ImGui::Text("passes last step %llu (K = %d)", static_cast<unsigned long long>(r.stats.passesUsed), r.passCap);
+        ImGui::Text("solver steps that reached K: %llu", static_cast<unsigned long long>(r.stats.passCapHits));
         tooltip("Until converged: the passes run in the last time step, all substeps, and how many solver steps "
                 "reached K with a contact still approaching (raise K to let them converge).");
     }
     if (r.globalSolve) {
-        ImGui::Text("LCP sweeps last step %llu, residual %.2g m/s", static_cast<unsigned long long>(r.stats.lcpSweeps),
-                    r.stats.lcpResidual);
+        ImGui::Text("LCP sweeps last step %llu", static_cast<unsigned long long>(r.stats.lcpSweeps));
+        ImGui::Text("LCP residual %.2g m/s", r.stats.lcpResidual);
         tooltip("The global solve: projected Gauss-Seidel sweeps over all touching contacts in the last time step, "
                 "and the most any contact ended off its target speed (the tolerance is 1e-12 m/s; a pile needs "
                 "hundreds of sweeps, and at most 1000 are made).");
