@@ -35,7 +35,8 @@ const bench::Usage kUsage{"spheres_bench_methods",
     "  --scene NAME   gas or pile (default both)\n"
     "  --warm-up S    simulated seconds of the pile before timing (default 1.5)\n"
     "  --reps R       timed repetitions (default 3)\n"
-    "  --solvers      slide 14's solvers (sequential, until-converged, simultaneous, lcp) instead\n"};
+    "  --solvers      slide 14's solvers (sequential, until-converged, simultaneous, lcp,\n"
+    "                generalized-reflections) instead\n"};
 
 [[noreturn]] void usageError(const std::string& why) { bench::usageError(kUsage, why); }
 
@@ -86,6 +87,7 @@ const std::vector<Method> kSolvers = {
     {"until-converged, K = 100", {"solver=until-converged", "passes=100"}},
     {"simultaneous, K = 4", {"solver=simultaneous"}},
     {"lcp", {"solver=lcp"}},
+    {"generalized-reflections", {"solver=generalized-reflections"}},
 };
 
 const std::vector<Method> kMethods = {
@@ -98,7 +100,8 @@ const std::vector<Method> kMethods = {
 struct Timing {
     double msPerStep = 0.0;  // ms per solver step, median
     double events = 0.0, iterations = 0.0, capped = 0.0;  // per solver step
-    double passes = 0.0, sweeps = 0.0;                    // per solver step
+    double passes = 0.0, sweeps = 0.0, rounds = 0.0;      // per solver step
+    std::uint64_t roundCaps = 0;                          // passes that reached the cap of rounds
 };
 
 Timing timeMethod(const scenes::Scene& base, const Method& method, const physics::World& start, const Options& o) {
@@ -123,6 +126,8 @@ Timing timeMethod(const scenes::Scene& base, const Method& method, const physics
         timing.capped = double(stats.cappedSteps) / solverSteps;
         timing.passes = double(stats.passesUsed) / solverSteps;
         timing.sweeps = double(stats.lcpSweeps) / solverSteps;
+        timing.rounds = double(stats.reflectionRounds) / solverSteps;
+        timing.roundCaps = stats.reflectionCapHits;
     }
     timing.msPerStep = bench::median(perStep);
     return timing;
@@ -136,8 +141,9 @@ int main(int argc, char** argv) {
     std::printf("%s, one thread; %s; load %s\n\n", o.solvers ? "Slide 14's solvers" : "Slide 7's answers",
                 bench::cpuModel().c_str(), bench::loadAverage().c_str());
     if (o.solvers) {
-        std::printf("| scene | N | solver | ms per solver step | × sequential | passes per step | LCP sweeps per step |\n");
-        std::printf("|---|---:|---|---:|---:|---:|---:|\n");
+        std::printf("| scene | N | solver | ms per solver step | × sequential | passes per step | LCP sweeps per step | "
+                    "reflection rounds per step (capped passes) |\n");
+        std::printf("|---|---:|---|---:|---:|---:|---:|---:|\n");
     } else {
         std::printf("| scene | N | method | ms per solver step | × position | impacts per step | bisection iterations per step | capped steps |\n");
         std::printf("|---|---:|---|---:|---:|---:|---:|---:|\n");
@@ -155,9 +161,9 @@ int main(int argc, char** argv) {
                 const Timing t = timeMethod(scene, method, start, o);
                 if (position == 0.0) position = t.msPerStep;
                 if (o.solvers) {
-                    std::printf("| %s | %s | %s | %.3f | %.2f | %.1f | %.0f |\n", name.c_str(),
+                    std::printf("| %s | %s | %s | %.3f | %.2f | %.1f | %.0f | %.1f (%llu) |\n", name.c_str(),
                                 bench::grouped(count).c_str(), method.label, t.msPerStep, t.msPerStep / position,
-                                t.passes, t.sweeps);
+                                t.passes, t.sweeps, t.rounds, static_cast<unsigned long long>(t.roundCaps));
                 } else {
                     std::printf("| %s | %s | %s | %.3f | %.2f | %.1f | %.0f | %.0f %% |\n", name.c_str(),
                                 bench::grouped(count).c_str(), method.label, t.msPerStep, t.msPerStep / position,

@@ -151,3 +151,25 @@ std::size_t spheresOutsideBox(const World& world, double slack) {
 }
 
 }  // namespace physics
+
+namespace physics {
+
+MirrorAsymmetry mirrorAsymmetry(const World& world, const Plane& mirror) {
+    if (world.size() > kMostMirroredSpheres) return {-1.0, -1.0};
+    const auto reflect = [&](const glm::dvec3& d) { return d - 2.0 * glm::dot(d, mirror.normal) * mirror.normal; };
+    MirrorAsymmetry worst;
+    for (std::size_t i = 0; i < world.size(); ++i) {
+        const glm::dvec3 image = mirror.point + reflect(world.position[i] - mirror.point);  // m
+        std::size_t partner = i;
+        double nearest = glm::length(world.position[i] - image);
+        for (std::size_t k = 0; k < world.size(); ++k) {
+            const double d = glm::length(world.position[k] - image);
+            if (d < nearest) nearest = d, partner = k;
+        }
+        worst.position = std::max(worst.position, nearest);
+        worst.velocity = std::max(worst.velocity, glm::length(world.velocity[partner] - reflect(world.velocity[i])));
+    }
+    return worst;
+}
+
+}  // namespace physics

@@ -33,6 +33,18 @@ std::uint64_t stateHash(const World& world);
 // holds them there: friction on spheres that touch only each other.
 std::size_t spheresHeldInMidAir(const World& world, const Params& params);
 
+// How far the state is from its mirror image in `mirror` (a point and a unit normal):
+// each sphere's partner is the sphere nearest its reflected centre; the largest distance
+// between partner and reflection (m), and between the partner's velocity and the
+// reflected velocity (m/s). Both 0 for a mirror-symmetric state. O(N^2): worlds of at
+// most kMostMirroredSpheres spheres, else both are -1 (not measured).
+struct MirrorAsymmetry {
+    double position = 0.0;  // m
+    double velocity = 0.0;  // m/s
+};
+constexpr std::size_t kMostMirroredSpheres = 2000;
+MirrorAsymmetry mirrorAsymmetry(const World& world, const Plane& mirror);
+
 // Spheres whose centre lies on the wrong side of a box plane by more than `slack` (m).
 std::size_t spheresOutsideBox(const World& world, double slack);
 

@@ -24,7 +24,14 @@ enum class Solver {
     UntilConverged,  // sequential passes until no touching contact approaches, K the cap
     Simultaneous,    // pairwise Jacobi: each pass answers every contact from the same velocities
     Lcp,             // global: one complementarity problem over every touching contact (lcp.cpp)
+    GeneralizedReflections,  // Smith et al. 2012: the approaching contacts only, until none approaches
 };
+
+// Whether the solver answers a pass's contacts together, from contacts found first
+// (simultaneous, lcp, generalized reflections), rather than one pair at a time.
+constexpr bool solvesTogether(Solver solver) {
+    return solver == Solver::Simultaneous || solver == Solver::Lcp || solver == Solver::GeneralizedReflections;
+}
 
 // m/s: until-converged stops once no touching contact approaches faster than this.
 constexpr double kConvergedApproachSpeed = 1e-9;

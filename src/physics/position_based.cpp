@@ -64,7 +64,8 @@ StepStats stepWithPositionResponse(World& world, const Params& params, double h,
     {
         const StageTimer timer(stats.passesSeconds);
         findWallClearances(world, params);
-        const bool together = params.solver == Solver::Simultaneous || params.solver == Solver::Lcp;
+        beginMeasuringImpacts(world);
+        const bool together = solvesTogether(params.solver);
         runPasses(world, params, stats, [&](int pass) {
             if (together) {
                 findContacts(world, params);
@@ -73,6 +74,7 @@ StepStats stepWithPositionResponse(World& world, const Params& params, double h,
             particlesVelocityAndPosition(world, params, stats, pass, response, !together);  // B
             wallsVelocityAndPosition(world, params, stats, pass, response, !together);      // C
         });
+        endMeasuringImpacts(world, stats);
     }
     return stats;
 }

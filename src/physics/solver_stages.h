@@ -313,13 +313,19 @@ void respondSimultaneously(World& world, const Params& params, StepStats& stats,
 // problem, solved by projected Gauss-Seidel (lcp.cpp).
 void solveContactsTogether(World& world, const Params& params, StepStats& stats, int pass);
 
+// Smith et al.'s generalized reflections: the contacts that approach, solved together
+// (elastic, blended with inelastic for beta < 1), again until none approaches
+// (generalized_reflections.cpp).
+void reflectGeneralized(World& world, const Params& params, StepStats& stats, int pass);
+
 // The velocity stage of one pass with the chosen solver, over the contacts findContacts
 // found: in turn (sequential, until-converged), from the same velocities (simultaneous)
-// or together (lcp).
+// or together (lcp, generalized reflections).
 inline void respondWithSolver(World& world, const Params& params, StepStats& stats, int pass) {
     switch (params.solver) {
         case Solver::Simultaneous: respondSimultaneously(world, params, stats, pass); return;
         case Solver::Lcp: solveContactsTogether(world, params, stats, pass); return;
+        case Solver::GeneralizedReflections: reflectGeneralized(world, params, stats, pass); return;
         default: respondToAllContacts(world, params, stats, pass); return;
     }
 }
@@ -331,6 +337,12 @@ bool contactsStillApproach(World& world, const Params& params);
 // Slide 14, "multiple collisions": runs pass(k) for k = 0, 1, ... K - 1, or with the
 // until-converged solver only until no touching contact approaches (K the cap: a step
 // that reaches it is counted). Counts the passes run.
+// With World::measureImpacts, the velocities and touching contacts before the velocity
+// stage (impact_properties.cpp), and what the stage did to them, into stats.impacts. A
+// no-op without it.
+void beginMeasuringImpacts(World& world);
+void endMeasuringImpacts(World& world, StepStats& stats);
+
 template <class Pass>
 void runPasses(World& world, const Params& params, StepStats& stats, const Pass& pass) {
     const bool untilConverged = params.solver == Solver::UntilConverged;

@@ -217,8 +217,7 @@ int automaticMany() {
 // Whether automatic mode chooses this world's threads (AutomaticThreads).
 bool threadsChosenAutomatically(const World& world, const Params& params) {
     return params.threads == 0 && world.size() >= kAutomaticParallelMinSpheres && automaticMany() > 1 &&
-           params.method != Method::Continuous && params.solver != Solver::Simultaneous &&
-           params.solver != Solver::Lcp;
+           params.method != Method::Continuous && !solvesTogether(params.solver);
 }
 
 }  // namespace
@@ -226,8 +225,7 @@ bool threadsChosenAutomatically(const World& world, const Params& params) {
 int solverThreads(const World& world, const Params& params) {
     // Impacts in time order are one sequence: the continuous method runs on one thread; so
     // does the simultaneous solver, whose sums per sphere then add in one order.
-    if (world.size() < kParallelMinSpheres || params.method == Method::Continuous ||
-        params.solver == Solver::Simultaneous || params.solver == Solver::Lcp) {
+    if (world.size() < kParallelMinSpheres || params.method == Method::Continuous || solvesTogether(params.solver)) {
         return 1;
     }
     if (params.threads > 0) return std::min(params.threads, kMostSolverThreads);
@@ -248,6 +246,9 @@ StepStats& StepStats::operator+=(const StepStats& o) {
     passCapHits += o.passCapHits;
     lcpSweeps += o.lcpSweeps;
     lcpResidual = std::max(lcpResidual, o.lcpResidual);
+    reflectionRounds += o.reflectionRounds;
+    reflectionCapHits += o.reflectionCapHits;
+    impacts += o.impacts;
     events += o.events;
     toiIterations += o.toiIterations;
     cappedSteps += o.cappedSteps;

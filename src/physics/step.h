@@ -2,6 +2,7 @@
 // The one verb of the solver: advance the world by one time step h.
 #include <cstdint>
 
+#include "physics/impact_properties.h"
 #include "physics/params.h"
 #include "physics/world.h"
 
@@ -27,6 +28,10 @@ struct StepStats {
     // left (m/s, the most a contact ended off its target; max, not summed).
     std::uint64_t lcpSweeps = 0;
     double lcpResidual = 0.0;
+    // Generalized reflections: rounds of { active set, solve } run, and the passes that
+    // stopped at the cap of rounds with a contact still approaching.
+    std::uint64_t reflectionRounds = 0;
+    std::uint64_t reflectionCapHits = 0;
     std::uint64_t events = 0;
     std::uint64_t toiIterations = 0;
     std::uint64_t cappedSteps = 0;
@@ -39,6 +44,8 @@ struct StepStats {
     // was measured slower than it (AutomaticThreads), 0 none. Set by step(), not summed.
     int threads = 1;
     int slowerThreads = 0;
+    // With World::measureImpacts: what the velocity stages did (not the continuous method).
+    ImpactProperties impacts;
     StepStats& operator+=(const StepStats& o);
 };
 

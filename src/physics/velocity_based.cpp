@@ -41,8 +41,10 @@ StepStats stepVelocityBased(World& world, const Params& params, double h) {
     {
         const StageTimer timer(stats.passesSeconds);
         findContacts(world, params);  // positions stay put until D
+        beginMeasuringImpacts(world);
         runPasses(world, params, stats, [&](int pass) { respondWithSolver(world, params, stats, pass); });  // B
         cancelPenetratingVelocity(world, params);  // C
+        endMeasuringImpacts(world, stats);
     }
     integratePosition(world, params, h);  // D
     return stats;

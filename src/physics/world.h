@@ -8,6 +8,7 @@
 #include <glm/vec4.hpp>
 
 #include "physics/automatic_threads.h"
+#include "physics/impact_properties.h"
 
 namespace physics {
 
@@ -172,9 +173,16 @@ struct Workspace {
     std::vector<glm::dvec3> passStart;
     std::vector<glm::dvec3> velocityChange;
     std::vector<LcpContact> lcpContacts;  // the global solve's contacts
+    // Generalized reflections: a round's active set (copies, and their index in
+    // lcpContacts) and its inelastic and elastic impulses (kg m/s).
+    std::vector<LcpContact> activeContacts;
+    std::vector<std::uint32_t> activeIndex;
+    std::vector<double> inelasticImpulse;
+    std::vector<double> elasticImpulse;
     // Params::threads = 0: the count in use, measured against the other (step()).
     AutomaticThreads automaticThreads;
     ContinuousWorkspace continuous;
+    ImpactScratch impacts;  // World::measureImpacts
 };
 
 struct World {
@@ -195,6 +203,9 @@ struct World {
 
     bool recordContacts = false;        // fill `contacts` (costs time: off unless shown)
     std::vector<ContactEvent> contacts;  // every response of the last step(), all substeps
+    // Measure the velocity stage's impact properties (impact_properties.h) into
+    // StepStats::impacts (costs a pass over the candidate pairs: off unless shown).
+    bool measureImpacts = false;
 
     Workspace workspace;
 

@@ -387,6 +387,12 @@ const std::vector<MeterEntry>& meterTable() {
          world([](const World& w, const Scene&) { return shareIn(w, physics::ContactState::Colliding); })},
         {{"gravity_per_step", "m/s", "|g| h / substeps, the speed gravity adds in one solver step"},
          world([](const World&, const Scene& s) { return glm::length(s.params.gravity) * s.params.solverStep(); })},
+        {{"mirror_asymmetry", "m/s", "the largest velocity asymmetry in the scene's mirror planes (0: symmetric)"},
+         world([](const World& w, const Scene& s) {
+             double worst = 0.0;
+             for (const physics::Plane& m : s.mirrors) worst = std::max(worst, physics::mirrorAsymmetry(w, m).velocity);
+             return worst;
+         })},
         {{"setting", "", "the value of the parameter `name`"},
          [](const Claim& c, const Scene& s) {
              const Parameter* p = findParameter(c.parameter);
@@ -397,6 +403,8 @@ const std::vector<MeterEntry>& meterTable() {
         {{"y", "m", "a sphere's centre y"}, sphere([](const World& w, std::size_t i) { return w.position[i].y; })},
         {{"z", "m", "a sphere's centre z"}, sphere([](const World& w, std::size_t i) { return w.position[i].z; })},
         {{"vx", "m/s", "a sphere's velocity x"}, sphere([](const World& w, std::size_t i) { return w.velocity[i].x; })},
+        {{"mass", "kg", "a sphere's mass"}, sphere([](const World& w, std::size_t i) { return w.mass[i]; })},
+        {{"vy", "m/s", "a sphere's velocity y"}, sphere([](const World& w, std::size_t i) { return w.velocity[i].y; })},
         {{"vz", "m/s", "a sphere's velocity z"}, sphere([](const World& w, std::size_t i) { return w.velocity[i].z; })},
         {{"speed", "m/s", "a sphere's speed"}, sphere([](const World& w, std::size_t i) { return glm::length(w.velocity[i]); })},
         {{"plane_distance", "m", "a sphere's centre's signed distance to planes[plane] (0: the floor)"},

@@ -192,7 +192,8 @@ std::vector<Parameter> makeTable() {
                "at its instant within the step and answered there, in time order (physically "
                "correct, computationally heavy; one thread).",
                param<&Params::method>()),
-        choice("solver", "multiple collisions", {"sequential", "until-converged", "simultaneous", "lcp"},
+        choice("solver", "multiple collisions", {"sequential", "until-converged", "simultaneous", "lcp",
+                                                       "generalized-reflections"},
                static_cast<double>(kDefaults.solver),
                "Slide 14: how the contacts of a step are answered. sequential: K passes, one "
                "contact at a time in the pair order, each seeing what the previous ones did (the "
@@ -203,7 +204,10 @@ std::vector<Parameter> makeTable() {
                "several sides takes every change at once (one thread). lcp: the global approach, one "
                "complementarity problem over every touching contact (impulses only push, a bounce "
                "leaves at \u03b2 times its approach), solved by projected Gauss-Seidel to 1e-12 m/s; "
-               "\u03b1 and \u03bc then act on each contact's tangential velocity (one thread).",
+               "\u03b1 and \u03bc then act on each contact's tangential velocity (one thread). "
+               "generalized-reflections: Smith et al. 2012, the contacts that approach solved together "
+               "elastically (blended with the inelastic answer for \u03b2 < 1), again until none "
+               "approaches: touching spheres may break away, as a cradle's last ball does (one thread).",
                param<&Params::solver>()),
         onlyWith(isContinuous, choice("toi", "time of impact", {"closed-form", "bisection"},
                static_cast<double>(kDefaults.timeOfImpact),

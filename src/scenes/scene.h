@@ -99,6 +99,9 @@ struct Scene {
     std::string description;  // 1-2 sentences for the UI: what to look at, which slider to move
     std::optional<Box> box;   // none: no walls but the extra planes
     std::vector<physics::Plane> planes;  // extra planes, unit normals pointing into the free side
+    // Mirror planes the scene is symmetric in (key "mirror"): the demo measures how far
+    // the state drifts from its mirror image (Smith et al.'s symmetry, slide 14).
+    std::vector<physics::Plane> mirrors;
     physics::Params params;
     std::uint64_t seed = 1;
     std::vector<Sphere> spheres;

@@ -23,7 +23,8 @@ using Keys = std::vector<std::string_view>;
 
 const Keys kSceneKeys = {"title", "slide",   "description", "box",      "planes", "parameters",
                          "seed",  "spheres", "generate",    "emitters", "time",   "steps",
-                         "claims", "compare"};
+                         "claims", "compare", "mirror"};
+const Keys kMirrorKeys = {"point", "normal"};
 const Keys kBoxKeys = {"size", "tilt"};
 const Keys kPlaneKeys = {"point", "normal", "thickness"};
 const Keys kSphereKeys = {"p", "v", "r", "m"};
@@ -93,6 +94,7 @@ class SceneReader {
         scene.description = string(root, "", "description");
         if (const Json* box = find(root, "box")) scene.box = readBox(*box, "/box");
         scene.planes = readList(root, "planes", &SceneReader::readPlane);
+        scene.mirrors = readList(root, "mirror", &SceneReader::readMirror);
         if (const Json* seed = find(root, "seed")) scene.seed = readSeed(*seed, "/seed");
         scene.spheres = readList(root, "spheres", &SceneReader::readSphere);
         scene.generators = readList(root, "generate", &SceneReader::readGenerator);
@@ -255,6 +257,11 @@ class SceneReader {
             plane.thickness = nonNegative(*thickness, pointer + "/thickness", "m");
         }
         return plane;
+    }
+
+    physics::Plane readMirror(const Json& v, const std::string& pointer) const {
+        checkKeys(v, pointer, kMirrorKeys);
+        return readPlane(v, pointer);
     }
 
     Sphere readSphere(const Json& v, const std::string& pointer) const {
@@ -535,12 +542,11 @@ std::string boxText(const std::optional<Box>& box) {
     return "{\"size\": " + vectorText(box->size) + ", \"tilt\": " + dump(box->tilt) + "}";
 }
 
-std::string planesText(const physics::World& world) {
+std::string planesText(const std::vector<physics::Plane>& planes, std::size_t first) {
     std::string out;
-    for (std::size_t k = static_cast<std::size_t>(world.boxPlaneCount); k < world.planes.size();
-         ++k) {
+    for (std::size_t k = first; k < planes.size(); ++k) {
         out += out.empty() ? "\n    " : ",\n    ";
-        const physics::Plane& plane = world.planes[k];
+        const physics::Plane& plane = planes[k];
         out +=
             "{\"point\": " + vectorText(plane.point) + ", \"normal\": " + vectorText(plane.normal);
         if (plane.thickness > 0) out += ", \"thickness\": " + dump(plane.thickness);
@@ -656,7 +662,8 @@ std::string sceneText(const Scene& scene, const physics::World& world) {
         << "  \"slide\": " << dump(scene.slide) << ",\n"
         << "  \"description\": " << dump(scene.description) << ",\n"
         << "  \"box\": " << boxText(scene.box) << ",\n"
-        << "  \"planes\": " << planesText(world) << ",\n"
+        << "  \"planes\": " << planesText(world.planes, std::size_t(world.boxPlaneCount)) << ",\n"
+        << (scene.mirrors.empty() ? "" : "  \"mirror\": " + planesText(scene.mirrors, 0) + ",\n")
         << "  \"parameters\": " << parametersText(scene) << ",\n"
         << "  \"seed\": " << scene.seed << ",\n"
         << "  \"time\": " << dump(world.time) << ",\n"

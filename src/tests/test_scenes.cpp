@@ -297,7 +297,9 @@ TEST(Presets, OnePerLecturePhenomenonInLectureOrder) {
         "05_billiard",             "06_gas",               "07_inclined_plane",
         "08_newtons_cradle",       "09_column",            "10_pyramid",
         "11_pile",                 "12_rain",              "13_tunnelling",
-        "14_three_answers",        "15_fast_gas"};
+        "14_three_answers",        "15_fast_gas",          "16_bernoulli",
+        "17_squeeze",              "18_two_strikers",      "19_symmetric_break",
+        "20_stacked_drop"};
     EXPECT_EQ(scenes::listPresets(), expected);
     EXPECT_TRUE(std::filesystem::exists(scenes::presetPath("01_bounce_response_only")));
     EXPECT_EQ(scenes::presetPath("03_head_on.json"), scenes::presetPath("03_head_on"));

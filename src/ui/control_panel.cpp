@@ -99,6 +99,24 @@ void wrappedColored(const ImVec4& color, const std::string& text) {
     ImGui::PopStyleColor();
 }
 
+// Slide 14's five properties, a check mark (green), a cross (red) or a dash (untested)
+// before each, its number after.
+void propertiesSection(const Readouts& r) {
+    if (r.properties.empty()) return;
+    ImGui::TextDisabled("five properties since restart (Smith et al.)");
+    tooltip("What a simultaneous-impact answer may keep (slide 14's global approach), measured on the contacts of "
+            "every step since the last restart. Compare solvers side by side on one of slide 14's presets.");
+    for (const Readouts::Property& p : r.properties) {
+        static const ImVec4 kColours[] = {{0.45f, 0.9f, 0.45f, 1.0f}, {1.0f, 0.4f, 0.35f, 1.0f}, {0.6f, 0.6f, 0.6f, 1.0f}};
+        static const char* kMarks[] = {"\u2713", "\u2717", "-"};
+        const int v = std::clamp(p.verdict, 0, 2);
+        ImGui::TextColored(kColours[v], "%s %s", kMarks[v], p.name.c_str());
+        tooltip(p.meaning.c_str());
+        ImGui::SameLine();
+        ImGui::TextWrapped("%s", p.value.c_str());
+    }
+}
+
 // Invariant alarms, red while recent, dimmed once older; the hint under each.
 void alarmsSection(const Readouts& r) {
     if (r.alarms.empty()) return;
@@ -278,6 +296,13 @@ void readoutsBody(const Readouts& r, const PanelState& state, PanelActions& acti
                 "and the most any contact ended off its target speed (the tolerance is 1e-12 m/s; a pile needs "
                 "hundreds of sweeps, and at most 1000 are made).");
     }
+    if (r.reflections) {
+        ImGui::Text("reflection rounds last step %llu, capped %llu",
+                    static_cast<unsigned long long>(r.stats.reflectionRounds),
+                    static_cast<unsigned long long>(r.stats.reflectionCapHits));
+        tooltip("Generalized reflections: rounds of { the contacts that approach, solved together } in the last "
+                "time step, and the passes that stopped at 100 rounds with a contact still approaching.");
+    }
     if (r.continuous) {
         ImGui::Text("impacts last step %llu, TOI iterations %llu", static_cast<unsigned long long>(r.stats.events),
                     static_cast<unsigned long long>(r.stats.toiIterations));
@@ -287,6 +312,7 @@ void readoutsBody(const Readouts& r, const PanelState& state, PanelActions& acti
         ImGui::Text("steps at the impact cap since restart %llu", static_cast<unsigned long long>(r.cappedSinceRestart));
         tooltip("Solver steps that reached the most impacts per step and were projected from there.");
     }
+    propertiesSection(r);
     ImGui::Text("kinetic %.5g J", d.kinetic);
     ImGui::Text("potential %.5g J", d.potential);
     ImGui::Text("total %.6g J", d.total);

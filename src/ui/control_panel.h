@@ -79,8 +79,16 @@ struct Readouts {
     bool continuous = false;                // the continuous method: its impacts are shown
     bool untilConverged = false;            // slide 14's until-converged solver: its passes are shown
     bool globalSolve = false;               // slide 14's lcp solver: its sweeps and residual are shown
+    bool reflections = false;               // generalized reflections: their rounds too
     int passCap = 0;                        // K
     std::uint64_t cappedSinceRestart = 0;   // continuous solver steps that reached the impact cap
+    // Slide 14: Smith et al.'s five properties since restart (app/teaching/impact_report.h);
+    // empty until a contact has been measured.
+    struct Property {
+        std::string name, value, meaning;
+        int verdict = 2;  // 0 kept, 1 broken, 2 untested
+    };
+    std::vector<Property> properties;
     // Invariant alarms (app/alarms.h), most serious first.
     struct Alarm {
         std::string text;

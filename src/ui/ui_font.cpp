@@ -22,7 +22,8 @@ ImFont* loadUiFont(float pixelSize) {
     config.FontDataOwnedByAtlas = false;  // the bytes live in the binary
     config.OversampleH = 2;
     static const ImWchar ranges[] = {0x0020, 0x00FF, 0x0370, 0x03FF,  // Latin-1, Greek (α β ε μ)
-                                     0x2010, 0x22FF, 0};              // punctuation, arrows, maths
+                                     0x2010, 0x22FF,                  // punctuation, arrows, maths
+                                     0x2713, 0x2717, 0};              // check marks (✓ ✗)
     const int size = static_cast<int>(spheres_ui_font_end - spheres_ui_font_begin);
     void* data = const_cast<unsigned char*>(spheres_ui_font_begin);
     return io.Fonts->AddFontFromMemoryTTF(data, size, pixelSize, &config, ranges);

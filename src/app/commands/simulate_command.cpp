@@ -8,6 +8,7 @@
 #include "app/commands/diagnostics_log.h"
 #include "app/commands/progress_line.h"
 #include "app/run/scene_source.h"
+#include "app/teaching/impact_report.h"
 #include "physics/step.h"
 #include "scenes/scene_json.h"
 
@@ -38,13 +39,15 @@ int runSimulate(const SimulateOptions& options) {
     const std::int64_t every = options.every > 0 ? options.every : options.steps;
 
     physics::World world = scenes::buildWorld(scene);
+    world.measureImpacts = world.size() <= physics::kMostMirroredSpheres;
+    ImpactRecord impacts;
     const physics::Params& params = scene.params;
     if (log) log->write(0, world.time, physics::measure(world, params));
     double seconds = 0.0;
     std::optional<ProgressLine> progress(std::in_place, "steps", static_cast<std::uint64_t>(options.steps));
     for (std::int64_t k = 1; k <= options.steps; ++k) {
         const auto start = std::chrono::steady_clock::now();
-        physics::step(world, params);
+        impacts.add(physics::step(world, params).impacts);
         scenes::emitDue(scene, world);  // the course's emitter, as the window and capture do
         seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         if (log && k % every == 0) log->write(static_cast<std::uint64_t>(k), world.time, physics::measure(world, params));
@@ -60,6 +63,11 @@ int runSimulate(const SimulateOptions& options) {
                 world.size(), seconds, options.steps > 0 ? 1e9 * seconds / sphereSteps : 0.0,
                 summarize(physics::measure(world, params)).c_str(),
                 physics::spheresOutsideBox(world, 0.0));
+    if (impacts.total.contacts > 0) {  // slide 14: what the contacts kept
+        std::vector<physics::MirrorAsymmetry> mirrors;
+        for (const physics::Plane& m : scene.mirrors) mirrors.push_back(physics::mirrorAsymmetry(world, m));
+        std::printf("properties: %s\n", propertiesLine(judgeProperties(impacts, mirrors, params)).c_str());
+    }
     if (!options.state.empty()) writeState(options.state, world);
     if (!options.save.empty()) scenes::saveScene(options.save, scene, world);
     return 0;

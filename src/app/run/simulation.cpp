@@ -20,6 +20,7 @@ void Simulation::startFrom(physics::World world) {
     world_ = std::move(world);
     accumulator_ = 0.0;
     lastStats_ = {};
+    impacts_ = {};
     behind_ = false;
     history_.clear();
     overlays_.reset();
@@ -55,6 +56,7 @@ void Simulation::updateRecording() {
     world_.recordContacts =
         (overlayFlags_.needsContacts() || measuring) && world_.size() <= kMaxRecordSpheres;
     if (!world_.recordContacts) world_.contacts.clear();
+    world_.measureImpacts = world_.size() <= physics::kMostMirroredSpheres;
 }
 
 int Simulation::advance(double realSeconds) {
@@ -118,6 +120,7 @@ bool Simulation::beforeStep() {
 
 void Simulation::afterStep() {
     bounces_ += lastStats_.collisions;
+    impacts_.add(lastStats_.impacts);
     const double energyAfter = physics::modifiedEnergy(world_, scene_.params);
     // A sphere added or removed, or energy the app put in, is not the solver's doing.
     const bool checkEnergy = !skipEnergyCheck_ && world_.size() == sizeBefore_;

@@ -7,6 +7,7 @@
 
 #include "app/teaching/alarms.h"
 #include "app/teaching/contact_ghost.h"
+#include "app/teaching/impact_report.h"
 #include "app/run/history.h"
 #include "app/teaching/overlays.h"
 #include "app/teaching/restitution.h"
@@ -66,6 +67,9 @@ public:
     const RestitutionMeter& restitution() const { return restitution_; }
     // Slide 7's ghosts of the selected sphere's last continuous contact.
     const ContactGhosts& contactGhosts() const { return ghosts_; }
+    // Slide 14: what the contacts of every step did since restart (measured up to
+    // physics::kMostMirroredSpheres spheres).
+    const ImpactRecord& impacts() const { return impacts_; }
     // Contacts answered as a bounce (speed above epsilon), every pass and substep, since restart.
     std::uint64_t bouncesSinceRestart() const { return bounces_; }
     // The app itself put energy in (a drag, a throw, an emitted sphere): the next
@@ -94,6 +98,7 @@ private:
     physics::World world_;
     double accumulator_ = 0.0;  // s of simulated time not yet stepped
     physics::StepStats lastStats_;
+    ImpactRecord impacts_;
     bool behind_ = false;
     History history_;
     physics::Diagnostics diagnostics_;

@@ -106,6 +106,13 @@ void matchLine(std::vector<Line>& lines, const ContactExplanation& e, const phys
                    "others' shares too (%.3g m/s from the formula for this contact alone)", e.mismatch));
         return;
     }
+    if (p.solver == physics::Solver::GeneralizedReflections) {
+        add(lines, Line::Kind::Note,
+            format("generalized reflections (slide 14, Smith et al. 2012): solved together with the other approaching "
+                   "contacts, round after round; the velocities after hold their shares too (%.3g m/s from the "
+                   "formula for this contact alone)", e.mismatch));
+        return;
+    }
     if (e.mismatch <= 1e-9 * std::max(1.0, glm::length(e.velocityBefore[0]) + glm::length(e.velocityBefore[1]))) {
         add(lines, Line::Kind::Result, "the solver's result: the same");
     } else {

@@ -100,8 +100,19 @@ ui::Readouts makeReadouts(const Simulation& simulation, const ui::FrameTimes& ti
     r.continuous = simulation.params().method == physics::Method::Continuous;
     r.untilConverged = simulation.params().solver == physics::Solver::UntilConverged;
     r.passCap = simulation.params().passes;
-    r.globalSolve = simulation.params().solver == physics::Solver::Lcp;
+    r.globalSolve = simulation.params().solver == physics::Solver::Lcp ||
+                    simulation.params().solver == physics::Solver::GeneralizedReflections;
+    r.reflections = simulation.params().solver == physics::Solver::GeneralizedReflections;
     r.cappedSinceRestart = simulation.alarms().count(AlarmKind::EventCap);
+    if (simulation.impacts().total.contacts > 0) {
+        std::vector<physics::MirrorAsymmetry> mirrors;
+        for (const physics::Plane& m : simulation.scene().mirrors) {
+            mirrors.push_back(physics::mirrorAsymmetry(simulation.world(), m));
+        }
+        for (const PropertyVerdict& v : judgeProperties(simulation.impacts(), mirrors, simulation.params())) {
+            r.properties.push_back({v.name, v.value, v.meaning, static_cast<int>(v.verdict)});
+        }
+    }
     for (const AlarmLine& line : simulation.alarms().lines(simulation.world().time)) {
         r.alarms.push_back({line.text, line.hint, line.lit});
     }

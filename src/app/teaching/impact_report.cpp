@@ -1,0 +1,129 @@
+#include "app/teaching/impact_report.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace app {
+namespace {
+
+// Relative (momentum, energy) and absolute (m/s, m) slack of a kept property: rounding.
+constexpr double kKeptSlack = 1e-9;
+
+std::string format(const char* pattern, double a, double b = 0.0) {
+    char text[160];
+    std::snprintf(text, sizeof text, pattern, a, b);
+    return text;
+}
+
+PropertyVerdict momentum(const ImpactRecord& r) {
+    PropertyVerdict v{"momentum", "", Verdict::Untested,
+                      "Total momentum of the colliding spheres is kept: |change| / sum m|v| of the clusters that "
+                      "touch no wall (a wall takes momentum)."};
+    if (r.total.momentumScale <= 0.0) {
+        v.value = "no free cluster struck";
+        return v;
+    }
+    v.value = format("change %.1e of sum m|v|", r.worstMomentumChange);
+    v.verdict = r.worstMomentumChange <= kKeptSlack ? Verdict::Kept : Verdict::Broken;
+    return v;
+}
+
+PropertyVerdict energy(const ImpactRecord& r, const physics::Params& params) {
+    PropertyVerdict v{"energy", "", Verdict::Untested,
+                      "Kinetic energy of the struck clusters after / before the contacts of a step: never more "
+                      "(kept exactly at beta = 1 without friction or static contacts)."};
+    if (r.worstEnergyRatio < 0.0) {
+        v.value = "nothing struck";
+        return v;
+    }
+    v.value = r.leastEnergyRatio < r.worstEnergyRatio - kKeptSlack
+                  ? format("after/before %.6f to %.6f", r.leastEnergyRatio, r.worstEnergyRatio)
+                  : format("after/before %.6f", r.worstEnergyRatio);
+    const bool gained = r.worstEnergyRatio > 1.0 + kKeptSlack;
+    const bool lostElastic = params.beta >= 1.0 && r.leastEnergyRatio < 1.0 - kKeptSlack;
+    v.verdict = gained ? Verdict::Broken : Verdict::Kept;
+    if (lostElastic) v.value += " (beta = 1: lost)";
+    return v;
+}
+
+PropertyVerdict symmetry(const std::vector<physics::MirrorAsymmetry>& mirrors) {
+    PropertyVerdict v{"symmetry", "", Verdict::Untested,
+                      "A mirror-symmetric scene stays mirror-symmetric: the farthest any sphere's mirror partner "
+                      "is from its reflected velocity (m/s) and place (m). The scene declares its mirrors."};
+    if (mirrors.empty()) {
+        v.value = "the scene declares no mirror";
+        return v;
+    }
+    physics::MirrorAsymmetry worst;
+    for (const physics::MirrorAsymmetry& m : mirrors) {
+        if (m.velocity < 0.0) {
+            v.value = "too many spheres to measure";
+            return v;
+        }
+        worst.velocity = std::max(worst.velocity, m.velocity);
+        worst.position = std::max(worst.position, m.position);
+    }
+    v.value = format("off by %.2g m/s, %.2g m", worst.velocity, worst.position);
+    v.verdict = worst.velocity <= kKeptSlack && worst.position <= kKeptSlack ? Verdict::Kept : Verdict::Broken;
+    return v;
+}
+
+PropertyVerdict breakAway(const ImpactRecord& r) {
+    PropertyVerdict v{"break-away", "", Verdict::Untested,
+                      "Touching spheres that did not approach may part, as a cradle's last ball does: resting "
+                      "pairs of a struck cluster that separated."};
+    const auto& t = r.total;
+    if (t.restingPairs == 0) {
+        v.value = "no resting pair struck";
+        return v;
+    }
+    v.value = format("%.0f of %.0f resting pairs parted", double(t.brokeAway), double(t.restingPairs));
+    v.verdict = t.brokeAway > 0 ? Verdict::Kept : Verdict::Broken;
+    return v;
+}
+
+PropertyVerdict positivity(const ImpactRecord& r) {
+    PropertyVerdict v{"positivity", "", Verdict::Untested,
+                      "Impulses only push, so no contact still approaches after the contacts of a step: the "
+                      "fastest approach left (m/s)."};
+    if (r.total.contacts == 0) {
+        v.value = "no contact";
+        return v;
+    }
+    v.value = format("fastest approach left %.2g m/s", r.total.fastestApproachAfter);
+    v.verdict = r.total.fastestApproachAfter <= kKeptSlack ? Verdict::Kept : Verdict::Broken;
+    return v;
+}
+
+}  // namespace
+
+void ImpactRecord::add(const physics::ImpactProperties& step) {
+    total += step;
+    if (step.momentumScale > 0.0) {
+        worstMomentumChange = std::max(worstMomentumChange, step.momentumChange / step.momentumScale);
+    }
+    if (step.struck > 0 && step.kineticBefore > 0.0) {
+        const double ratio = step.kineticAfter / step.kineticBefore;
+        worstEnergyRatio = std::max(worstEnergyRatio, ratio);
+        leastEnergyRatio = leastEnergyRatio < 0.0 ? ratio : std::min(leastEnergyRatio, ratio);
+    }
+}
+
+std::vector<PropertyVerdict> judgeProperties(const ImpactRecord& record,
+                                             const std::vector<physics::MirrorAsymmetry>& mirrors,
+                                             const physics::Params& params) {
+    return {momentum(record), energy(record, params), symmetry(mirrors), breakAway(record), positivity(record)};
+}
+
+std::string propertiesLine(const std::vector<PropertyVerdict>& verdicts) {
+    std::string line;
+    for (const PropertyVerdict& v : verdicts) {
+        if (!line.empty()) line += " | ";
+        const char* mark = v.verdict == Verdict::Kept ? "\u2713" : v.verdict == Verdict::Broken ? "\u2717" : "-";
+        line += v.name + " " + mark + " " + v.value;
+    }
+    return line;
+}
+
+}  // namespace app

@@ -1,0 +1,107 @@
+#include "physics/complementarity.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace physics {
+
+double inverseMass(const World& world, const LcpContact& c) {
+    return 1.0 / world.mass[c.i] + (c.j >= 0 ? 1.0 / world.mass[std::size_t(c.j)] : 0.0);
+}
+
+double relativeNormal(const World& world, const LcpContact& c) {
+    const glm::dvec3 other = c.j >= 0 ? world.velocity[std::size_t(c.j)] : glm::dvec3(0.0);
+    return glm::dot(world.velocity[c.i] - other, c.u);
+}
+
+void push(World& world, const LcpContact& c, double impulse) {
+    world.velocity[c.i] += (impulse / world.mass[c.i]) * c.u;
+    if (c.j >= 0) world.velocity[std::size_t(c.j)] -= (impulse / world.mass[std::size_t(c.j)]) * c.u;
+}
+
+void gatherContacts(World& world, const Params& params, bool withSeparating, std::vector<LcpContact>& contacts) {
+    const Workspace& ws = world.workspace;
+    const std::vector<SpherePair>& pairs = pairsAsVisited(world, params);
+    contacts.clear();
+    const auto add = [&](std::uint32_t i, std::int64_t j, std::int32_t other, const glm::dvec3& u, double depth) {
+        LcpContact c{i, j, other, u, depth, 0.0, 0.0, false};
+        const double approach = relativeNormal(world, c);  // m/s, < 0 approaching
+        c.isStatic = std::abs(approach) <= params.epsilon;
+        // A contact that separates faster than epsilon takes no part: held at c+ >= 0 it
+        // could be pushed to 0, and gain lambda c / 2 of energy from nowhere.
+        if (!withSeparating && approach > params.epsilon) return;
+        c.target = approach < 0.0 && !c.isStatic ? -params.beta * approach : 0.0;
+        contacts.push_back(c);
+    };
+    for (std::size_t k = 0; k < pairs.size(); ++k) {
+        if (ws.pairTouches[k]) {
+            add(pairs[k].i, pairs[k].j, std::int32_t(pairs[k].j), ws.pairContacts[k].u, ws.pairContacts[k].depth);
+        }
+    }
+    for (std::uint32_t i = 0; i < world.size(); ++i) {
+        for (std::uint32_t w = ws.wallStart[i]; w < ws.wallStart[i + 1]; ++w) {
+            const Plane& face = ws.wallContacts[w].face;
+            const double depth = world.radius[i] - glm::dot(world.position[i] - face.point, face.normal);  // m
+            add(i, -1, -1 - std::int32_t(ws.wallContacts[w].plane), face.normal, depth);
+        }
+    }
+}
+
+int projectedGaussSeidel(World& world, std::vector<LcpContact>& contacts, double tolerance, int mostSweeps,
+                         double& residual) {
+    int sweeps = 0;
+    do {
+        residual = 0.0;
+        for (LcpContact& c : contacts) {
+            const double error = c.target - relativeNormal(world, c);  // m/s: > 0, too slow apart
+            const double lambda = std::max(0.0, c.lambda + error / inverseMass(world, c));
+            push(world, c, lambda - c.lambda);
+            residual = std::max(residual, c.lambda > 0.0 || lambda > 0.0 ? std::abs(error) : std::max(error, 0.0));
+            c.lambda = lambda;
+        }
+    } while (++sweeps < mostSweeps && residual > tolerance);
+    return sweeps;
+}
+
+void dampTangential(World& world, const Params& params, const std::vector<LcpContact>& contacts) {
+    for (const LcpContact& c : contacts) {
+        if (c.lambda <= 0.0) continue;
+        const glm::dvec3 other = c.j >= 0 ? world.velocity[std::size_t(c.j)] : glm::dvec3(0.0);
+        const glm::dvec3 relative = world.velocity[c.i] - other;
+        const glm::dvec3 tangential = relative - glm::dot(relative, c.u) * c.u;  // m/s
+        const double keep = c.isStatic ? params.mu : params.alpha;
+        const glm::dvec3 impulse = ((keep - 1.0) / inverseMass(world, c)) * tangential;  // kg m/s
+        world.velocity[c.i] += impulse / world.mass[c.i];
+        if (c.j >= 0) world.velocity[std::size_t(c.j)] -= impulse / world.mass[std::size_t(c.j)];
+    }
+}
+
+namespace {
+
+void logContact(World& world, const LcpContact& c, const std::vector<glm::dvec3>& before, int pass) {
+    const std::size_t j = c.j >= 0 ? std::size_t(c.j) : 0;
+    const glm::dvec3 none(0.0);
+    world.contacts.push_back({c.i, c.other, pass, !c.isStatic, c.u, world.position[c.i] - world.radius[c.i] * c.u,
+                              c.depth, {before[c.i], c.j >= 0 ? before[j] : none},
+                              {world.velocity[c.i], c.j >= 0 ? world.velocity[j] : none},
+                              {world.mass[c.i], c.j >= 0 ? world.mass[j] : 0.0}});
+}
+
+}  // namespace
+
+void reportContacts(World& world, const std::vector<LcpContact>& contacts, const std::vector<glm::dvec3>& before,
+                    StepStats& stats, int pass) {
+    for (const LcpContact& c : contacts) {
+        if (c.lambda <= 0.0 && !c.isStatic) continue;
+        if (world.recordContacts) logContact(world, c, before, pass);
+        const ContactState state = c.isStatic ? ContactState::Static : ContactState::Colliding;
+        for (std::int64_t s : {std::int64_t(c.i), c.j}) {
+            if (s < 0) continue;
+            ContactState& mine = world.contactState[std::size_t(s)];
+            if (state == ContactState::Colliding || mine == ContactState::Free) mine = state;
+        }
+        ++(c.isStatic ? stats.staticContacts : stats.collisions);
+    }
+}
+
+}  // namespace physics

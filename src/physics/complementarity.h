@@ -1,0 +1,46 @@
+#pragma once
+// What slide 14's global methods (lcp.cpp, generalized_reflections.cpp) share: the touching
+// contacts of a pass as complementarity constraints, and projected Gauss-Seidel over them.
+// A contact k between spheres i and j (or a sphere and a plane, of infinite mass) with
+// normal u_k from j to i has the relative normal velocity c_k = (v_i - v_j).u_k, negative
+// while approaching, and takes an impulse lambda_k >= 0 (kg m/s):
+//   v_i += lambda_k u_k / m_i,  v_j -= lambda_k u_k / m_j.
+// The problem: c+_k >= b_k, lambda_k >= 0, lambda_k (c+_k - b_k) = 0, b_k the target.
+#include <vector>
+
+#include "physics/solver_stages.h"
+
+namespace physics {
+
+// 1/m_i + 1/m_j (1/kg; a plane adds nothing).
+double inverseMass(const World& world, const LcpContact& c);
+// c_k (m/s) at the world's current velocities.
+double relativeNormal(const World& world, const LcpContact& c);
+// Applies an impulse (kg m/s) along the contact's normal: +u to i, -u to j.
+void push(World& world, const LcpContact& c, double impulse);
+
+// The contacts findContacts found; without `withSeparating`, not those that separate
+// faster than epsilon (held at c+ >= 0, an impulse could push one to 0 and add lambda c / 2
+// of energy: the fast gas gained 11 % in 2 s). A contact is static when its |c_k| <=
+// epsilon (slide 13); its target is 0. One that approaches faster has -beta c_k, one that
+// separates 0.
+void gatherContacts(World& world, const Params& params, bool withSeparating, std::vector<LcpContact>& contacts);
+
+// Projected Gauss-Seidel from the contacts' lambdas as they are: visits the contacts in
+// turn, sets each lambda to what meets its own target, clamps it at 0, until no contact
+// is off by more than `tolerance` (m/s) or `mostSweeps` sweeps are done. Returns the
+// sweeps; `residual` (m/s) is what is left.
+int projectedGaussSeidel(World& world, std::vector<LcpContact>& contacts, double tolerance, int mostSweeps,
+                         double& residual);
+
+// After the normal solve, per contact that pushed (lambda > 0): alpha on a bounce's, mu on
+// a static contact's relative tangential velocity (equal and opposite impulses).
+void dampTangential(World& world, const Params& params, const std::vector<LcpContact>& contacts);
+
+// The spheres' contact states and the stats' counts, from the contacts that pushed or
+// were static; with world.recordContacts each is also logged as a ContactEvent whose
+// velocities are those before (`before`) and after the whole solve.
+void reportContacts(World& world, const std::vector<LcpContact>& contacts, const std::vector<glm::dvec3>& before,
+                    StepStats& stats, int pass);
+
+}  // namespace physics

@@ -1,0 +1,108 @@
+// Four of Smith et al.'s five properties, measured around the K passes of a solver step.
+#include "physics/impact_properties.h"
+
+#include <algorithm>
+
+#include "physics/solver_stages.h"
+
+namespace physics {
+
+ImpactProperties& ImpactProperties::operator+=(const ImpactProperties& o) {
+    contacts += o.contacts;
+    struck += o.struck;
+    momentumChange = std::max(momentumChange, o.momentumChange);
+    momentumScale = std::max(momentumScale, o.momentumScale);
+    kineticBefore += o.kineticBefore;
+    kineticAfter += o.kineticAfter;
+    restingPairs += o.restingPairs;
+    brokeAway += o.brokeAway;
+    fastestApproachAfter = std::max(fastestApproachAfter, o.fastestApproachAfter);
+    return *this;
+}
+
+namespace {
+
+constexpr std::uint8_t kTouchesPlane = 1;
+constexpr std::uint8_t kStruck = 2;
+
+std::uint32_t root(std::vector<std::uint32_t>& cluster, std::uint32_t i) {
+    while (cluster[i] != i) i = cluster[i] = cluster[cluster[i]];
+    return i;
+}
+
+// m/s: c, the relative normal velocity (< 0 approaching).
+double approach(const World& world, const MeasuredContact& c) {
+    const glm::dvec3 other = c.j >= 0 ? world.velocity[std::size_t(c.j)] : glm::dvec3(0.0);
+    return glm::dot(world.velocity[c.i] - other, c.u);
+}
+
+void findTouching(World& world, ImpactScratch& scratch) {
+    scratch.contacts.clear();
+    for (const SpherePair& pair : world.workspace.pairs) {
+        SphereContact contact;
+        if (touching(world, pair, contact)) scratch.contacts.push_back({pair.i, pair.j, contact.u, 0.0});
+    }
+    for (std::uint32_t i = 0; i < world.size(); ++i) {
+        forEachTouchedPlane(world, i, [&](std::size_t, const Plane& face) {
+            scratch.contacts.push_back({i, -1, face.normal, 0.0});
+        });
+    }
+}
+
+double kineticOf(const World& world, std::size_t i, const glm::dvec3& v) {
+    return 0.5 * world.mass[i] * glm::dot(v, v);  // J
+}
+
+}  // namespace
+
+void beginMeasuringImpacts(World& world) {
+    if (!world.measureImpacts) return;
+    ImpactScratch& scratch = world.workspace.impacts;
+    scratch.velocityBefore = world.velocity;
+    findTouching(world, scratch);
+    scratch.cluster.resize(world.size());
+    for (std::uint32_t i = 0; i < world.size(); ++i) scratch.cluster[i] = i;
+    scratch.clusterFlags.assign(world.size(), 0);
+    for (MeasuredContact& c : scratch.contacts) {
+        c.approachBefore = approach(world, c);
+        if (c.j >= 0) scratch.cluster[root(scratch.cluster, c.i)] = root(scratch.cluster, std::uint32_t(c.j));
+    }
+    for (const MeasuredContact& c : scratch.contacts) {
+        std::uint8_t& flags = scratch.clusterFlags[root(scratch.cluster, c.i)];
+        if (c.j < 0) flags |= kTouchesPlane;
+        if (c.approachBefore < -kConvergedApproachSpeed) flags |= kStruck;
+    }
+}
+
+void endMeasuringImpacts(World& world, StepStats& stats) {
+    if (!world.measureImpacts) return;
+    ImpactScratch& scratch = world.workspace.impacts;
+    ImpactProperties p;
+    p.contacts = scratch.contacts.size();
+    glm::dvec3 momentum(0.0);  // kg m/s
+    for (std::uint32_t i = 0; i < world.size(); ++i) {
+        const std::uint8_t flags = scratch.clusterFlags[root(scratch.cluster, i)];
+        const glm::dvec3 before = scratch.velocityBefore[i], after = world.velocity[i];
+        if (flags & kStruck) {
+            p.kineticBefore += kineticOf(world, i, before);
+            p.kineticAfter += kineticOf(world, i, after);
+        }
+        if ((flags & kStruck) && !(flags & kTouchesPlane)) {
+            momentum += world.mass[i] * (after - before);
+            p.momentumScale += world.mass[i] * glm::length(before);
+        }
+    }
+    p.momentumChange = glm::length(momentum);
+    for (const MeasuredContact& c : scratch.contacts) {
+        const double after = approach(world, c);  // m/s
+        p.struck += c.approachBefore < -kConvergedApproachSpeed;
+        p.fastestApproachAfter = std::max(p.fastestApproachAfter, -after);
+        const bool struckCluster = scratch.clusterFlags[root(scratch.cluster, c.i)] & kStruck;
+        if (c.j < 0 || !struckCluster || std::abs(c.approachBefore) > kConvergedApproachSpeed) continue;
+        ++p.restingPairs;
+        p.brokeAway += after > kConvergedApproachSpeed;
+    }
+    stats.impacts += p;
+}
+
+}  // namespace physics
