@@ -54,6 +54,9 @@ struct ContactEvent {
     // s: the continuous method's instant of contact within its solver step (the
     // velocities are those at that instant); -1 for the other methods.
     double timeOfImpact = -1.0;
+    // kg m/s: the normal impulse lambda a global solve gave this contact (slide 14's lcp and
+    // generalized reflections, summed over the rounds); -1 for the pairwise responses.
+    double solvedImpulse = -1.0;
     bool isPlane() const { return other < 0; }
     glm::dvec3 impulse() const { return massOf[0] * (velocityAfter[0] - velocityBefore[0]); }  // kg m/s on i
 };

@@ -272,8 +272,20 @@ TEST(ContactExplanation, SaysALcpContactWasSolvedWithTheOthers) {
         expectVector(event.velocityAfter[0], {0.0, 0.0, 0.2}, 1e-9);
         const auto lines = app::explanationLines(app::explainContact(event, params), params, 0);
         EXPECT_TRUE(hasLine(lines, "lcp (slide 14): solved together with every touching contact"));
+        // Each of sphere 0's contacts took lambda = 2 sqrt3 / 5 = 0.6928 kg m/s, the other too.
+        EXPECT_NEAR(event.solvedImpulse, 0.4 * std::sqrt(3.0), 1e-9);
+        const auto together = app::solvedWithLines(event, world.contacts, 0);
+        EXPECT_TRUE(hasLine(together, "this contact: \u03bb = 0.6928 kg m/s"));
+        EXPECT_TRUE(hasLine(together, event.other == 1 ? "#0 with #2: \u03bb = 0.6928 kg m/s"
+                                                       : "#0 with #1: \u03bb = 0.6928 kg m/s"));
     }
     EXPECT_EQ(bounces, 2);
+}
+
+// A pairwise response lists nothing solved together.
+TEST(ContactExplanation, APairwiseResponseIsSolvedAlone) {
+    physics::ContactEvent event;
+    EXPECT_TRUE(app::solvedWithLines(event, {event}, 6).empty());
 }
 
 }  // namespace

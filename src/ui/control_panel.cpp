@@ -103,7 +103,7 @@ void wrappedColored(const ImVec4& color, const std::string& text) {
 // before each, its number after.
 void propertiesSection(const Readouts& r) {
     if (r.properties.empty()) return;
-    ImGui::TextDisabled("five properties since restart (Smith et al.)");
+    ImGui::TextDisabled("five properties (Smith et al.)");
     tooltip("What a simultaneous-impact answer may keep (slide 14's global approach), measured on the contacts of "
             "every step since the last restart. Compare solvers side by side on one of slide 14's presets.");
     for (const Readouts::Property& p : r.properties) {

@@ -104,6 +104,11 @@ std::vector<std::string> viewReadoutLines(const ViewReadout& view) {
     lines.emplace_back(line);
     std::snprintf(line, sizeof line, "hash %016llx", static_cast<unsigned long long>(d.hash));
     lines.emplace_back(line);
+    for (std::size_t at = 0; at < view.properties.size();) {  // one line each
+        const std::size_t end = std::min(view.properties.find('\n', at), view.properties.size());
+        lines.push_back(view.properties.substr(at, end - at));
+        at = end + 1;
+    }
     return lines;
 }
 

@@ -76,9 +76,11 @@ struct ViewReadout {
     physics::Diagnostics diagnostics;
     double time = 0.0;  // s
     std::uint64_t steps = 0;
+    std::string properties;  // slide 14's five properties, marks only ("" until a contact)
 };
 
-// The lines of a view's label: the title, then energy, momentum, penetration, hash.
+// The lines of a view's label: the title, then energy, momentum, penetration, hash, and
+// the five properties' marks when there are any.
 std::vector<std::string> viewReadoutLines(const ViewReadout& view);
 
 }  // namespace app

@@ -139,13 +139,29 @@ std::string Session::setParameter(const scenes::Parameter& p, double value) {
     return "";
 }
 
+namespace {
+
+constexpr std::size_t kMostSolvedTogether = 256;
+
+// The events of one step about `selected`, with the step's globally solved contacts.
+Session::Contacts contactsOf(const std::vector<physics::ContactEvent>& all, int selected, double time,
+                             std::uint64_t steps) {
+    Session::Contacts out{{}, {}, time, steps};
+    for (const physics::ContactEvent& event : all) {
+        if (static_cast<int>(event.i) == selected || event.other == selected) out.events.push_back(event);
+        if (event.solvedImpulse >= 0.0 && out.solvedTogether.size() < kMostSolvedTogether) {
+            out.solvedTogether.push_back(event);
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
 void Session::noteContacts() {
     const physics::World& world = primary_.world();
-    std::vector<physics::ContactEvent> events;
-    for (const physics::ContactEvent& event : world.contacts) {
-        if (static_cast<int>(event.i) == selected_ || event.other == selected_) events.push_back(event);
-    }
-    if (!events.empty()) latest_ = {std::move(events), world.time, world.stepCount};
+    Contacts contacts = contactsOf(world.contacts, selected_, world.time, world.stepCount);
+    if (!contacts.events.empty()) latest_ = std::move(contacts);
 }
 
 void Session::startAgain() {
@@ -253,12 +269,8 @@ void Session::scrubTo(std::size_t index) {
     for (std::size_t k = timeline().cursor() + 1; k-- > 0;) {
         const WorldState& state = timeline().at(k);
         if (state.contacts.empty()) continue;
-        for (const physics::ContactEvent& event : state.contacts) {
-            if (static_cast<int>(event.i) == selected_ || event.other == selected_) latest_.events.push_back(event);
-        }
+        latest_ = contactsOf(state.contacts, selected_, state.time, state.stepCount);
         if (latest_.events.empty()) continue;
-        latest_.time = state.time;
-        latest_.steps = state.stepCount;
         break;
     }
 }

@@ -85,6 +85,9 @@ public:
     // sphere is selected).
     struct Contacts {
         std::vector<physics::ContactEvent> events;
+        // Slide 14's global solvers: every contact of that step they solved (its impulse
+        // in solvedImpulse), for "solved together with" (at most kMostSolvedTogether).
+        std::vector<physics::ContactEvent> solvedTogether;
         double time = 0.0;  // s, the world's time after that step
         std::uint64_t steps = 0;
     };

@@ -303,4 +303,62 @@ std::vector<ExplanationLine> explanationLines(const ContactExplanation& e, const
     return lines;
 }
 
+namespace {
+
+bool touchesAny(const physics::ContactEvent& e, const std::vector<std::int64_t>& spheres) {
+    for (std::int64_t s : spheres) {
+        if (s == std::int64_t(e.i) || s == std::int64_t(e.other)) return true;
+    }
+    return false;
+}
+
+// The events of `event`'s pass joined to it through shared spheres (a plane joins nothing).
+std::vector<physics::ContactEvent> clusterOf(const physics::ContactEvent& event,
+                                             const std::vector<physics::ContactEvent>& solved) {
+    std::vector<std::int64_t> spheres{event.i};
+    if (!event.isPlane()) spheres.push_back(event.other);
+    std::vector<physics::ContactEvent> cluster;
+    std::vector<bool> taken(solved.size(), false);
+    for (bool grew = true; grew;) {
+        grew = false;
+        for (std::size_t k = 0; k < solved.size(); ++k) {
+            const physics::ContactEvent& e = solved[k];
+            if (taken[k] || e.pass != event.pass || !touchesAny(e, spheres)) continue;
+            taken[k] = grew = true;
+            cluster.push_back(e);
+            spheres.push_back(e.i);
+            if (!e.isPlane()) spheres.push_back(e.other);
+        }
+    }
+    return cluster;
+}
+
+std::string contactName(const physics::ContactEvent& e, int boxPlaneCount) {
+    return "#" + std::to_string(e.i) + " with " +
+           (e.isPlane() ? planeName(-1 - e.other, boxPlaneCount) : "#" + std::to_string(e.other));
+}
+
+}  // namespace
+
+std::vector<ExplanationLine> solvedWithLines(const physics::ContactEvent& event,
+                                             const std::vector<physics::ContactEvent>& solved, int boxPlaneCount) {
+    std::vector<ExplanationLine> lines;
+    if (event.solvedImpulse < 0.0) return lines;
+    const std::vector<physics::ContactEvent> cluster = clusterOf(event, solved);
+    add(lines, Line::Kind::Heading, "Slide 14: solved together, the impulse each received");
+    add(lines, Line::Kind::Result, format("this contact: \u03bb = %.4g kg m/s", event.solvedImpulse));
+    std::size_t listed = 0;
+    for (const physics::ContactEvent& e : cluster) {
+        if (e.i == event.i && e.other == event.other) continue;
+        if (++listed > kMostSolvedWithLines) continue;
+        add(lines, Line::Kind::Formula,
+            format("%s: \u03bb = %.4g kg m/s", contactName(e, boxPlaneCount).c_str(), e.solvedImpulse));
+    }
+    if (listed == 0) add(lines, Line::Kind::Note, "no other contact touched these spheres in this pass");
+    if (listed > kMostSolvedWithLines) {
+        add(lines, Line::Kind::Note, format("and %.0f more", double(listed - kMostSolvedWithLines)));
+    }
+    return lines;
+}
+
 }  // namespace app

@@ -76,4 +76,12 @@ struct ExplanationLine {
 std::vector<ExplanationLine> explanationLines(const ContactExplanation& e, const physics::Params& params,
                                               int boxPlaneCount);
 
+// Slide 14's global solvers (lcp, generalized reflections): the contacts of `solved` (one
+// step's) that were solved with `event` in its pass, linked to it through shared spheres,
+// each with the impulse it received (ContactEvent::solvedImpulse); none for the pairwise
+// responses. At most kMostSolvedWithLines contacts are listed, then how many more.
+constexpr std::size_t kMostSolvedWithLines = 10;
+std::vector<ExplanationLine> solvedWithLines(const physics::ContactEvent& event,
+                                             const std::vector<physics::ContactEvent>& solved, int boxPlaneCount);
+
 }  // namespace app

@@ -38,7 +38,7 @@ PropertyVerdict energy(const ImpactRecord& r, const physics::Params& params) {
         return v;
     }
     v.value = r.leastEnergyRatio < r.worstEnergyRatio - kKeptSlack
-                  ? format("after/before %.6f to %.6f", r.leastEnergyRatio, r.worstEnergyRatio)
+                  ? format("after/before %.4f to %.4f", r.leastEnergyRatio, r.worstEnergyRatio)
                   : format("after/before %.6f", r.worstEnergyRatio);
     const bool gained = r.worstEnergyRatio > 1.0 + kKeptSlack;
     const bool lostElastic = params.beta >= 1.0 && r.leastEnergyRatio < 1.0 - kKeptSlack;
@@ -116,12 +116,28 @@ std::vector<PropertyVerdict> judgeProperties(const ImpactRecord& record,
     return {momentum(record), energy(record, params), symmetry(mirrors), breakAway(record), positivity(record)};
 }
 
+namespace {
+
+const char* markOf(Verdict verdict) {
+    return verdict == Verdict::Kept ? "\u2713" : verdict == Verdict::Broken ? "\u2717" : "-";
+}
+
+}  // namespace
+
 std::string propertiesLine(const std::vector<PropertyVerdict>& verdicts) {
     std::string line;
     for (const PropertyVerdict& v : verdicts) {
         if (!line.empty()) line += " | ";
-        const char* mark = v.verdict == Verdict::Kept ? "\u2713" : v.verdict == Verdict::Broken ? "\u2717" : "-";
-        line += v.name + " " + mark + " " + v.value;
+        line += v.name + " " + markOf(v.verdict) + " " + v.value;
+    }
+    return line;
+}
+
+std::string propertiesMarks(const std::vector<PropertyVerdict>& verdicts) {
+    std::string line;
+    for (std::size_t k = 0; k < verdicts.size(); ++k) {
+        if (k > 0) line += k == 3 ? "\n" : "  ";  // two lines: a label stays narrow
+        line += std::string(markOf(verdicts[k].verdict)) + " " + verdicts[k].name;
     }
     return line;
 }

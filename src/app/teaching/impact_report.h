@@ -38,5 +38,8 @@ std::vector<PropertyVerdict> judgeProperties(const ImpactRecord& record,
 
 // One line: "momentum ✓ 0 | energy ✓ 1.000000 after/before | ...".
 std::string propertiesLine(const std::vector<PropertyVerdict>& verdicts);
+// The marks alone, for a view's label, on two lines: "✓ momentum  ✓ energy  ✗ symmetry",
+// then "✓ break-away  ✓ positivity".
+std::string propertiesMarks(const std::vector<PropertyVerdict>& verdicts);
 
 }  // namespace app

@@ -241,7 +241,13 @@ void drawExplainer(const Placement& placement, const ExplainerInput& input, Tool
     }
     ImGui::Separator();
     const ContactExplanation explanation = explainContact(event, *input.params);
-    for (const ExplanationLine& line : explanationLines(explanation, *input.params, input.boxPlaneCount)) {
+    std::vector<ExplanationLine> lines = explanationLines(explanation, *input.params, input.boxPlaneCount);
+    if (input.solvedTogether) {
+        for (ExplanationLine& line : solvedWithLines(event, *input.solvedTogether, input.boxPlaneCount)) {
+            lines.push_back(std::move(line));
+        }
+    }
+    for (const ExplanationLine& line : lines) {
         const ImVec4 color = line.kind == ExplanationLine::Kind::Heading  ? kHeadingColor
                              : line.kind == ExplanationLine::Kind::Result ? kResultColor
                              : line.kind == ExplanationLine::Kind::Note   ? kNoteColor
@@ -326,7 +332,7 @@ ToolActions drawInteractionWindows(const Session& session, const ViewLayout& lay
     const Session::Contacts& contacts = session.latestContacts();
     drawExplainer(explainer,
                   {selected, &contacts.events, contacts.time, contacts.steps, world.time, world.boxPlaneCount,
-                   &simulation.params(), simulation.paused, world.recordContacts},
+                   &simulation.params(), simulation.paused, world.recordContacts, &contacts.solvedTogether},
                   state, actions);
     if (comparison) {
         const float below = ImGui::GetFrameHeight() + 2.0f * ImGui::GetStyle().ItemSpacing.y;  // the readouts' title

@@ -94,6 +94,7 @@ struct ExplainerInput {
     const physics::Params* params = nullptr;
     bool paused = false;
     bool recording = true;  // world.recordContacts: Simulation records while a sphere is selected
+    const std::vector<physics::ContactEvent>* solvedTogether = nullptr;  // Session::Contacts'
 };
 
 // "Explain this contact": the slides' formulas with the numbers of one of the events.

@@ -4,6 +4,7 @@
 
 #include <imgui.h>
 
+#include "app/teaching/impact_report.h"
 #include "ui/imgui_gl_renderer.h"
 #include "ui/ui_font.h"
 
@@ -18,7 +19,12 @@ std::vector<ViewLabel> comparisonLabels(const Simulation& primary, const Compari
         const std::string title = std::string(1, char('A' + k)) + "   " +
                                   (k == 0 ? comparison.primaryLabel(primary.scene()) : comparison.label(k - 1));
         const physics::World& world = run.world();
-        ViewReadout readout{title, physics::measure(world, run.params()), world.time, world.stepCount};
+        ViewReadout readout{title, physics::measure(world, run.params()), world.time, world.stepCount, ""};
+        if (run.impacts().total.contacts > 0) {
+            std::vector<physics::MirrorAsymmetry> mirrors;
+            for (const physics::Plane& m : run.scene().mirrors) mirrors.push_back(physics::mirrorAsymmetry(world, m));
+            readout.properties = propertiesMarks(judgeProperties(run.impacts(), mirrors, run.params()));
+        }
         const glm::ivec4& view = views[k];
         const float top = float(framebufferSize.y - (view.y + view.w));  // px from the framebuffer's top
         const glm::vec2 corner(float(view.x), atBottom ? top + float(view.w) : top);
