@@ -47,12 +47,53 @@ void gatherContacts(World& world, const Params& params, bool withSeparating, std
     }
 }
 
-int projectedGaussSeidel(World& world, std::vector<LcpContact>& contacts, double tolerance, int mostSweeps,
+namespace {
+
+std::uint32_t rootOf(std::vector<std::uint32_t>& parent, std::uint32_t i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+}
+
+}  // namespace
+
+void sortIntoClusters(World& world, std::vector<LcpContact>& contacts, std::vector<ContactCluster>& clusters) {
+    Workspace& ws = world.workspace;
+    std::vector<std::uint32_t>& parent = ws.clusterParent;
+    parent.resize(world.size());
+    for (std::uint32_t i = 0; i < world.size(); ++i) parent[i] = i;
+    for (const LcpContact& c : contacts) {
+        if (c.j >= 0) parent[rootOf(parent, c.i)] = rootOf(parent, std::uint32_t(c.j));
+    }
+    constexpr std::uint32_t kNone = ~0u;
+    std::vector<std::uint32_t>& clusterOf = ws.clusterOfSphere;  // by root
+    clusterOf.assign(world.size(), kNone);
+    clusters.clear();
+    for (const LcpContact& c : contacts) {
+        std::uint32_t& cluster = clusterOf[rootOf(parent, c.i)];
+        if (cluster == kNone) cluster = std::uint32_t(clusters.size()), clusters.push_back({});
+        ++clusters[cluster].count;
+    }
+    std::uint32_t first = 0;
+    for (ContactCluster& cluster : clusters) {
+        cluster.first = first;
+        first += cluster.count;
+        cluster.count = 0;  // counts again as the contacts are placed
+    }
+    ws.clusterSorted.resize(contacts.size());
+    for (const LcpContact& c : contacts) {
+        ContactCluster& cluster = clusters[clusterOf[rootOf(parent, c.i)]];
+        ws.clusterSorted[cluster.first + cluster.count++] = c;
+    }
+    contacts.swap(ws.clusterSorted);
+}
+
+int projectedGaussSeidel(World& world, LcpContact* contacts, std::size_t count, double tolerance, int mostSweeps,
                          double& residual) {
     int sweeps = 0;
     do {
         residual = 0.0;
-        for (LcpContact& c : contacts) {
+        for (std::size_t k = 0; k < count; ++k) {
+            LcpContact& c = contacts[k];
             const double error = c.target - relativeNormal(world, c);  // m/s: > 0, too slow apart
             const double lambda = std::max(0.0, c.lambda + error / inverseMass(world, c));
             push(world, c, lambda - c.lambda);

@@ -26,11 +26,23 @@ void push(World& world, const LcpContact& c, double impulse);
 // separates 0.
 void gatherContacts(World& world, const Params& params, bool withSeparating, std::vector<LcpContact>& contacts);
 
-// Projected Gauss-Seidel from the contacts' lambdas as they are: visits the contacts in
-// turn, sets each lambda to what meets its own target, clamps it at 0, until no contact
-// is off by more than `tolerance` (m/s) or `mostSweeps` sweeps are done. Returns the
-// sweeps; `residual` (m/s) is what is left.
-int projectedGaussSeidel(World& world, std::vector<LcpContact>& contacts, double tolerance, int mostSweeps,
+// Sorts `contacts` into clusters: the spheres that contacts join (a plane joins
+// nothing), each cluster's contacts in their gathered order, the clusters in the order of
+// their first contact. Clusters share no sphere: each is a problem of its own, and two
+// threads can solve two of them at once with the result of one thread.
+void sortIntoClusters(World& world, std::vector<LcpContact>& contacts, std::vector<ContactCluster>& clusters);
+
+// The threads the global solvers use: clusters are taken whole, so any count gives the
+// same result, bit for bit.
+inline int clusterThreads(const World& world, const Params& params, std::size_t clusters) {
+    return clusters > 1 ? threadsFor(world, params) : 1;
+}
+
+// Projected Gauss-Seidel over contacts[0, count) from their lambdas as they are: visits
+// them in turn, sets each lambda to what meets its own target, clamps it at 0, until no
+// contact is off by more than `tolerance` (m/s) or `mostSweeps` sweeps are done. Returns
+// the sweeps; `residual` (m/s) is what is left.
+int projectedGaussSeidel(World& world, LcpContact* contacts, std::size_t count, double tolerance, int mostSweeps,
                          double& residual);
 
 // After the normal solve, per contact that pushed (lambda > 0): alpha on a bounce's, mu on

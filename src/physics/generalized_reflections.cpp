@@ -2,7 +2,7 @@
 // Simultaneous Impact", cited on slide 14). The lcp solver puts every touching contact in
 // one problem, and so holds together spheres that touch but do not approach (the last
 // ball of a cradle cannot break away). Generalized reflections only ever act on the
-// contacts that approach, and repeat:
+// contacts that approach, and repeat, in each cluster of touching spheres on its own:
 //   active set = the contacts with c_k < -kConvergedApproachSpeed; stop when it is empty;
 //   solve the problem of complementarity.h on the active set only; apply; repeat.
 // Elastic (beta = 1): the target of an active contact is -c_k, its approach reflected;
@@ -10,8 +10,8 @@
 // (dE = sum_k lambda_k (c_k + c+_k) / 2 = 0). For beta < 1 the generalized restitution:
 // lambda = (1 - beta) lambda_inelastic + beta lambda_elastic, where the inelastic solve
 // has targets 0; energy is convex in lambda, so it never rises. A static contact (slide
-// 13: in a round where it approaches at epsilon or less) has target 0 in both. Then alpha and mu act on the
-// tangential velocities, as in lcp.cpp.
+// 13: in a round where it approaches at epsilon or less) has target 0 in both. Then alpha
+// and mu act on the tangential velocities, as in lcp.cpp.
 #include <algorithm>
 #include <cmath>
 
@@ -20,7 +20,7 @@
 namespace physics {
 namespace {
 
-// Rounds of { active set, solve } at most: a pass never hangs (counted when reached).
+// Rounds of { active set, solve } at most: a cluster never hangs (counted when reached).
 // Random elastic clusters of 3-8 spheres need at most 17; with beta < 1 up to 1322 (the
 // blended answer leaves contacts that approach a little, round after round).
 constexpr int kMostRounds = 10000;
@@ -28,52 +28,105 @@ constexpr int kMostRounds = 10000;
 // (m/s per m/s): the energy is then kept to about 1e-13 of itself.
 constexpr double kRelativeTolerance = 1e-14;
 constexpr int kMostSweeps = 1000;
-// The work of a pass at most, in contact visits of the sweeps summed over its rounds: 2000
-// sweeps of all its contacts (twice the lcp solver's cap), at least 10^6. A resting pile
-// pushes contacts into approach round after round (840 rounds a solver step for a pile of
-// 1000, measured): past this budget the pass stops, counted as a cap hit, and the methods'
-// own safety nets (projection, the velocity method's cancelling) take what is left.
+// The work of a cluster in a pass at most, in contact visits of the sweeps summed over its
+// rounds: 500 sweeps of all its contacts, at least 10^6. A resting pile pushes contacts
+// into approach round after round (840 rounds a solver step for a pile of 1000, measured):
+// past this budget the cluster stops, counted as a cap hit, and the methods' own safety
+// nets (projection, the velocity method's cancelling) take what is left.
 constexpr std::uint64_t kVisitsPerContact = 500;
 constexpr std::uint64_t kLeastVisits = 1000000;
 
-// The contacts that approach at the current velocities, into `active` (their index in
-// `contacts` in `where`); returns the fastest approach (m/s, > 0), 0 when none. A contact
-// that approaches at epsilon or less is static in this round (slide 13): its target is 0.
-double findApproaching(const World& world, const Params& params, const std::vector<LcpContact>& contacts,
-                       std::vector<LcpContact>& active, std::vector<std::uint32_t>& where) {
-    active.clear();
-    where.clear();
+// One cluster's scratch, per thread: a round's active set (copies, their index in the
+// cluster in `where`), the velocities of their spheres at the round's start (m/s), and
+// the two solves' impulses (kg m/s).
+struct RoundScratch {
+    std::vector<LcpContact> active;
+    std::vector<std::uint32_t> where;
+    std::vector<glm::dvec3> startOfI, startOfJ;
+    std::vector<double> inelastic, elastic;
+};
+
+// The cluster's contacts that approach at the current velocities, into scratch.active;
+// returns the fastest approach (m/s, > 0), 0 when none. A contact that approaches at
+// epsilon or less is static in this round (slide 13): its target is 0.
+double findApproaching(const World& world, const Params& params, const LcpContact* contacts, std::size_t count,
+                       RoundScratch& scratch) {
+    scratch.active.clear();
+    scratch.where.clear();
+    scratch.startOfI.clear();
+    scratch.startOfJ.clear();
     double fastest = 0.0;
-    for (std::size_t k = 0; k < contacts.size(); ++k) {
+    for (std::size_t k = 0; k < count; ++k) {
         const double c = relativeNormal(world, contacts[k]);  // m/s
         if (c >= -kConvergedApproachSpeed) continue;
         LcpContact copy = contacts[k];
         copy.isStatic = -c <= params.epsilon;
-        active.push_back(copy);
-        where.push_back(std::uint32_t(k));
+        scratch.active.push_back(copy);
+        scratch.where.push_back(std::uint32_t(k));
+        scratch.startOfI.push_back(world.velocity[copy.i]);
+        scratch.startOfJ.push_back(copy.j >= 0 ? world.velocity[std::size_t(copy.j)] : glm::dvec3(0.0));
         fastest = std::max(fastest, -c);
     }
     return fastest;
 }
 
-// Solves the active set from the round's start velocities (Workspace::passStart), elastic
-// (targets -c_k) or inelastic (targets 0); the impulses into `lambda`, the velocities put
-// back. Returns the sweeps.
-int solveActive(World& world, std::vector<LcpContact>& active, bool elastic, double tolerance, int mostSweeps,
+// Solves the active set from the round's start velocities, elastic (targets -c_k) or
+// inelastic (targets 0); the impulses into `lambda`, the velocities put back. Returns the
+// sweeps.
+int solveActive(World& world, RoundScratch& scratch, bool elastic, double tolerance, int mostSweeps,
                 std::vector<double>& lambda, double& residual) {
-    const std::vector<glm::dvec3>& start = world.workspace.passStart;
+    std::vector<LcpContact>& active = scratch.active;
     for (LcpContact& c : active) {  // the velocities are the round's start
         c.target = elastic && !c.isStatic ? -relativeNormal(world, c) : 0.0;  // m/s
         c.lambda = 0.0;
     }
-    const int sweeps = projectedGaussSeidel(world, active, tolerance, mostSweeps, residual);
+    const int sweeps = projectedGaussSeidel(world, active.data(), active.size(), tolerance, mostSweeps, residual);
     lambda.resize(active.size());
     for (std::size_t k = 0; k < active.size(); ++k) {
         lambda[k] = active[k].lambda;
-        world.velocity[active[k].i] = start[active[k].i];
-        if (active[k].j >= 0) world.velocity[std::size_t(active[k].j)] = start[std::size_t(active[k].j)];
+        world.velocity[active[k].i] = scratch.startOfI[k];
+        if (active[k].j >= 0) world.velocity[std::size_t(active[k].j)] = scratch.startOfJ[k];
     }
     return sweeps;
+}
+
+// The rounds of one cluster; each contact's lambda ends as its impulse summed over them.
+void reflectCluster(World& world, const Params& params, LcpContact* contacts, ContactCluster& cluster) {
+    thread_local RoundScratch scratch;
+    for (std::size_t k = 0; k < cluster.count; ++k) contacts[k].lambda = 0.0;
+    std::uint64_t visitsLeft = std::max(kLeastVisits, kVisitsPerContact * cluster.count);
+    double fastest = findApproaching(world, params, contacts, cluster.count, scratch);
+    cluster.rounds = cluster.sweeps = 0;
+    cluster.residual = 0.0;
+    for (; fastest > 0.0 && cluster.rounds < kMostRounds && visitsLeft > 0;
+         fastest = findApproaching(world, params, contacts, cluster.count, scratch)) {
+        ++cluster.rounds;
+        const std::size_t size = scratch.active.size();
+        const double tolerance = kRelativeTolerance * fastest;  // m/s
+        const int solves = (params.beta < 1.0) + (params.beta > 0.0);
+        const int mostSweeps = int(std::clamp<std::uint64_t>(visitsLeft / (solves * size), 1, kMostSweeps));
+        scratch.inelastic.assign(size, 0.0);
+        scratch.elastic.assign(size, 0.0);
+        double residual = 0.0;  // m/s
+        int sweeps = 0;
+        if (params.beta < 1.0) sweeps += solveActive(world, scratch, false, tolerance, mostSweeps, scratch.inelastic, residual);
+        cluster.residual = std::max(cluster.residual, residual);
+        if (params.beta > 0.0) sweeps += solveActive(world, scratch, true, tolerance, mostSweeps, scratch.elastic, residual);
+        cluster.residual = std::max(cluster.residual, residual);
+        cluster.sweeps += std::uint32_t(sweeps);
+        visitsLeft -= std::min(visitsLeft, std::uint64_t(sweeps) * size);
+        for (std::size_t k = 0; k < size; ++k) {
+            const double lambda = (1.0 - params.beta) * scratch.inelastic[k] + params.beta * scratch.elastic[k];  // kg m/s
+            push(world, scratch.active[k], lambda);
+            LcpContact& contact = contacts[scratch.where[k]];
+            // Static (mu on its tangential velocity) if its first push was; a bounce once it bounces.
+            if (lambda > 0.0 && (contact.lambda == 0.0 || !scratch.active[k].isStatic)) {
+                contact.isStatic = scratch.active[k].isStatic;
+            }
+            contact.lambda += lambda;
+        }
+    }
+    cluster.capped = fastest > 0.0;
 }
 
 }  // namespace
@@ -83,45 +136,23 @@ void reflectGeneralized(World& world, const Params& params, StepStats& stats, in
     std::vector<LcpContact>& contacts = ws.lcpContacts;
     gatherContacts(world, params, true, contacts);  // a separating one may approach later
     if (contacts.empty()) return;
-    const std::vector<glm::dvec3> before = world.recordContacts ? world.velocity : std::vector<glm::dvec3>();
-    for (LcpContact& c : contacts) c.lambda = 0.0;  // the impulse summed over the rounds
-    std::vector<LcpContact>& active = ws.activeContacts;
-    std::vector<std::uint32_t>& where = ws.activeIndex;
-    int rounds = 0;
-    std::uint64_t visitsLeft = std::max(kLeastVisits, kVisitsPerContact * contacts.size());
-    double fastest = findApproaching(world, params, contacts, active, where);
-    for (; fastest > 0.0 && rounds < kMostRounds && visitsLeft > 0;
-         fastest = findApproaching(world, params, contacts, active, where)) {
-        ++rounds;
-        ws.passStart = world.velocity;
-        const double tolerance = kRelativeTolerance * fastest;  // m/s
-        const int solves = (params.beta < 1.0) + (params.beta > 0.0);
-        const int mostSweeps = int(std::clamp<std::uint64_t>(visitsLeft / (solves * active.size()), 1, kMostSweeps));
-        double residual = 0.0;
-        std::vector<double>& inelastic = ws.inelasticImpulse;
-        std::vector<double>& elastic = ws.elasticImpulse;
-        inelastic.assign(active.size(), 0.0);
-        elastic.assign(active.size(), 0.0);
-        int sweeps = 0;
-        if (params.beta < 1.0) sweeps += solveActive(world, active, false, tolerance, mostSweeps, inelastic, residual);
-        stats.lcpResidual = std::max(stats.lcpResidual, residual);
-        if (params.beta > 0.0) sweeps += solveActive(world, active, true, tolerance, mostSweeps, elastic, residual);
-        stats.lcpResidual = std::max(stats.lcpResidual, residual);
-        stats.lcpSweeps += std::uint64_t(sweeps);
-        visitsLeft -= std::min(visitsLeft, std::uint64_t(sweeps) * active.size());
-        for (std::size_t k = 0; k < active.size(); ++k) {
-            const double lambda = (1.0 - params.beta) * inelastic[k] + params.beta * elastic[k];  // kg m/s
-            push(world, active[k], lambda);
-            LcpContact& contact = contacts[where[k]];
-            // Static (mu on its tangential velocity) if its first push was; a bounce once it bounces.
-            if (lambda > 0.0 && (contact.lambda == 0.0 || !active[k].isStatic)) contact.isStatic = active[k].isStatic;
-            contact.lambda += lambda;
-        }
+    if (world.recordContacts) ws.passStart = world.velocity;
+    sortIntoClusters(world, contacts, ws.clusters);
+    runTasks(clusterThreads(world, params, ws.clusters.size()), int(ws.clusters.size()), [&](int k) {
+        ContactCluster& cluster = ws.clusters[std::size_t(k)];
+        reflectCluster(world, params, contacts.data() + cluster.first, cluster);
+    });
+    std::uint32_t sweeps = 0, rounds = 0;  // of the cluster that took most
+    for (const ContactCluster& cluster : ws.clusters) {
+        sweeps = std::max(sweeps, cluster.sweeps);
+        rounds = std::max(rounds, cluster.rounds);
+        stats.lcpResidual = std::max(stats.lcpResidual, cluster.residual);
+        stats.reflectionCapHits += cluster.capped;
     }
-    stats.reflectionRounds += std::uint64_t(rounds);
-    stats.reflectionCapHits += fastest > 0.0;
+    stats.lcpSweeps += sweeps;
+    stats.reflectionRounds += rounds;
     dampTangential(world, params, contacts);
-    reportContacts(world, contacts, before, stats, pass);
+    reportContacts(world, contacts, ws.passStart, stats, pass);
 }
 
 }  // namespace physics

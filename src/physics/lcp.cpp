@@ -3,9 +3,13 @@
 // contacts of the pass in one problem (complementarity.h):
 //   c+_k >= b_k,  lambda_k >= 0,  lambda_k (c+_k - b_k) = 0,
 // b_k = -beta c_k for a contact that approached (a bounce), 0 for a static contact (slide
-// 13: |c_k| <= epsilon). A contact that separates faster takes no part. Projected Gauss-Seidel until no contact is off by more than kLcpTolerance.
-// Then the tangential part, per contact that pushed: alpha on a bounce's, mu on a static
-// contact's relative tangential velocity.
+// 13: |c_k| <= epsilon). A contact that separates faster takes no part. The problem falls
+// apart into clusters of spheres that touch: projected Gauss-Seidel on each, until none of
+// its contacts is off by more than kLcpTolerance (clusters on several threads). Then the
+// tangential part, per contact that pushed: alpha on a bounce's, mu on a static contact's
+// relative tangential velocity.
+#include <algorithm>
+
 #include "physics/complementarity.h"
 
 namespace physics {
@@ -13,23 +17,33 @@ namespace {
 
 // m/s: how far from its target a contact may end.
 constexpr double kLcpTolerance = 1e-12;
-// Sweeps over the contacts at most, whatever the tolerance: a step never hangs. (A
-// landing pile of 1000 needs 300 a solve, and more as it settles: the residual left is
-// shown.)
+// Sweeps over a cluster's contacts at most, whatever the tolerance: a step never hangs.
+// (A landing pile of 1000 needs 300 a solve, and more as it settles: the residual left
+// is shown.)
 constexpr int kLcpMostSweeps = 1000;
 
 }  // namespace
 
 void solveContactsTogether(World& world, const Params& params, StepStats& stats, int pass) {
-    std::vector<LcpContact>& contacts = world.workspace.lcpContacts;
+    Workspace& ws = world.workspace;
+    std::vector<LcpContact>& contacts = ws.lcpContacts;
     gatherContacts(world, params, false, contacts);
     if (contacts.empty()) return;
-    if (world.recordContacts) world.workspace.passStart = world.velocity;
-    double residual = 0.0;  // m/s
-    stats.lcpSweeps += std::uint64_t(projectedGaussSeidel(world, contacts, kLcpTolerance, kLcpMostSweeps, residual));
-    stats.lcpResidual = std::max(stats.lcpResidual, residual);
+    if (world.recordContacts) ws.passStart = world.velocity;
+    sortIntoClusters(world, contacts, ws.clusters);
+    runTasks(clusterThreads(world, params, ws.clusters.size()), int(ws.clusters.size()), [&](int k) {
+        ContactCluster& cluster = ws.clusters[std::size_t(k)];
+        cluster.sweeps = std::uint32_t(projectedGaussSeidel(world, contacts.data() + cluster.first, cluster.count,
+                                                            kLcpTolerance, kLcpMostSweeps, cluster.residual));
+    });
+    std::uint32_t sweeps = 0;  // of the cluster that took most
+    for (const ContactCluster& cluster : ws.clusters) {
+        sweeps = std::max(sweeps, cluster.sweeps);
+        stats.lcpResidual = std::max(stats.lcpResidual, cluster.residual);
+    }
+    stats.lcpSweeps += sweeps;
     dampTangential(world, params, contacts);
-    reportContacts(world, contacts, world.workspace.passStart, stats, pass);
+    reportContacts(world, contacts, ws.passStart, stats, pass);
 }
 
 }  // namespace physics

@@ -217,15 +217,17 @@ int automaticMany() {
 // Whether automatic mode chooses this world's threads (AutomaticThreads).
 bool threadsChosenAutomatically(const World& world, const Params& params) {
     return params.threads == 0 && world.size() >= kAutomaticParallelMinSpheres && automaticMany() > 1 &&
-           params.method != Method::Continuous && !solvesTogether(params.solver);
+           params.method != Method::Continuous && params.solver != Solver::Simultaneous;
 }
 
 }  // namespace
 
 int solverThreads(const World& world, const Params& params) {
     // Impacts in time order are one sequence: the continuous method runs on one thread; so
-    // does the simultaneous solver, whose sums per sphere then add in one order.
-    if (world.size() < kParallelMinSpheres || params.method == Method::Continuous || solvesTogether(params.solver)) {
+    // does the simultaneous solver, whose sums per sphere then add in one order. (The
+    // global solvers share out whole clusters of touching spheres.)
+    if (world.size() < kParallelMinSpheres || params.method == Method::Continuous ||
+        params.solver == Solver::Simultaneous) {
         return 1;
     }
     if (params.threads > 0) return std::min(params.threads, kMostSolverThreads);

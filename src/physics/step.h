@@ -24,12 +24,15 @@ struct StepStats {
     // until-converged passes reached K with a contact still approaching.
     std::uint64_t passesUsed = 0;
     std::uint64_t passCapHits = 0;
-    // The global solve (lcp): projected Gauss-Seidel sweeps, and the largest residual
-    // left (m/s, the most a contact ended off its target; max, not summed).
+    // The global solves (lcp, generalized reflections), each cluster of touching spheres a
+    // problem of its own: projected Gauss-Seidel sweeps of the cluster that took most,
+    // summed over the passes, and the largest residual left (m/s, the most a contact ended
+    // off its target; max, not summed).
     std::uint64_t lcpSweeps = 0;
     double lcpResidual = 0.0;
-    // Generalized reflections: rounds of { active set, solve } run, and the passes that
-    // stopped at the cap of rounds with a contact still approaching.
+    // Generalized reflections: rounds of { active set, solve } of the cluster that took
+    // most, summed over the passes, and the clusters that stopped at a cap with a contact
+    // still approaching.
     std::uint64_t reflectionRounds = 0;
     std::uint64_t reflectionCapHits = 0;
     std::uint64_t events = 0;

@@ -124,6 +124,18 @@ struct LcpContact {
     bool isStatic = false;      // |relative normal speed| <= epsilon before (slide 13)
 };
 
+// The contacts [first, first + count) of one cluster of the global solvers.
+struct ContactCluster {
+    std::uint32_t first = 0;
+    std::uint32_t count = 0;
+    // What solving it took: sweeps, rounds (generalized reflections), the residual left
+    // (m/s), and whether a cap stopped it.
+    std::uint32_t sweeps = 0;
+    std::uint32_t rounds = 0;
+    double residual = 0.0;
+    bool capped = false;
+};
+
 // Scratch memory reused from step to step, so a step allocates nothing once warm.
 struct Workspace {
     std::vector<SpherePair> pairs;          // candidate pairs (i, j), in index order
@@ -176,12 +188,12 @@ struct Workspace {
     std::vector<glm::dvec3> passStart;
     std::vector<glm::dvec3> velocityChange;
     std::vector<LcpContact> lcpContacts;  // the global solve's contacts
-    // Generalized reflections: a round's active set (copies, and their index in
-    // lcpContacts) and its inelastic and elastic impulses (kg m/s).
-    std::vector<LcpContact> activeContacts;
-    std::vector<std::uint32_t> activeIndex;
-    std::vector<double> inelasticImpulse;
-    std::vector<double> elasticImpulse;
+    // Their clusters (complementarity.h's sortIntoClusters), and its scratch: per sphere
+    // its union-find parent and cluster, the contacts in cluster order.
+    std::vector<ContactCluster> clusters;
+    std::vector<std::uint32_t> clusterParent;
+    std::vector<std::uint32_t> clusterOfSphere;
+    std::vector<LcpContact> clusterSorted;
     // Params::threads = 0: the count in use, measured against the other (step()).
     AutomaticThreads automaticThreads;
     ContinuousWorkspace continuous;

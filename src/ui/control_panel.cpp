@@ -292,16 +292,18 @@ void readoutsBody(const Readouts& r, const PanelState& state, PanelActions& acti
     if (r.globalSolve) {
         ImGui::Text("LCP sweeps last step %llu", static_cast<unsigned long long>(r.stats.lcpSweeps));
         ImGui::Text("LCP residual %.2g m/s", r.stats.lcpResidual);
-        tooltip("The global solve: projected Gauss-Seidel sweeps over all touching contacts in the last time step, "
-                "and the most any contact ended off its target speed (the tolerance is 1e-12 m/s; a pile needs "
-                "hundreds of sweeps, and at most 1000 are made).");
+        tooltip("The global solve, each cluster of touching spheres on its own (and on several threads): projected "
+                "Gauss-Seidel sweeps of the cluster that took most, summed over the last time step's passes, and the "
+                "most any contact ended off its target speed (the tolerance is 1e-12 m/s; a pile needs hundreds of "
+                "sweeps, and at most 1000 a pass are made).");
     }
     if (r.reflections) {
         ImGui::Text("reflection rounds last step %llu, capped %llu",
                     static_cast<unsigned long long>(r.stats.reflectionRounds),
                     static_cast<unsigned long long>(r.stats.reflectionCapHits));
-        tooltip("Generalized reflections: rounds of { the contacts that approach, solved together } in the last "
-                "time step, and the passes that stopped at 100 rounds with a contact still approaching.");
+        tooltip("Generalized reflections: rounds of { the contacts that approach, solved together } of the cluster "
+                "that took most, summed over the last time step's passes, and the clusters that stopped at a cap "
+                "(10 000 rounds, or 500 sweeps of their contacts) with a contact still approaching.");
     }
     if (r.continuous) {
         ImGui::Text("impacts last step %llu, TOI iterations %llu", static_cast<unsigned long long>(r.stats.events),
