@@ -43,6 +43,7 @@ struct Options {
     std::vector<int> threads{1, 2};
     int passes = 4;
     std::string order = "index";
+    std::string solver = "sequential";  // slide 14's solvers; the warm-up is always sequential
     double warmUp = 1.5;  // s simulated before timing: the pile has landed
     double block = 0.5;   // s of wall time per timed repetition (at least one step)
     int repetitions = 3;
@@ -63,6 +64,8 @@ const bench::Usage kUsage{"spheres_bench_solver",
     "  --threads LIST thread counts (default 1,2)\n"
     "  --k K          passes (default 4)\n"
     "  --order NAME   pair order: index, reversed or shuffled (default index)\n"
+    "  --solver NAME  multiple collisions: sequential, until-converged, simultaneous, lcp or\n"
+    "                 generalized-reflections (default sequential; the warm-up is sequential)\n"
     "  --warm-up S    simulated seconds before timing (default 1.5)\n"
     "  --reps R       timed repetitions (default 3)\n"
     "  --mix-numbers  after the warm-up, shuffle the spheres' numbers (the same places and\n"
@@ -126,6 +129,7 @@ Options parseOptions(int argc, char** argv) {
         }
         else if (option == "--k") o.passes = countsFrom(option, value).front();
         else if (option == "--order") o.order = value;
+        else if (option == "--solver") o.solver = value;
         else if (option == "--warm-up") {
             if (!bench::parseSimulatedSeconds(value, o.warmUp))
                 usageError(option + " " + value + ": expected simulated seconds from 0 to 600");
@@ -136,11 +140,13 @@ Options parseOptions(int argc, char** argv) {
     return o;
 }
 
-scenes::Scene pileOf(int count, const Options& options, int threads) {
+// The timed scene; with `warmUp` the lecture's sequential solver whatever --solver says.
+scenes::Scene pileOf(int count, const Options& options, int threads, bool warmUp = false) {
     scenes::Scene scene = bench::pileOf(count);
     bench::set(scene, "passes=" + std::to_string(options.passes));
     bench::set(scene, "order=" + options.order);
     bench::set(scene, "threads=" + std::to_string(threads));
+    bench::set(scene, "solver=" + (warmUp ? std::string("sequential") : options.solver));
     return scene;
 }
 
@@ -215,12 +221,19 @@ struct Row {
 
 Row measure(int count, const Options& options) {
     const int mostThreads = *std::max_element(options.threads.begin(), options.threads.end());
-    scenes::Scene scene = pileOf(count, options, mostThreads);
-    physics::World start = scenes::buildWorld(scene);
-    const auto warmUpStart = std::chrono::steady_clock::now();
+    const scenes::Scene warmUp = pileOf(count, options, mostThreads, true);
+    const scenes::Scene scene = pileOf(count, options, mostThreads);
+    physics::World start = scenes::buildWorld(warmUp);
+    auto warmUpStart = std::chrono::steady_clock::now();
     const int warmUpSteps = int(std::lround(options.warmUp / scene.params.timeStep));
-    for (int k = 0; k < warmUpSteps; ++k) physics::step(start, scene.params);
-    const double perStep = bench::secondsSince(warmUpStart) / std::max(1, warmUpSteps);
+    for (int k = 0; k < warmUpSteps; ++k) physics::step(start, warmUp.params);
+    double perStep = bench::secondsSince(warmUpStart) / std::max(1, warmUpSteps);
+    if (options.solver != "sequential") {  // one step of the solver sets how many are timed
+        physics::World probe = start;
+        warmUpStart = std::chrono::steady_clock::now();
+        physics::step(probe, scene.params);
+        perStep = bench::secondsSince(warmUpStart);
+    }
     if (options.mixNumbers) start = withNumbersShuffled(start);
     const int steps = std::max(1, int(options.block / std::max(perStep, 1e-9)));
 
@@ -354,9 +367,10 @@ int compareUnderLoad(Options options) {
 
 int main(int argc, char** argv) {
     const Options options = parseOptions(argc, argv);
+    pileOf(1000, options, 1);  // a refused --solver or --order says so before anything is printed
     if (options.busy > 0) return compareUnderLoad(options);
-    std::printf("Pile (%s), K = %d, order %s%s, %s; load average %s at the start\n\n",
-                bench::presetContaining("pile").c_str(), options.passes, options.order.c_str(),
+    std::printf("Pile (%s), K = %d, order %s, solver %s%s, %s; load average %s at the start\n\n",
+                bench::presetContaining("pile").c_str(), options.passes, options.order.c_str(), options.solver.c_str(),
                 options.mixNumbers ? ", numbers shuffled after the warm-up" : "",
                 bench::cpuModel().c_str(), bench::loadAverage().c_str());
     std::printf("| N | threads | ms per solver step | ns per sphere-step | × one thread | broad phase ms | passes ms | rebuilds | hash |\n");
