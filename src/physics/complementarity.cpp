@@ -19,18 +19,31 @@ void push(World& world, const LcpContact& c, double impulse) {
     if (c.j >= 0) world.velocity[std::size_t(c.j)] -= (impulse / world.mass[std::size_t(c.j)]) * c.u;
 }
 
+LcpContact contactFor(const World& world, const Params& params, std::uint32_t i, std::int64_t j, std::int32_t other,
+                      const glm::dvec3& u, double depth) {
+    LcpContact c{i, j, other, u, depth, 0.0, 0.0, false};
+    const double approach = relativeNormal(world, c);  // m/s, < 0 approaching
+    c.isStatic = std::abs(approach) <= params.epsilon;
+    c.target = approach < 0.0 && !c.isStatic ? -params.beta * approach : 0.0;
+    return c;
+}
+
+void countCluster(const ContactCluster& cluster, StepStats& stats) {
+    stats.lcpSweeps += cluster.sweeps;
+    stats.reflectionRounds += cluster.rounds;
+    stats.lcpResidual = std::max(stats.lcpResidual, cluster.residual);
+    stats.reflectionCapHits += cluster.capped;
+}
+
 void gatherContacts(World& world, const Params& params, bool withSeparating, std::vector<LcpContact>& contacts) {
     const Workspace& ws = world.workspace;
     const std::vector<SpherePair>& pairs = pairsAsVisited(world, params);
     contacts.clear();
     const auto add = [&](std::uint32_t i, std::int64_t j, std::int32_t other, const glm::dvec3& u, double depth) {
-        LcpContact c{i, j, other, u, depth, 0.0, 0.0, false};
-        const double approach = relativeNormal(world, c);  // m/s, < 0 approaching
-        c.isStatic = std::abs(approach) <= params.epsilon;
+        const LcpContact c = contactFor(world, params, i, j, other, u, depth);
         // A contact that separates faster than epsilon takes no part: held at c+ >= 0 it
         // could be pushed to 0, and gain lambda c / 2 of energy from nowhere.
-        if (!withSeparating && approach > params.epsilon) return;
-        c.target = approach < 0.0 && !c.isStatic ? -params.beta * approach : 0.0;
+        if (!withSeparating && relativeNormal(world, c) > params.epsilon) return;
         contacts.push_back(c);
     };
     for (std::size_t k = 0; k < pairs.size(); ++k) {

@@ -19,6 +19,10 @@ double relativeNormal(const World& world, const LcpContact& c);
 // Applies an impulse (kg m/s) along the contact's normal: +u to i, -u to j.
 void push(World& world, const LcpContact& c, double impulse);
 
+// A contact with its target, by gatherContacts' rule below.
+LcpContact contactFor(const World& world, const Params& params, std::uint32_t i, std::int64_t j, std::int32_t other,
+                      const glm::dvec3& u, double depth);
+
 // The contacts findContacts found; without `withSeparating`, not those that separate
 // faster than epsilon (held at c+ >= 0, an impulse could push one to 0 and add lambda c / 2
 // of energy: the fast gas gained 11 % in 2 s). A contact is static when its |c_k| <=
@@ -44,6 +48,15 @@ inline int clusterThreads(const World& world, const Params& params, std::size_t 
 // the sweeps; `residual` (m/s) is what is left.
 int projectedGaussSeidel(World& world, LcpContact* contacts, std::size_t count, double tolerance, int mostSweeps,
                          double& residual);
+
+// One cluster's normal solve: lcp's projected Gauss-Seidel to its tolerance (lcp.cpp), or
+// generalized reflections' rounds (generalized_reflections.cpp); the cluster's record
+// (sweeps, rounds, residual, capped) filled in, each contact's lambda its impulse.
+void solveLcpCluster(World& world, LcpContact* contacts, ContactCluster& cluster);
+void reflectCluster(World& world, const Params& params, LcpContact* contacts, ContactCluster& cluster);
+// Adds one cluster's record to the stats (a cluster solved alone: the continuous
+// method's simultaneous impacts).
+void countCluster(const ContactCluster& cluster, StepStats& stats);
 
 // After the normal solve, per contact that pushed (lambda > 0): alpha on a bounce's, mu on
 // a static contact's relative tangential velocity (equal and opposite impulses).

@@ -15,12 +15,17 @@
 // until a bounce changes one of its spheres. Gravity presses it in by 1/2 g h^2
 // meanwhile, and D cancels that approach and projects it out (slide 8). Past
 // Params::maxEvents impacts the step goes to D at once and is counted.
+// With slide 14's global solvers (lcp, generalized reflections), impacts that fall at one
+// instant (within kSameInstant) are answered together, as one cluster, instead of one
+// after the other (Bernoulli's problem stays symmetric); the other solvers take them in
+// the queue's order.
 #include <algorithm>
 #include <cmath>
 
 #include <glm/geometric.hpp>
 
 #include "physics/broad_phase.h"
+#include "physics/complementarity.h"
 #include "physics/solver_stages.h"
 #include "physics/time_of_impact.h"
 
@@ -219,6 +224,74 @@ bool stale(const World& world, const PredictedImpact& impact) {
            (impact.other >= 0 && cw.version[std::uint32_t(impact.other)] != impact.versionOfOther);
 }
 
+// The contact of an impact, its spheres moved to its instant.
+LcpContact contactAtImpact(World& world, const Params& params, const PredictedImpact& impact) {
+    const std::uint32_t i = impact.i;
+    moveTo(world, i, impact.time, params.gravity);
+    if (impact.other < 0) {
+        const std::size_t k = std::size_t(-1 - impact.other);
+        const Plane face = faceFor(world.planes[k], world.position[i]);
+        const double depth = world.radius[i] - glm::dot(world.position[i] - face.point, face.normal);  // m
+        return contactFor(world, params, i, -1, impact.other, face.normal, depth);
+    }
+    const std::uint32_t j = std::uint32_t(impact.other);
+    moveTo(world, j, impact.time, params.gravity);
+    const glm::dvec3 delta = world.position[i] - world.position[j];  // m
+    const double distance = glm::length(delta);
+    const glm::dvec3 u = distance > 0.0 ? delta / distance : glm::dvec3(0.0, 0.0, 1.0);
+    return contactFor(world, params, i, j, impact.other, u, world.radius[i] + world.radius[j] - distance);
+}
+
+// B for impacts at one instant, with lcp or generalized reflections: solved together as
+// one cluster, then alpha and mu. Bounce if any bounced, Static if the others rested.
+Response respondTogether(World& world, const Params& params, const std::vector<PredictedImpact>& group,
+                         StepStats& stats) {
+    ContinuousWorkspace& cw = world.workspace.continuous;
+    std::vector<LcpContact>& contacts = world.workspace.lcpContacts;
+    contacts.clear();
+    for (const PredictedImpact& impact : group) contacts.push_back(contactAtImpact(world, params, impact));
+    const std::vector<glm::dvec3> before = world.recordContacts ? world.velocity : std::vector<glm::dvec3>();
+    ContactCluster cluster{0, std::uint32_t(contacts.size())};
+    if (params.solver == Solver::Lcp) {
+        solveLcpCluster(world, contacts.data(), cluster);
+    } else {
+        reflectCluster(world, params, contacts.data(), cluster);
+    }
+    countCluster(cluster, stats);
+    dampTangential(world, params, contacts);
+    const std::size_t logged = world.contacts.size();
+    reportContacts(world, contacts, before, stats, 0);
+    for (std::size_t k = logged; k < world.contacts.size(); ++k) world.contacts[k].timeOfImpact = group[0].time;
+    Response response = Response::None;
+    for (const LcpContact& c : contacts) {
+        if (c.lambda > 0.0 && !c.isStatic) response = Response::Bounce;
+        if (!c.isStatic || response == Response::Bounce) continue;
+        response = Response::Static;
+        if (c.j < 0) {
+            cw.planeResting[c.i * world.planes.size() + std::size_t(-1 - c.other)] = 1;
+        } else {
+            cw.pairResting[pairIndex(world, c.i, std::uint32_t(c.j))] = 1;
+        }
+    }
+    return response;
+}
+
+// s: impacts this close in time are one simultaneous impact for the global solvers (the
+// instants are found to kBisectionTolerance).
+constexpr double kSameInstant = 1e-12;
+
+// `group` holds the impact just taken; the queue's others at its instant that are not
+// stale join it.
+void takeSameInstant(World& world, std::vector<PredictedImpact>& group) {
+    std::vector<PredictedImpact>& queue = world.workspace.continuous.queue;
+    while (!queue.empty() && queue.front().time <= group.front().time + kSameInstant) {
+        std::pop_heap(queue.begin(), queue.end(), later);
+        const PredictedImpact next = queue.back();
+        queue.pop_back();
+        if (!stale(world, next)) group.push_back(next);
+    }
+}
+
 // C, for the spheres of an impact that changed them. When one may now travel beyond the
 // reach the candidates were found for, they are found again first.
 void predictAgain(World& world, const Params& params, const PredictedImpact& impact, Response response,
@@ -285,19 +358,24 @@ StepStats stepContinuous(World& world, const Params& params, double h) {
     const StageTimer timer(stats.passesSeconds);
     cw.queue.clear();
     predictAll(world, params, h, stats);  // A
+    const bool together = params.solver == Solver::Lcp || params.solver == Solver::GeneralizedReflections;
     while (!cw.queue.empty()) {
         std::pop_heap(cw.queue.begin(), cw.queue.end(), later);
         const PredictedImpact impact = cw.queue.back();
         cw.queue.pop_back();
         if (stale(world, impact)) continue;
-        if (stats.events == params.maxEvents(world.size())) {
+        if (stats.events >= params.maxEvents(world.size())) {
             stats.cappedSteps = 1;
             break;
         }
-        const Response response = respondAtContact(world, params, impact, stats);  // B
+        std::vector<PredictedImpact>& group = cw.sameInstant;
+        group.assign(1, impact);
+        if (together) takeSameInstant(world, group);
+        const Response response = group.size() == 1 ? respondAtContact(world, params, impact, stats)
+                                                    : respondTogether(world, params, group, stats);  // B
         if (response == Response::None) continue;
-        ++stats.events;
-        predictAgain(world, params, impact, response, h, stats);  // C
+        stats.events += group.size();
+        for (const PredictedImpact& taken : group) predictAgain(world, params, taken, response, h, stats);  // C
     }
     for (std::uint32_t i = 0; i < world.size(); ++i) {  // D
         moveTo(world, i, h, g);

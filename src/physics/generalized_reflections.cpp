@@ -91,7 +91,8 @@ int solveActive(World& world, RoundScratch& scratch, bool elastic, double tolera
     return sweeps;
 }
 
-// The rounds of one cluster; each contact's lambda ends as its impulse summed over them.
+}  // namespace
+
 void reflectCluster(World& world, const Params& params, LcpContact* contacts, ContactCluster& cluster) {
     thread_local RoundScratch scratch;
     for (std::size_t k = 0; k < cluster.count; ++k) contacts[k].lambda = 0.0;
@@ -129,8 +130,6 @@ void reflectCluster(World& world, const Params& params, LcpContact* contacts, Co
     }
     cluster.capped = fastest > 0.0;
 }
-
-}  // namespace
 
 void reflectGeneralized(World& world, const Params& params, StepStats& stats, int pass) {
     Workspace& ws = world.workspace;

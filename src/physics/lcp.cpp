@@ -24,6 +24,12 @@ constexpr int kLcpMostSweeps = 1000;
 
 }  // namespace
 
+void solveLcpCluster(World& world, LcpContact* contacts, ContactCluster& cluster) {
+    cluster.sweeps = std::uint32_t(
+        projectedGaussSeidel(world, contacts, cluster.count, kLcpTolerance, kLcpMostSweeps, cluster.residual));
+    cluster.capped = false;
+}
+
 void solveContactsTogether(World& world, const Params& params, StepStats& stats, int pass) {
     Workspace& ws = world.workspace;
     std::vector<LcpContact>& contacts = ws.lcpContacts;
@@ -33,8 +39,7 @@ void solveContactsTogether(World& world, const Params& params, StepStats& stats,
     sortIntoClusters(world, contacts, ws.clusters);
     runTasks(clusterThreads(world, params, ws.clusters.size()), int(ws.clusters.size()), [&](int k) {
         ContactCluster& cluster = ws.clusters[std::size_t(k)];
-        cluster.sweeps = std::uint32_t(projectedGaussSeidel(world, contacts.data() + cluster.first, cluster.count,
-                                                            kLcpTolerance, kLcpMostSweeps, cluster.residual));
+        solveLcpCluster(world, contacts.data() + cluster.first, cluster);
     });
     std::uint32_t sweeps = 0;  // of the cluster that took most
     for (const ContactCluster& cluster : ws.clusters) {

@@ -108,6 +108,7 @@ struct ContinuousWorkspace {
     std::vector<std::uint8_t> pairResting;  // per candidate pair: in static contact this step
     std::vector<std::uint8_t> planeResting;  // per sphere and plane (i * planes + k): the same
     std::vector<PredictedImpact> queue;     // a heap, earliest first
+    std::vector<PredictedImpact> sameInstant;  // impacts taken together (slide 14's global solvers)
     std::vector<SpherePair> previousPairs;  // scratch of a rebuild: the pairs before it
     std::vector<std::uint8_t> previousResting;
 };

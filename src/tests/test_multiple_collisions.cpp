@@ -231,6 +231,33 @@ TEST(MultipleCollisions, GeneralizedRestitutionBlendsTheInelasticAndElasticAnswe
     EXPECT_EQ(stats.reflectionCapHits, 0u);
 }
 
+// The continuous method meets both impacts of Bernoulli's problem at one instant (sphere 0
+// starts 0.5 mm above the others, at 1 m/s: t* = 0.5 ms into the step). Taken one after the
+// other (sequential), the first breaks the symmetry as in the methods above: at t* sphere 1
+// gets (-s3/4, 0, -3/4), then sphere 2 (s3/8, 0, -3/8). With lcp or generalized reflections
+// they are answered together: the global solve's answer, (0, 0, 0.2) and (-/+s3/5, 0, -0.6).
+TEST(MultipleCollisions, TheContinuousMethodAnswersImpactsAtOneInstantTogether) {
+    const double s3 = 2.0 * kS3;
+    for (Solver solver : {Solver::Sequential, Solver::Lcp, Solver::GeneralizedReflections}) {
+        physics::World world;
+        world.addSphere({0.0, 0.0, 0.2 * kS3 + 0.0005}, {0.0, 0.0, -1.0}, 0.1, 1.0);
+        world.addSphere({-0.1, 0.0, 0.0}, {0.0, 0.0, 0.0}, 0.1, 1.0);
+        world.addSphere({0.1, 0.0, 0.0}, {0.0, 0.0, 0.0}, 0.1, 1.0);
+        physics::Params params = exact(solver, Method::Continuous);
+        const physics::StepStats stats = physics::step(world, params);
+        EXPECT_EQ(stats.events, 2u);
+        if (solver == Solver::Sequential) {
+            expectVelocity(world, 1, {-s3 / 4, 0.0, -0.75});
+            expectVelocity(world, 2, {s3 / 8, 0.0, -0.375});
+        } else {
+            expectVelocity(world, 0, {0.0, 0.0, 0.2});
+            expectVelocity(world, 1, {-s3 / 5, 0.0, -0.6});
+            expectVelocity(world, 2, {s3 / 5, 0.0, -0.6});
+        }
+        EXPECT_NEAR(kinetic(world), 0.5, 1e-12);
+    }
+}
+
 // Every preset (at most 300 spheres), position based, under until-converged, lcp and
 // generalized reflections, for 2 s without its emitter: E~ never rises (simultaneous can,
 // on purpose: see above). The lcp solver leaves out contacts that separate faster than
