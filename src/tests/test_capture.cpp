@@ -185,6 +185,37 @@ TEST(CaptureCommandLine, RefusedInputExitsWithCodeTwoAndOneLine) {
     EXPECT_FALSE(exists(out));
 }
 
+namespace {
+
+// What the real executable prints (stdout and stderr) for `arguments`.
+std::string outputOf(const std::string& arguments) {
+    const std::string command = std::string("'") + SPHERES_EXECUTABLE + "' " + arguments + " 2>&1";
+    FILE* pipe = popen(command.c_str(), "r");
+    std::string output;
+    char buffer[256];
+    while (pipe && std::fgets(buffer, sizeof buffer, pipe)) output += buffer;
+    if (pipe) pclose(pipe);
+    return output;
+}
+
+}  // namespace
+
+// Slide 14: `simulate` ends with the five properties when the scene had contacts; none
+// before the first contact.
+TEST(SimulateCommandLine, PrintsTheFivePropertiesOnceThereWereContacts) {
+    const std::string sequential = outputOf("simulate --scene 16_bernoulli --steps 6");
+    EXPECT_NE(sequential.find("properties: momentum \u2713"), std::string::npos) << sequential;
+    EXPECT_NE(sequential.find("symmetry \u2717 off by 0.43 m/s"), std::string::npos) << sequential;
+    const std::string reflections = outputOf("simulate --scene 16_bernoulli --steps 6 --set solver=generalized-reflections");
+    EXPECT_NE(reflections.find("energy \u2713 after/before 1.000000"), std::string::npos) << reflections;
+    EXPECT_NE(reflections.find("symmetry \u2713"), std::string::npos) << reflections;
+    EXPECT_NE(reflections.find("break-away \u2713 1 of 1 resting pairs parted"), std::string::npos) << reflections;
+    EXPECT_NE(reflections.find("positivity \u2713"), std::string::npos) << reflections;
+    const std::string none = outputOf("simulate --scene 03_head_on --steps 1");
+    EXPECT_EQ(none.find("properties:"), std::string::npos) << none;
+    EXPECT_NE(none.find("03_head_on"), std::string::npos) << none;
+}
+
 // ---------------------------------------------------------------- frames, per backend
 
 class CaptureImages : public ::testing::TestWithParam<HeadlessBackend> {
