@@ -98,6 +98,18 @@ void sortIntoClusters(World& world, std::vector<LcpContact>& contacts, std::vect
         ws.clusterSorted[cluster.first + cluster.count++] = c;
     }
     contacts.swap(ws.clusterSorted);
+    // Within a cluster, pairs by their spheres' numbers, then walls by sphere and plane:
+    // the order the passes visit pairs in depends on the threads (and on the pair order),
+    // and the solution's rounding on the order of the sweeps.
+    const auto before = [](const LcpContact& a, const LcpContact& b) {
+        const bool aWall = a.j < 0, bWall = b.j < 0;
+        if (aWall != bWall) return bWall;
+        if (a.i != b.i) return a.i < b.i;
+        return aWall ? a.other > b.other : a.j < b.j;
+    };
+    for (const ContactCluster& cluster : clusters) {
+        std::sort(contacts.begin() + cluster.first, contacts.begin() + cluster.first + cluster.count, before);
+    }
 }
 
 int projectedGaussSeidel(World& world, LcpContact* contacts, std::size_t count, double tolerance, int mostSweeps,

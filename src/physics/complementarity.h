@@ -31,8 +31,8 @@ LcpContact contactFor(const World& world, const Params& params, std::uint32_t i,
 void gatherContacts(World& world, const Params& params, bool withSeparating, std::vector<LcpContact>& contacts);
 
 // Sorts `contacts` into clusters: the spheres that contacts join (a plane joins
-// nothing), each cluster's contacts in their gathered order, the clusters in the order of
-// their first contact. Clusters share no sphere: each is a problem of its own, and two
+// nothing), each cluster's contacts in a fixed order (pairs by their spheres' numbers,
+// then walls), the clusters in the order of their first contact. Clusters share no sphere: each is a problem of its own, and two
 // threads can solve two of them at once with the result of one thread.
 void sortIntoClusters(World& world, std::vector<LcpContact>& contacts, std::vector<ContactCluster>& clusters);
 
