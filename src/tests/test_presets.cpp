@@ -69,6 +69,29 @@ Flight fly(const Scene& scene, int steps) {
 
 // --- every preset ---
 
+// The lecture's methods and orders stay as they were, bit for bit: each preset's state after
+// 240 steps (4 s) with its own settings, the sequential solver, as the build before slide
+// 14's solvers came (75c59c9) gave it. Compared once for every preset under each of the five
+// methods (240 steps) and both other orders (120 steps, K = 2): all 105 the same. Recorded
+// with Debian 12's GCC 12 on x86-64; another compiler may round differently (`spheres simulate
+// --scene NAME --steps 240` prints the hash to compare).
+TEST(PresetHashes, TheLecturesMethodsReachTheStatesTheyReachedBeforeSlide14sSolvers) {
+    const std::vector<std::pair<const char*, std::uint64_t>> before = {
+        {"01_bounce_response_only", 0x6d6bbd85c407f465}, {"02_bounce_projection", 0xe9f9b8b0bcbfbd1e},
+        {"03_head_on", 0x6d80e93c5c319781},              {"04_head_on_unequal", 0x195ce75d34e1c151},
+        {"05_billiard", 0xc87e5500228f2b0f},             {"06_gas", 0xaa63128ed364b11b},
+        {"07_inclined_plane", 0xe141f2039ded6625},       {"08_newtons_cradle", 0xdea07f8bb1ca7972},
+        {"09_column", 0x6e3f8c7fa3c88d2a},               {"10_pyramid", 0x768a7834901b825b},
+        {"11_pile", 0x1a1c2c7f7f13080b},                 {"12_rain", 0x53fc6ad4d3c2d940},
+        {"13_tunnelling", 0x5e7d2e203e8d875a},           {"14_three_answers", 0x9a20c687ebd14584},
+        {"15_fast_gas", 0x7682da1545c2ba6e}};
+    for (const auto& [name, hash] : before) {
+        const Scene scene = preset(name);
+        ASSERT_EQ(scene.params.solver, physics::Solver::Sequential) << name;
+        EXPECT_EQ(physics::stateHash(run(scene, 240)), hash) << name;
+    }
+}
+
 TEST(PresetPhenomena, EveryPresetKeepsItsSpheresInTheBoxFor600Steps) {
     for (const std::string& name : scenes::listPresets()) {
         SCOPED_TRACE(name);
