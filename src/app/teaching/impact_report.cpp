@@ -31,8 +31,9 @@ PropertyVerdict momentum(const ImpactRecord& r) {
 
 PropertyVerdict energy(const ImpactRecord& r, const physics::Params& params) {
     PropertyVerdict v{"energy", "", Verdict::Untested,
-                      "Kinetic energy of the struck clusters after / before the contacts of a step: never more "
-                      "(kept exactly at beta = 1 without friction or static contacts)."};
+                      "Kinetic energy of the struck clusters after / before the contacts of a step: never more, "
+                      "and kept exactly when the contacts are elastic (beta = 1, alpha = 1 and epsilon = 0: no "
+                      "friction, no static contact)."};
     if (r.worstEnergyRatio < 0.0) {
         v.value = "nothing struck";
         return v;
@@ -41,9 +42,10 @@ PropertyVerdict energy(const ImpactRecord& r, const physics::Params& params) {
                   ? format("after/before %.4f to %.4f", r.leastEnergyRatio, r.worstEnergyRatio)
                   : format("after/before %.6f", r.worstEnergyRatio);
     const bool gained = r.worstEnergyRatio > 1.0 + kKeptSlack;
-    const bool lostElastic = params.beta >= 1.0 && r.leastEnergyRatio < 1.0 - kKeptSlack;
-    v.verdict = gained ? Verdict::Broken : Verdict::Kept;
-    if (lostElastic) v.value += " (beta = 1: lost)";
+    const bool elastic = params.beta >= 1.0 && params.alpha >= 1.0 && params.epsilon <= 0.0;
+    const bool lostElastic = elastic && r.leastEnergyRatio < 1.0 - kKeptSlack;
+    v.verdict = gained || lostElastic ? Verdict::Broken : Verdict::Kept;
+    if (lostElastic) v.value += " (elastic: lost)";
     return v;
 }
 

@@ -1,0 +1,85 @@
+// Slide 14's five properties as the readouts, the views' labels and `simulate` judge them
+// (app/teaching/impact_report.h): a check mark only where the property holds.
+#include <gtest/gtest.h>
+
+#include "app/teaching/impact_report.h"
+
+namespace {
+
+using app::Verdict;
+
+physics::Params elastic() {
+    physics::Params params;
+    params.alpha = params.beta = params.mu = 1.0;
+    params.epsilon = 0.0;
+    return params;
+}
+
+// One step whose struck clusters had `before` J and `after` J, free of walls (1 kg m/s).
+physics::ImpactProperties step(double before, double after, double momentumChange = 0.0) {
+    physics::ImpactProperties p;
+    p.contacts = p.struck = 2;
+    p.kineticBefore = before;
+    p.kineticAfter = after;
+    p.momentumScale = 1.0;
+    p.momentumChange = momentumChange;
+    return p;
+}
+
+Verdict verdictOf(const app::ImpactRecord& record, const physics::Params& params, const char* name,
+                  std::vector<physics::MirrorAsymmetry> mirrors = {}) {
+    for (const app::PropertyVerdict& v : app::judgeProperties(record, mirrors, params)) {
+        if (v.name == name) return v.verdict;
+    }
+    ADD_FAILURE() << "no property " << name;
+    return Verdict::Untested;
+}
+
+}  // namespace
+
+// Energy: more is broken, always; less is broken only where the contacts are elastic
+// (the squeeze under the simultaneous solver loses all of it at beta = 1), kept with beta < 1.
+TEST(ImpactReport, EnergyLostIsBrokenOnlyWhereTheContactsAreElastic) {
+    app::ImpactRecord lost;
+    lost.add(step(1.0, 0.0));
+    EXPECT_EQ(verdictOf(lost, elastic(), "energy"), Verdict::Broken);
+    physics::Params restitution = elastic();
+    restitution.beta = 0.8;
+    EXPECT_EQ(verdictOf(lost, restitution, "energy"), Verdict::Kept);
+    physics::Params staticContacts = elastic();
+    staticContacts.epsilon = 0.1;
+    EXPECT_EQ(verdictOf(lost, staticContacts, "energy"), Verdict::Kept);
+    app::ImpactRecord gained;
+    gained.add(step(1.0, 1.75));
+    EXPECT_EQ(verdictOf(gained, restitution, "energy"), Verdict::Broken);
+    app::ImpactRecord kept;
+    kept.add(step(1.0, 1.0));
+    EXPECT_EQ(verdictOf(kept, elastic(), "energy"), Verdict::Kept);
+    EXPECT_EQ(verdictOf(app::ImpactRecord{}, elastic(), "energy"), Verdict::Untested);
+}
+
+// Momentum beyond rounding is broken; symmetry needs the scene's mirrors; break-away is
+// untested without a resting pair, broken when none parted; positivity counts what is left.
+TEST(ImpactReport, EachPropertySaysWhatItMeasuredAndWhetherItHolds) {
+    app::ImpactRecord record;
+    record.add(step(1.0, 1.0, 1e-3));
+    EXPECT_EQ(verdictOf(record, elastic(), "momentum"), Verdict::Broken);
+    EXPECT_EQ(verdictOf(record, elastic(), "symmetry"), Verdict::Untested);
+    EXPECT_EQ(verdictOf(record, elastic(), "symmetry", {{0.0, 0.0}}), Verdict::Kept);
+    EXPECT_EQ(verdictOf(record, elastic(), "symmetry", {{0.0, 0.0}, {0.0, 0.43}}), Verdict::Broken);
+    EXPECT_EQ(verdictOf(record, elastic(), "break-away"), Verdict::Untested);
+    physics::ImpactProperties held = step(1.0, 1.0);
+    held.restingPairs = 3;
+    app::ImpactRecord lcp;
+    lcp.add(held);
+    EXPECT_EQ(verdictOf(lcp, elastic(), "break-away"), Verdict::Broken);
+    held.brokeAway = 1;
+    held.fastestApproachAfter = 0.5;
+    app::ImpactRecord cradle;
+    cradle.add(held);
+    EXPECT_EQ(verdictOf(cradle, elastic(), "break-away"), Verdict::Kept);
+    EXPECT_EQ(verdictOf(cradle, elastic(), "positivity"), Verdict::Broken);
+    EXPECT_EQ(verdictOf(lcp, elastic(), "positivity"), Verdict::Kept);
+    const std::string marks = app::propertiesMarks(app::judgeProperties(cradle, {}, elastic()));
+    EXPECT_EQ(marks, "\u2713 momentum  \u2713 energy  - symmetry\n\u2713 break-away  \u2717 positivity");
+}
