@@ -15,10 +15,11 @@
 // until a bounce changes one of its spheres. Gravity presses it in by 1/2 g h^2
 // meanwhile, and D cancels that approach and projects it out (slide 8). Past
 // Params::maxEvents impacts the step goes to D at once and is counted.
-// With slide 14's global solvers (lcp, generalized reflections), impacts that fall at one
-// instant (within kSameInstant) are answered together, as one cluster, instead of one
-// after the other (Bernoulli's problem stays symmetric); the other solvers take them in
-// the queue's order.
+// With slide 14's solvers that answer contacts together, impacts that fall at one instant
+// (within kSameInstant) are answered together instead of one after the other: lcp and
+// generalized reflections as one cluster, simultaneous by summing the lecture's responses
+// from the same velocities (Bernoulli's problem stays symmetric). Sequential and
+// until-converged take them in the queue's order.
 #include <algorithm>
 #include <cmath>
 
@@ -276,6 +277,41 @@ Response respondTogether(World& world, const Params& params, const std::vector<P
     return response;
 }
 
+// B for impacts at one instant with the simultaneous solver (slide 14's pairwise Jacobi):
+// each answered by the lecture's response from the same velocities, the changes summed.
+Response respondSimultaneouslyAt(World& world, const Params& params, const std::vector<PredictedImpact>& group,
+                                 StepStats& stats) {
+    std::vector<glm::dvec3>& start = world.workspace.passStart;  // m/s, of the group's spheres
+    std::vector<glm::dvec3>& change = world.workspace.velocityChange;
+    const auto spheresOf = [](const PredictedImpact& impact, std::uint32_t out[2]) {
+        out[0] = impact.i;
+        out[1] = impact.other >= 0 ? std::uint32_t(impact.other) : impact.i;
+        return impact.other >= 0 ? 2 : 1;
+    };
+    start.resize(2 * group.size());
+    change.assign(2 * group.size(), glm::dvec3(0.0));
+    std::uint32_t s[2];
+    for (std::size_t k = 0; k < group.size(); ++k) {  // every sphere at the instant first
+        for (int n = spheresOf(group[k], s); n-- > 0;) moveTo(world, s[n], group[k].time, params.gravity);
+    }
+    for (std::size_t k = 0; k < group.size(); ++k) {
+        for (int n = spheresOf(group[k], s); n-- > 0;) start[2 * k + std::size_t(n)] = world.velocity[s[n]];
+    }
+    Response response = Response::None;
+    for (std::size_t k = 0; k < group.size(); ++k) {
+        const Response r = respondAtContact(world, params, group[k], stats);
+        if (r == Response::Bounce || (r == Response::Static && response == Response::None)) response = r;
+        for (int n = spheresOf(group[k], s); n-- > 0;) {
+            change[2 * k + std::size_t(n)] = world.velocity[s[n]] - start[2 * k + std::size_t(n)];
+            world.velocity[s[n]] = start[2 * k + std::size_t(n)];
+        }
+    }
+    for (std::size_t k = 0; k < group.size(); ++k) {
+        for (int n = spheresOf(group[k], s); n-- > 0;) world.velocity[s[n]] += change[2 * k + std::size_t(n)];
+    }
+    return response;
+}
+
 // s: impacts this close in time are one simultaneous impact for the global solvers (the
 // instants are found to kBisectionTolerance).
 constexpr double kSameInstant = 1e-12;
@@ -358,7 +394,7 @@ StepStats stepContinuous(World& world, const Params& params, double h) {
     const StageTimer timer(stats.passesSeconds);
     cw.queue.clear();
     predictAll(world, params, h, stats);  // A
-    const bool together = params.solver == Solver::Lcp || params.solver == Solver::GeneralizedReflections;
+    const bool together = solvesTogether(params.solver);
     while (!cw.queue.empty()) {
         std::pop_heap(cw.queue.begin(), cw.queue.end(), later);
         const PredictedImpact impact = cw.queue.back();
@@ -371,8 +407,9 @@ StepStats stepContinuous(World& world, const Params& params, double h) {
         std::vector<PredictedImpact>& group = cw.sameInstant;
         group.assign(1, impact);
         if (together) takeSameInstant(world, group);
-        const Response response = group.size() == 1 ? respondAtContact(world, params, impact, stats)
-                                                    : respondTogether(world, params, group, stats);  // B
+        const Response response = group.size() == 1                       ? respondAtContact(world, params, impact, stats)
+                                   : params.solver == Solver::Simultaneous ? respondSimultaneouslyAt(world, params, group, stats)
+                                                                           : respondTogether(world, params, group, stats);  // B
         if (response == Response::None) continue;
         stats.events += group.size();
         for (const PredictedImpact& taken : group) predictAgain(world, params, taken, response, h, stats);  // C

@@ -236,10 +236,11 @@ TEST(MultipleCollisions, GeneralizedRestitutionBlendsTheInelasticAndElasticAnswe
 // starts 0.5 mm above the others, at 1 m/s: t* = 0.5 ms into the step). Taken one after the
 // other (sequential), the first breaks the symmetry as in the methods above: at t* sphere 1
 // gets (-s3/4, 0, -3/4), then sphere 2 (s3/8, 0, -3/8). With lcp or generalized reflections
-// they are answered together: the global solve's answer, (0, 0, 0.2) and (-/+s3/5, 0, -0.6).
+// they are answered together: the global solve's answer, (0, 0, 0.2) and (-/+s3/5, 0, -0.6);
+// with simultaneous, the responses summed: (0, 0, 0.5) and (-/+s3/4, 0, -0.75), energy x1.75.
 TEST(MultipleCollisions, TheContinuousMethodAnswersImpactsAtOneInstantTogether) {
     const double s3 = 2.0 * kS3;
-    for (Solver solver : {Solver::Sequential, Solver::Lcp, Solver::GeneralizedReflections}) {
+    for (Solver solver : {Solver::Sequential, Solver::Simultaneous, Solver::Lcp, Solver::GeneralizedReflections}) {
         physics::World world;
         world.addSphere({0.0, 0.0, 0.2 * kS3 + 0.0005}, {0.0, 0.0, -1.0}, 0.1, 1.0);
         world.addSphere({-0.1, 0.0, 0.0}, {0.0, 0.0, 0.0}, 0.1, 1.0);
@@ -250,6 +251,12 @@ TEST(MultipleCollisions, TheContinuousMethodAnswersImpactsAtOneInstantTogether) 
         if (solver == Solver::Sequential) {
             expectVelocity(world, 1, {-s3 / 4, 0.0, -0.75});
             expectVelocity(world, 2, {s3 / 8, 0.0, -0.375});
+        } else if (solver == Solver::Simultaneous) {
+            expectVelocity(world, 0, {0.0, 0.0, 0.5});
+            expectVelocity(world, 1, {-s3 / 4, 0.0, -0.75});
+            expectVelocity(world, 2, {s3 / 4, 0.0, -0.75});
+            EXPECT_NEAR(kinetic(world), 0.875, 1e-12);
+            continue;
         } else {
             expectVelocity(world, 0, {0.0, 0.0, 0.2});
             expectVelocity(world, 1, {-s3 / 5, 0.0, -0.6});
