@@ -44,6 +44,7 @@ struct Options {
     int passes = 4;
     std::string order = "index";
     std::string solver = "sequential";  // slide 14's solvers; the warm-up is always sequential
+    std::string shock = "off";          // slide 14's shock propagation, warm-up included
     double warmUp = 1.5;  // s simulated before timing: the pile has landed
     double block = 0.5;   // s of wall time per timed repetition (at least one step)
     int repetitions = 3;
@@ -66,6 +67,7 @@ const bench::Usage kUsage{"spheres_bench_solver",
     "  --order NAME   pair order: index, reversed or shuffled (default index)\n"
     "  --solver NAME  multiple collisions: sequential, until-converged, simultaneous, lcp or\n"
     "                 generalized-reflections (default sequential; the warm-up is sequential)\n"
+    "  --shock on|off slide 14's shock propagation, in the warm-up too (default off)\n"
     "  --warm-up S    simulated seconds before timing (default 1.5)\n"
     "  --reps R       timed repetitions (default 3)\n"
     "  --mix-numbers  after the warm-up, shuffle the spheres' numbers (the same places and\n"
@@ -130,6 +132,7 @@ Options parseOptions(int argc, char** argv) {
         else if (option == "--k") o.passes = countsFrom(option, value).front();
         else if (option == "--order") o.order = value;
         else if (option == "--solver") o.solver = value;
+        else if (option == "--shock") o.shock = value;
         else if (option == "--warm-up") {
             if (!bench::parseSimulatedSeconds(value, o.warmUp))
                 usageError(option + " " + value + ": expected simulated seconds from 0 to 600");
@@ -147,6 +150,7 @@ scenes::Scene pileOf(int count, const Options& options, int threads, bool warmUp
     bench::set(scene, "order=" + options.order);
     bench::set(scene, "threads=" + std::to_string(threads));
     bench::set(scene, "solver=" + (warmUp ? std::string("sequential") : options.solver));
+    bench::set(scene, "shock=" + options.shock);
     return scene;
 }
 
@@ -369,8 +373,9 @@ int main(int argc, char** argv) {
     const Options options = parseOptions(argc, argv);
     pileOf(1000, options, 1);  // a refused --solver or --order says so before anything is printed
     if (options.busy > 0) return compareUnderLoad(options);
-    std::printf("Pile (%s), K = %d, order %s, solver %s%s, %s; load average %s at the start\n\n",
+    std::printf("Pile (%s), K = %d, order %s, solver %s, shock %s%s, %s; load average %s at the start\n\n",
                 bench::presetContaining("pile").c_str(), options.passes, options.order.c_str(), options.solver.c_str(),
+                options.shock.c_str(),
                 options.mixNumbers ? ", numbers shuffled after the warm-up" : "",
                 bench::cpuModel().c_str(), bench::loadAverage().c_str());
     std::printf("| N | threads | ms per solver step | ns per sphere-step | × one thread | broad phase ms | passes ms | rebuilds | hash |\n");

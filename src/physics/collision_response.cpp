@@ -100,21 +100,39 @@ void reflectOnPlane(glm::dvec3& p, double r, const Plane& plane, double beta) {
     p += ((1.0 + beta) * d) * plane.normal;
 }
 
-Response respondToSphere(glm::dvec3& v1, glm::dvec3& v2, double m1, double m2,
-                         const glm::dvec3& u, const Params& params) {
+namespace {
+
+// Slides 11-13 with the pair's mass shares given: the response of respondToSphere.
+Response respondWithShares(glm::dvec3& v1, glm::dvec3& v2, const MassShares& shares, const glm::dvec3& u,
+                           const Params& params) {
     const double approachSpeed = glm::dot(v2 - v1, u);  // m/s, positive while approaching
     if (std::abs(approachSpeed) <= params.epsilon) {
-        staticSphereContact(v1, v2, massShares(m1, m2), u, approachSpeed, params);
+        staticSphereContact(v1, v2, shares, u, approachSpeed, params);
         return Response::Static;
     }
     if (approachSpeed < 0.0) return Response::None;
     if (params.response == ResponseModel::LectureAttenuation) {
-        lectureAttenuation(v1, v2, massShares(m1, m2), u, approachSpeed, params);
+        lectureAttenuation(v1, v2, shares, u, approachSpeed, params);
     } else {
-        momentumConserving(v1, v2, massShares(m1, m2), u, approachSpeed, params);
+        momentumConserving(v1, v2, shares, u, approachSpeed, params);
     }
     return Response::Bounce;
 }
+
+}  // namespace
+
+Response respondToSphere(glm::dvec3& v1, glm::dvec3& v2, double m1, double m2,
+                         const glm::dvec3& u, const Params& params) {
+    return respondWithShares(v1, v2, massShares(m1, m2), u, params);
+}
+
+Response respondToFrozenSphere(glm::dvec3& v1, const glm::dvec3& frozen, const glm::dvec3& u,
+                               const Params& params) {
+    glm::dvec3 v2 = frozen;  // m/s: what the response would do to it is dropped
+    return respondWithShares(v1, v2, MassShares{1.0, 0.0}, u, params);
+}
+
+void moveOffFrozenSphere(glm::dvec3& p1, const glm::dvec3& u, double d) { p1 += d * u; }
 
 Separation separateSpheres(glm::dvec3& p1, glm::dvec3& p2, double m1, double m2, const glm::dvec3& u,
                            double d, PositionSplit split) {

@@ -30,6 +30,15 @@ bool frictionOnRelativeVelocity(const Params& params);
 Response respondToSphere(glm::dvec3& v1, glm::dvec3& v2, double m1, double m2,
                          const glm::dvec3& u, const Params& params);
 
+// Slide 14's shock propagation: the same response against a sphere of a lower level,
+// frozen (infinitely heavy): m2 -> infinity, so sphere 1 takes the whole change (its mass
+// share is 1) and the frozen sphere keeps its velocity. u points from the frozen sphere to 1.
+Response respondToFrozenSphere(glm::dvec3& v1, const glm::dvec3& frozen, const glm::dvec3& u,
+                               const Params& params);
+
+// Its position response: sphere 1 alone moves out of the overlap, by d (m) along u.
+void moveOffFrozenSphere(glm::dvec3& p1, const glm::dvec3& u, double d);
+
 // How far (m, >= 0) separateSpheres moved each sphere.
 struct Separation {
     double first, second;

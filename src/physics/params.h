@@ -33,6 +33,16 @@ constexpr bool solvesTogether(Solver solver) {
     return solver == Solver::Simultaneous || solver == Solver::Lcp || solver == Solver::GeneralizedReflections;
 }
 
+// Slide 14's first global answer (shock_propagation.cpp): after the passes, the contact
+// graph's levels are swept from the floor up, each level frozen once answered.
+enum class ShockPropagation { Off, On };
+
+// Whether a method runs the sweep: those with passes over the contacts (position,
+// velocity, reflection). Response-only and the continuous method have none to follow.
+constexpr bool sweepsLevels(Method method) {
+    return method == Method::PositionBased || method == Method::VelocityBased || method == Method::Reflection;
+}
+
 // m/s: until-converged stops once no touching contact approaches faster than this.
 constexpr double kConvergedApproachSpeed = 1e-9;
 
@@ -78,6 +88,7 @@ struct Params {
     PairOrder order = PairOrder::Index;
     BroadPhase broadPhase = BroadPhase::Grid;
     Solver solver = Solver::Sequential;
+    ShockPropagation shock = ShockPropagation::Off;
     TimeOfImpact timeOfImpact = TimeOfImpact::ClosedForm;
     // The continuous method's most impacts per sphere in a solver step: past N times it,
     // the rest of the step is projected (and counted, StepStats::cappedSteps), so a step

@@ -7,6 +7,8 @@
 // Reflection (slide 7's second answer, reflection.cpp) runs the same stages with its
 // own position response. With slide 14's simultaneous and global solvers the velocities
 // of a pass are answered together first (respondWithSolver), and B and C only move.
+// With shock propagation on, the contact graph's levels are swept after the passes
+// (shock_propagation.cpp).
 #include "physics/solver_stages.h"
 
 namespace physics {
@@ -74,6 +76,7 @@ StepStats stepWithPositionResponse(World& world, const Params& params, double h,
             particlesVelocityAndPosition(world, params, stats, pass, response, !together);  // B
             wallsVelocityAndPosition(world, params, stats, pass, response, !together);      // C
         });
+        propagateShock(world, params, stats, true);
         endMeasuringImpacts(world, stats);
     }
     return stats;

@@ -294,6 +294,12 @@ Response respondToContact(World& world, const SpherePair& pair, const SphereCont
 Response respondToContact(World& world, std::uint32_t i, std::size_t planeIndex, const Plane& face,
                           const Params& params, StepStats& stats, int pass);
 
+// Sphere i's static contact with the frozen sphere `frozen` of a lower level (shock
+// propagation; contact.u from it to i): respondToFrozenSphere, recorded in i's contact
+// state and counted. Not logged: the contact log's formulas take two finite masses.
+Response respondToFrozenContact(World& world, std::uint32_t i, std::uint32_t frozen, const SphereContact& contact,
+                                const Params& params, StepStats& stats);
+
 // For methods whose positions stay put while the passes run (velocity based, response
 // only): finds the pairs that touch and the walls each sphere touches once per step,
 // into the workspace, for respondToAllContacts and the velocity method's cancelling.
@@ -366,6 +372,11 @@ enum class PositionResponse { Projection, Reflection };
 inline double positionResponseDistance(PositionResponse response, double d, const Params& params) {
     return response == PositionResponse::Projection ? d : (1.0 + params.beta) * d;
 }
+
+// Slide 14's shock propagation (shock_propagation.cpp), with Params::shock on: after the
+// passes, the contact graph's levels swept from the planes up, each frozen once answered.
+// `moves`: the position stage too (projection); else velocities only.
+void propagateShock(World& world, const Params& params, StepStats& stats, bool moves);
 
 // The position based method's stages (position_based.cpp) with either position response.
 StepStats stepWithPositionResponse(World& world, const Params& params, double h,

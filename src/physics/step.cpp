@@ -250,6 +250,8 @@ StepStats& StepStats::operator+=(const StepStats& o) {
     lcpResidual = std::max(lcpResidual, o.lcpResidual);
     reflectionRounds += o.reflectionRounds;
     reflectionCapHits += o.reflectionCapHits;
+    shockLevels = std::max(shockLevels, o.shockLevels);
+    shockRounds += o.shockRounds;
     impacts += o.impacts;
     events += o.events;
     toiIterations += o.toiIterations;
@@ -275,6 +277,7 @@ void findOrderedPairs(World& world, const Params& params, StepStats& stats) {
     const int threads = solverThreads(world, params);
     const Extent extent = extentOf(world);
     const double margin = kMarginFraction * extent.maxRadius;
+    ws.margin = margin;
     if (params.broadPhase == BroadPhase::AllPairs) {  // the lecture's loop, every step
         ws.cached = false;
         stats.pairTests += findPairs(params.broadPhase, world, margin, ws);
@@ -360,6 +363,14 @@ Response respondToContact(World& world, std::uint32_t i, std::size_t planeIndex,
                                   {before, glm::dvec3(0.0)}, {world.velocity[i], glm::dvec3(0.0)},
                                   {world.mass[i], 0.0}});
     }
+    return response;
+}
+
+Response respondToFrozenContact(World& world, std::uint32_t i, std::uint32_t frozen, const SphereContact& contact,
+                                const Params& params, StepStats& stats) {
+    const Response response = respondToFrozenSphere(world.velocity[i], world.velocity[frozen], contact.u, params);
+    record(world, i, response);
+    count(stats, response);
     return response;
 }
 

@@ -35,6 +35,9 @@ struct StepStats {
     // still approaching.
     std::uint64_t reflectionRounds = 0;
     std::uint64_t reflectionCapHits = 0;
+    // Shock propagation: the most levels of the contact graph a solver step swept (max).
+    std::uint64_t shockLevels = 0;
+    std::uint64_t shockRounds = 0;  // position rounds of the levels, summed
     std::uint64_t events = 0;
     std::uint64_t toiIterations = 0;
     std::uint64_t cappedSteps = 0;
@@ -54,6 +57,11 @@ struct StepStats {
 
 // Runs params.substeps solver steps of h / substeps with the chosen method.
 StepStats step(World& world, const Params& params);
+
+// Slide 14's contact graph of the current positions (World::workspace.contactGraph): the
+// candidate pairs of the last solver step that touch, and each sphere's level
+// (shock_propagation.cpp). The shock sweep finds it itself; the overlay asks for it.
+void findContactGraph(World& world, const Params& params);
 
 // One solver step of length h (s), as the second deck's summary writes it.
 StepStats stepPositionBased(World& world, const Params& params, double h);

@@ -7,6 +7,8 @@
 // B left approaching. Inside every pass it would turn each multi-contact bounce
 // partly inelastic (an elastic gas lost 16 % of its kinetic energy in 10^4 steps).
 // (+) smooth and stable motion; (-) an existing overlap persists.
+// With shock propagation on, the contact graph's levels are swept between B and C, on
+// velocities only (shock_propagation.cpp).
 #include "physics/solver_stages.h"
 
 namespace physics {
@@ -43,6 +45,7 @@ StepStats stepVelocityBased(World& world, const Params& params, double h) {
         findContacts(world, params);  // positions stay put until D
         beginMeasuringImpacts(world);
         runPasses(world, params, stats, [&](int pass) { respondWithSolver(world, params, stats, pass); });  // B
+        propagateShock(world, params, stats, false);
         cancelPenetratingVelocity(world, params);  // C
         endMeasuringImpacts(world, stats);
     }

@@ -137,10 +137,32 @@ struct ContactCluster {
     bool capped = false;
 };
 
+// Slide 14's contact graph (shock_propagation.cpp): spheres are its nodes, touching pairs
+// its edges (within Workspace::margin), each sphere's level its distance in contacts from
+// a plane.
+struct ContactGraph {
+    std::vector<std::uint32_t> edgeStart;  // sphere i's neighbours: neighbour[edgeStart[i], edgeStart[i + 1])
+    std::vector<std::uint32_t> neighbour;  // by sphere, each sphere's in ascending order
+    std::vector<std::int32_t> level;       // per sphere: 0 touches a plane; -1 reaches none
+    std::vector<std::uint32_t> byLevel;    // the spheres with a level, by level, then number
+    std::vector<std::uint32_t> levelStart;  // level k: byLevel[levelStart[k], levelStart[k + 1])
+    // The sweep's order (shock_propagation.cpp's findSweepOrder).
+    std::vector<SpherePair> inside;          // pairs inside a level, by level
+    std::vector<std::uint32_t> insideStart;  // level k: inside[insideStart[k], insideStart[k + 1])
+    std::vector<std::uint32_t> below;        // byLevel[s]'s neighbours one level down:
+    std::vector<std::uint32_t> belowStart;   //   below[belowStart[s], belowStart[s + 1])
+    std::vector<std::uint32_t> slotOf;       // per sphere with a level: its s in byLevel
+    std::vector<SpherePair> pressed;         // scratch: a level's contacts answered again
+    std::vector<std::uint8_t> moved;         // scratch: per sphere, moved in this round
+    std::vector<std::uint32_t> queue;      // scratch: the breadth-first search's
+    std::vector<std::uint32_t> next;       // scratch of the counting sorts: where the next entry goes
+};
+
 // Scratch memory reused from step to step, so a step allocates nothing once warm.
 struct Workspace {
     std::vector<SpherePair> pairs;          // candidate pairs (i, j), in index order
     std::vector<SpherePair> visitOrder;     // the same pairs, in the order the passes visit them
+    double margin = 0.0;                    // m: beyond touching, how far visitOrder's pairs reach
     // The candidate pairs are kept while no sphere has moved far enough to meet a
     // sphere outside them (a Verlet list): these say what they were built from.
     std::vector<glm::dvec3> positionsAtBuild;  // m
@@ -199,6 +221,7 @@ struct Workspace {
     AutomaticThreads automaticThreads;
     ContinuousWorkspace continuous;
     ImpactScratch impacts;  // World::measureImpacts
+    ContactGraph contactGraph;  // Params::shock
 };
 
 struct World {

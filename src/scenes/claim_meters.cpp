@@ -385,6 +385,11 @@ const std::vector<MeterEntry>& meterTable() {
          world([](const World& w, const Scene& s) { return static_cast<double>(physics::spheresHeldInMidAir(w, s.params)); })},
         {{"colliding_share", "", "the share of spheres that bounced in the last step (orange)"},
          world([](const World& w, const Scene&) { return shareIn(w, physics::ContactState::Colliding); })},
+        {{"shock_levels", "", "the contact graph's levels the last shock propagation sweep climbed (0: none)"},
+         world([](const World& w, const Scene&) {
+             const std::size_t starts = w.workspace.contactGraph.levelStart.size();
+             return starts > 0 ? static_cast<double>(starts - 1) : 0.0;
+         })},
         {{"gravity_per_step", "m/s", "|g| h / substeps, the speed gravity adds in one solver step"},
          world([](const World&, const Scene& s) { return glm::length(s.params.gravity) * s.params.solverStep(); })},
         {{"mirror_asymmetry", "m/s", "the largest velocity asymmetry in the scene's mirror planes (0: symmetric)"},

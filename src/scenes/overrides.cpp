@@ -62,36 +62,34 @@ bool hasName(std::string_view setting) { return setting.find('=') != std::string
 }  // namespace
 
 std::string overrideVariants(const Scene& scene, const std::vector<std::string>& lists, Variants& variants) {
-    // The settings, with each value without a name joined to the name before it.
-    std::vector<std::string> common;
-    std::string last;     // the name of the last setting with a name
-    std::string several;  // the name that takes several values
-    std::vector<std::string> values;
+    // The settings as written, each name with its values (a value after a comma without a
+    // name is another value of the name before it).
+    std::vector<std::pair<std::string, std::vector<std::string>>> settings;
     for (const std::string& part : splitOverrides(lists)) {
         if (hasName(part)) {
-            common.push_back(part);
-            last = settingName(part);
+            settings.push_back({settingName(part), {std::string(trim(std::string_view(part).substr(part.find('=') + 1)))}});
             continue;
         }
-        if (last.empty()) return "'" + part + "' has no name: write name=value,value";
-        if (!several.empty() && last != several) return "only one name may take several values (" + several + ", " + last + ")";
-        if (several.empty()) {
-            several = last;
-            values.push_back(common.back().substr(common.back().find('=') + 1));
-            common.pop_back();
+        if (settings.empty()) return "'" + part + "' has no name: write name=value,value";
+        settings.back().second.push_back(part);
+    }
+    // A view per combination of the values, in the order written.
+    Variants all{{}};
+    for (const auto& [name, values] : settings) {
+        if (int(values.size()) > kMostViews) {
+            return "at most " + std::to_string(kMostViews) + " values of " + name + " (one view each)";
         }
-        values.push_back(part);
+        Variants combined;
+        for (const std::vector<std::string>& variant : all) {
+            for (const std::string& value : values) {
+                combined.push_back(variant);
+                combined.back().push_back(name + "=" + value);
+            }
+        }
+        all = std::move(combined);
     }
-    if (values.empty()) values.push_back("");  // one view: the common settings alone
-    if (int(values.size()) > kMostViews) {
-        return "at most " + std::to_string(kMostViews) + " values of " + several + " (one view each)";
-    }
-    Variants all;
-    for (const std::string& value : values) {
-        std::vector<std::string> variant = common;
-        if (!several.empty()) variant.insert(variant.begin(), several + "=" + std::string(trim(value)));
+    for (const std::vector<std::string>& variant : all) {
         if (const std::string error = checkOverrides(scene, variant); !error.empty()) return error;
-        all.push_back(std::move(variant));
     }
     // Views that show what A shows are left out, unless none differs.
     Variants differing;

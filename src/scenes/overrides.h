@@ -1,7 +1,7 @@
 #pragma once
 // Overrides of a scene's parameters, "name=value[,name=value]", as side by side takes
 // them (the window's bar, --compare, a scene's "compare" key): split, checked,
-// labelled, and spread over views when one name takes several values.
+// labelled, and spread over views when names take several values.
 #include <string>
 #include <string_view>
 #include <vector>
@@ -20,7 +20,8 @@ std::vector<std::string> splitOverrides(const std::vector<std::string>& lists);
 // The overrides of each view but A. A value after a comma without a name is another
 // value of the name before it, and each of that name's values is a view of its own:
 // "method=reflection,continuous,passes=1" gives {method=reflection, passes=1} and
-// {method=continuous, passes=1}. One name only may take several values. A view whose
+// {method=continuous, passes=1}. Several names with several values make a view per
+// combination: "shock=off,on,passes=1,4" gives four, in the order written. A view whose
 // overrides change nothing in `scene` is left out when another view does change
 // something (A shows it already). Returns "" or why not; `variants` is then filled.
 using Variants = std::vector<std::vector<std::string>>;

@@ -96,6 +96,7 @@ Parameter onlyWith(bool (*available)(const Scene&), Parameter p) {
 bool hasEmitter(const Scene& s) { return !s.emitters.empty(); }
 bool hasGenerator(const Scene& s) { return !s.generators.empty(); }
 bool isContinuous(const Scene& s) { return s.params.method == physics::Method::Continuous; }
+bool sweepsLevels(const Scene& s) { return physics::sweepsLevels(s.params.method); }
 
 double gravityOf(const Scene& s) { return glm::length(s.params.gravity); }
 std::string setGravity(Scene& s, double g) {
@@ -209,6 +210,18 @@ std::vector<Parameter> makeTable() {
                "elastically (blended with the inelastic answer for \u03b2 < 1), again until none "
                "approaches: touching spheres may break away, as a cradle's last ball does (one thread).",
                param<&Params::solver>()),
+        onlyWith(sweepsLevels, choice("shock", "shock propagation", {"off", "on"},
+               static_cast<double>(kDefaults.shock),
+               "Slide 14: \"precompute contact graph, explicit shock propagation management\" "
+               "(Guendelman et al. 2003). on: after the K passes, the spheres that touch a plane are "
+               "level 0, those touching level k and none lower level k + 1; the levels are swept from "
+               "the floor up, each one's contacts answered with the level below frozen (infinitely "
+               "heavy, it does not move), then frozen in turn. A stack's weight reaches the floor in "
+               "one sweep, so stacks and piles rest without sinking at any K. The sweep answers "
+               "overlaps and static contacts only: impacts stay with the passes, so a struck stack "
+               "still moves. Position, velocity and reflection methods; spheres that reach no plane "
+               "keep the passes' answer.",
+               param<&Params::shock>())),
         onlyWith(isContinuous, choice("toi", "time of impact", {"closed-form", "bisection"},
                static_cast<double>(kDefaults.timeOfImpact),
                "Continuous method only: how the instant of contact is found. closed-form: the "

@@ -114,7 +114,11 @@ TEST(SideBySide, ANameWithSeveralValuesMakesAViewEach) {
     EXPECT_EQ(variants, (app::Variants{{"method=position"}}));
     EXPECT_EQ(app::overrideVariants(scene, {"reflection"}, variants), "'reflection' has no name: write name=value,value");
     EXPECT_EQ(app::overrideVariants(scene, {"method=velocity,reflection,beta=0.5,0.6"}, variants),
-              "only one name may take several values (method, beta)");
+              "at most 4 views: A and 3 others");  // four combinations, none of them A's
+    // Two names with two values each: a view per combination, the one A shows left out.
+    ASSERT_EQ(app::overrideVariants(scene, {"method=position,velocity,passes=4,1"}, variants), "");
+    EXPECT_EQ(variants, (app::Variants{{"method=position", "passes=1"}, {"method=velocity", "passes=4"},
+                                       {"method=velocity", "passes=1"}}));
     EXPECT_NE(app::overrideVariants(scene, {"beta=0.1,0.2,0.3,0.4,0.5"}, variants).find("at most 4"), std::string::npos);
     EXPECT_NE(app::overrideVariants(scene, {"method=velocity,fast"}, variants).find("method=fast"), std::string::npos);
 

@@ -34,7 +34,7 @@ TEST(ParameterTable, HasTheLectureParametersOnceEach) {
     const std::set<std::string> expected = {
         "alpha",  "beta",     "epsilon", "mu",    "h",          "substeps", "passes", "gravity",
         "method", "response", "split",   "order", "broadphase", "emit_period", "count", "radius",
-        "seed",   "threads",  "toi",     "max_events", "solver"};
+        "seed",   "threads",  "toi",     "max_events", "solver", "shock"};
     EXPECT_EQ(names, expected);
 }
 
