@@ -253,16 +253,15 @@ class Sweep {
 
 }  // namespace
 
-void findContactGraph(World& world, const Params& params) {
-    ContactGraph& graph = world.workspace.contactGraph;
-    findEdges(world, params.order, graph);
+void findContactGraph(const World& world, PairOrder order, ContactGraph& graph) {
+    findEdges(world, order, graph);
     findLevels(world, graph);
 }
 
 void propagateShock(World& world, const Params& params, StepStats& stats, bool moves) {
     if (params.shock != ShockPropagation::On) return;
-    findContactGraph(world, params);
     ContactGraph& graph = world.workspace.contactGraph;
+    findContactGraph(world, params.order, graph);
     findSweepOrder(graph);
     Sweep sweep(world, params, stats, moves);
     const std::size_t levels = graph.levelStart.size() - 1;

@@ -58,10 +58,11 @@ struct StepStats {
 // Runs params.substeps solver steps of h / substeps with the chosen method.
 StepStats step(World& world, const Params& params);
 
-// Slide 14's contact graph of the current positions (World::workspace.contactGraph): the
-// candidate pairs of the last solver step that touch, and each sphere's level
-// (shock_propagation.cpp). The shock sweep finds it itself; the overlay asks for it.
-void findContactGraph(World& world, const Params& params);
+// Slide 14's contact graph of the current positions into `graph`: the candidate pairs of
+// the last solver step (visited in `order`: the pairs' order in Workspace::visitOrder), all
+// within the margin of touching, and each sphere's level (shock_propagation.cpp). The
+// shock sweep finds it into world.workspace.contactGraph; the overlay into its own.
+void findContactGraph(const World& world, PairOrder order, ContactGraph& graph);
 
 // One solver step of length h (s), as the second deck's summary writes it.
 StepStats stepPositionBased(World& world, const Params& params, double h);

@@ -313,13 +313,38 @@ TEST(Overlays, LegendStatesEachScale) {
     OverlayFlags all;
     for (const char* name : app::kOverlayNames) app::setOverlayByName(all, name);
     const auto legend = app::overlayLegend(all, 1000, -1);
-    ASSERT_EQ(legend.size(), 5u);
+    ASSERT_EQ(legend.size(), 6u);
     EXPECT_NE(legend[0].text.find("1 m/s = 10 cm"), std::string::npos) << legend[0].text;
     EXPECT_NE(legend[2].text.find("1 kg m/s = 5 cm"), std::string::npos) << legend[2].text;
     EXPECT_NE(legend[3].text.find("× 10"), std::string::npos) << legend[3].text;
     EXPECT_NE(legend[4].text.find("first 200 spheres"), std::string::npos) << legend[4].text;
+    EXPECT_NE(legend[5].text.find("0 red, 1 orange"), std::string::npos) << legend[5].text;
     EXPECT_TRUE(app::overlayLegend(OverlayFlags{}, 1000, -1).empty());
-    EXPECT_EQ(app::overlayNames(all).size(), 5u);
+    EXPECT_EQ(app::overlayNames(all).size(), 6u);
+}
+
+// Slide 14's contact graph on a column of five: a line from the foot sphere to the floor
+// (level 0, red), and one per touching pair in the colour of the upper sphere's level
+// (1 orange, 2 yellow, 3 green, 4 cyan); the simulation's graph gives each its level.
+TEST(Overlays, TheContactGraphShowsEachLevelInItsColour) {
+    scenes::Scene scene;
+    scene.box = scenes::Box{};
+    scene.params.shock = physics::ShockPropagation::On;
+    for (int k = 0; k < 5; ++k) scene.spheres.push_back({{0.0, 0.0, kRadius + 2 * kRadius * k}, {0.0, 0.0, 0.0}, kRadius, 1.0});
+    Simulation sim(scene);
+    for (int k = 0; k < 10; ++k) sim.singleStep();
+    EXPECT_EQ(sim.contactGraph().level, (std::vector<std::int32_t>{0, 1, 2, 3, 4}));
+    render::FrameSnapshot snapshot;
+    app::buildSnapshot(sim, app::viewShowing(only("graph")), snapshot);
+    ASSERT_EQ(snapshot.lines.size(), 5u);
+    for (int level = 0; level < 5; ++level) {
+        const auto lines = linesOf(snapshot, app::levelColor(level));
+        ASSERT_EQ(lines.size(), 1u) << "level " << level;
+        const float top = std::max(lines[0].a.z, lines[0].b.z);  // the upper end: the level's own sphere
+        EXPECT_NEAR(top, float(kRadius + 2 * kRadius * level), 1e-4) << "level " << level;
+    }
+    EXPECT_TRUE(sameColor(app::levelColor(6), app::levelColor(0)));  // the colours repeat every six levels
+    EXPECT_TRUE(sameColor(app::levelColor(-1), app::kNoLevelColor));
 }
 
 // ---------------------------------------------------------------- capture --overlay

@@ -29,6 +29,7 @@ struct PanelState {
     bool showImpulses = false;     // impulse arrows at impact, fading over 0.5 s
     bool showPenetration = false;  // overlap depth as a red segment, exaggerated
     bool showTrails = false;       // fading trails of the centres
+    bool showGraph = false;        // slide 14's contact graph, coloured by level
     bool overlaysOnTop = true;     // seen through spheres in small scenes (app::overlaysOnTop)
     int selectedSphere = -1;       // a picked sphere, -1 none: overlays and measured beta^2 follow it
     std::string scenePath;     // the load field

@@ -184,7 +184,7 @@ OverlayFlags parseOverlays(const std::string& text) {
         } else if (!setOverlayByName(flags, name)) {
             throw UsageError("--overlay " + text + ": unknown overlay '" + name +
                              "'; expected a comma-separated list of velocity, contacts, impulses, "
-                             "penetration, trails, or all");
+                             "penetration, trails, graph, or all");
         }
     }
     return flags;

@@ -34,6 +34,16 @@ void Simulation::startFrom(physics::World world) {
     measureNow();
 }
 
+const physics::ContactGraph& Simulation::contactGraph() const {
+    const std::uint64_t state = physics::stateHash(world_) ^ world_.stepCount;
+    if (!graphFound_ || state != graphOf_) {
+        physics::findContactGraph(world_, scene_.params.order, graph_);
+        graphOf_ = state;
+        graphFound_ = true;
+    }
+    return graph_;
+}
+
 void Simulation::resetOverlays() {
     overlays_.reset();
     ghosts_.reset();

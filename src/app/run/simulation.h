@@ -62,6 +62,10 @@ public:
     void setSelectedSphere(int index);
     int selectedSphere() const { return selected_; }
     const OverlayState& overlays() const { return overlays_; }
+    // Slide 14's contact graph of the world as it is now (its levels, as shock propagation
+    // sweeps them), found when first asked after the state changed: the graph overlay and
+    // the inspector's level.
+    const physics::ContactGraph& contactGraph() const;
 
     const Alarms& alarms() const { return alarms_; }
     const RestitutionMeter& restitution() const { return restitution_; }
@@ -113,6 +117,9 @@ private:
     std::size_t sizeBefore_ = 0;  // spheres before the running step
     double lastStepTime_ = 0.0;   // s, world time after the last step
     bool skipEnergyCheck_ = false;
+    mutable physics::ContactGraph graph_;  // contactGraph(), for the state whose hash is graphOf_
+    mutable std::uint64_t graphOf_ = 0;
+    mutable bool graphFound_ = false;
 };
 
 }  // namespace app

@@ -51,12 +51,13 @@ bool setOverlayByName(OverlayFlags& flags, const std::string& name) {
     else if (name == "impulses") flags.impulses = true;
     else if (name == "penetration") flags.penetration = true;
     else if (name == "trails") flags.trails = true;
+    else if (name == "graph") flags.graph = true;
     else return false;
     return true;
 }
 
 std::vector<std::string> overlayNames(const OverlayFlags& flags) {
-    const bool on[] = {flags.velocity, flags.contacts, flags.impulses, flags.penetration, flags.trails};
+    const bool on[] = {flags.velocity, flags.contacts, flags.impulses, flags.penetration, flags.trails, flags.graph};
     static_assert(sizeof on == sizeof kOverlayNames / sizeof kOverlayNames[0]);
     std::vector<std::string> names;
     for (std::size_t k = 0; k < sizeof on; ++k) {
@@ -301,6 +302,36 @@ void appendPenetration(const std::vector<Overlap>& overlaps, render::FrameSnapsh
     }
 }
 
+glm::u8vec4 levelColor(int level) {
+    constexpr int kColors = sizeof kLevelColors / sizeof kLevelColors[0];
+    return level < 0 ? kNoLevelColor : kLevelColors[level % kColors];
+}
+
+void appendContactGraph(const physics::World& world, const physics::ContactGraph& graph,
+                        render::FrameSnapshot& snapshot) {
+    if (graph.level.size() != world.size() || graph.edgeStart.size() != world.size() + 1) return;
+    std::size_t drawn = 0;
+    for (std::uint32_t i = 0; i < world.size() && drawn < kMaxDrawnContacts; ++i) {
+        const int level = graph.level[i];
+        for (std::uint32_t e = graph.edgeStart[i]; e < graph.edgeStart[i + 1]; ++e) {
+            const std::uint32_t j = graph.neighbour[e];
+            if (j < i) continue;
+            snapshot.addLine(glm::vec3(world.position[i]), glm::vec3(world.position[j]),
+                             levelColor(std::max(level, graph.level[j])), kTrailWidth);
+            ++drawn;
+        }
+        if (level != 0) continue;
+        for (const physics::Plane& plane : world.planes) {  // the contacts that make it level 0
+            const physics::Plane face = physics::faceFor(plane, world.position[i]);
+            const double distance = glm::dot(world.position[i] - face.point, face.normal);  // m
+            if (distance > world.radius[i] + world.workspace.margin) continue;
+            snapshot.addLine(glm::vec3(world.position[i]), glm::vec3(world.position[i] - distance * face.normal),
+                             levelColor(0), kTrailWidth);
+            ++drawn;
+        }
+    }
+}
+
 std::vector<LegendLine> overlayLegend(const OverlayFlags& flags, std::size_t sphereCount, int selected) {
     std::vector<LegendLine> lines;
     char text[200];
@@ -333,6 +364,11 @@ std::vector<LegendLine> overlayLegend(const OverlayFlags& flags, std::size_t sph
         std::snprintf(text, sizeof text, "trails: the last %.1f s of the centres%s", kTrailSeconds,
                       which(kMaxTrailSpheres).c_str());
         lines.push_back({text, glm::u8vec4(200, 200, 210, 255)});
+    }
+    if (flags.graph) {
+        lines.push_back({"contact graph: levels from the floor, 0 red, 1 orange, 2 yellow, 3 green, 4 cyan, 5 blue, "
+                         "then red again; grey reaches no plane",
+                         levelColor(1)});  // not red: the penetration line above is
     }
     return lines;
 }

@@ -28,17 +28,18 @@ struct OverlayFlags {
     bool impulses = false;     // impulse arrows at impact, fading
     bool penetration = false;  // overlap depth, exaggerated
     bool trails = false;       // fading trails of the centres
-    bool any() const { return velocity || contacts || impulses || penetration || trails; }
+    bool graph = false;        // slide 14's contact graph, coloured by level
+    bool any() const { return velocity || contacts || impulses || penetration || trails || graph; }
     // Whether world.contacts must be recorded for them.
     bool needsContacts() const { return contacts || impulses; }
     bool operator==(const OverlayFlags& o) const {
         return velocity == o.velocity && contacts == o.contacts && impulses == o.impulses &&
-               penetration == o.penetration && trails == o.trails;
+               penetration == o.penetration && trails == o.trails && graph == o.graph;
     }
 };
 
 // The overlay names of `capture --overlay`, in this order.
-constexpr const char* kOverlayNames[] = {"velocity", "contacts", "impulses", "penetration", "trails"};
+constexpr const char* kOverlayNames[] = {"velocity", "contacts", "impulses", "penetration", "trails", "graph"};
 // Sets the flag called `name`; false when there is none of that name.
 bool setOverlayByName(OverlayFlags& flags, const std::string& name);
 // The names of the overlays that are on, in kOverlayNames order.
@@ -64,6 +65,12 @@ constexpr glm::u8vec4 kContactPointColor{255, 225, 0, 255};  // yellow
 constexpr glm::u8vec4 kImpulseColor{255, 255, 255, 255};    // white
 constexpr glm::u8vec4 kPenetrationColor{235, 20, 20, 255};  // red
 constexpr glm::u8vec4 kOutlineColor{20, 22, 30, 255};       // under every arrow, for contrast
+// The contact graph's levels from the floor up (level k: kLevelColors[k % 6]), and the
+// spheres that reach no plane.
+constexpr glm::u8vec4 kLevelColors[] = {{230, 40, 40, 255},  {255, 140, 0, 255},  {240, 220, 0, 255},
+                                        {40, 200, 60, 255},  {0, 200, 225, 255},  {70, 90, 255, 255}};
+constexpr glm::u8vec4 kNoLevelColor{150, 150, 160, 255};
+glm::u8vec4 levelColor(int level);
 
 // One impulse at an impact: drawn where it happened, fading with age.
 struct ImpulseMark {
@@ -110,6 +117,11 @@ void appendVelocityArrows(const physics::World& world, int selected, render::Fra
 void appendContacts(const physics::World& world, render::FrameSnapshot& snapshot);
 void appendImpulses(const OverlayState& state, const physics::World& world, render::FrameSnapshot& snapshot);
 void appendTrails(const OverlayState& state, const physics::World& world, render::FrameSnapshot& snapshot);
+// Slide 14's contact graph: a line between the centres of each pair it joins, in the
+// colour of the higher level (the sweep answers the pair there), and from each level-0
+// sphere to the planes it touches; grey where no plane is reached.
+void appendContactGraph(const physics::World& world, const physics::ContactGraph& graph,
+                        render::FrameSnapshot& snapshot);
 
 // Overlaps of the current state (sphere pairs and planes), for the penetration overlay.
 struct Overlap {

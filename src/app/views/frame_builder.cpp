@@ -18,6 +18,7 @@ OverlayFlags overlayFlags(const ui::PanelState& view) {
     flags.impulses = view.showImpulses;
     flags.penetration = view.showPenetration;
     flags.trails = view.showTrails;
+    flags.graph = view.showGraph;
     return flags;
 }
 
@@ -28,11 +29,13 @@ ui::PanelState viewShowing(const OverlayFlags& flags) {
     view.showImpulses = flags.impulses;
     view.showPenetration = flags.penetration;
     view.showTrails = flags.trails;
+    view.showGraph = flags.graph;
     return view;
 }
 
 bool overlaysOnTop(const ui::PanelState& view, std::size_t sphereCount) {
-    return view.overlaysOnTop && sphereCount <= kOverlaysOnTopMaxSpheres;
+    const std::size_t most = view.showGraph ? kGraphOnTopMaxSpheres : kOverlaysOnTopMaxSpheres;
+    return view.overlaysOnTop && sphereCount <= most;
 }
 
 void buildSnapshot(Simulation& simulation, const ui::PanelState& view, render::FrameSnapshot& snapshot) {
@@ -48,6 +51,7 @@ void buildSnapshot(Simulation& simulation, const ui::PanelState& view, render::F
     if (!flags.any()) return;
     // Under the arrows: trails, then overlaps; the arrows and points last, on top.
     if (flags.trails) appendTrails(simulation.overlays(), world, snapshot);
+    if (flags.graph) appendContactGraph(world, simulation.contactGraph(), snapshot);
     if (flags.penetration && !simulation.alarms().nonFinite()) {
         physics::Workspace scratch;
         appendPenetration(currentOverlaps(world, scratch), snapshot);

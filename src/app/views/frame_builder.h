@@ -16,8 +16,10 @@ ui::PanelState viewShowing(const OverlayFlags& flags);
 // Whether the overlays are drawn over everything (render::RenderStyle::overlayOnTop):
 // in scenes of up to kOverlaysOnTopMaxSpheres spheres, where a contact point or an
 // impulse would otherwise hide inside a sphere; in denser ones they are depth-tested,
-// so that only the front layer shows.
+// so that only the front layer shows. The contact graph's lines run between centres, inside
+// the spheres: with it shown, up to kGraphOnTopMaxSpheres (a pyramid, a few stacks).
 constexpr std::size_t kOverlaysOnTopMaxSpheres = 50;
+constexpr std::size_t kGraphOnTopMaxSpheres = 200;
 bool overlaysOnTop(const ui::PanelState& view, std::size_t sphereCount);
 
 // What the view options of the panel (colouring, overlays) ask to draw. It also

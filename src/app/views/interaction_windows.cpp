@@ -164,7 +164,7 @@ void drawMessage(const glm::vec4& scene, const ToolWindowsState& state) {
 float inspectorWidth() { return ImGui::GetFontSize() * 20.0f; }
 
 float drawInspector(const Placement& placement, const physics::World& world, int selected, bool paused,
-                    ToolWindowsState& state, ToolActions& actions) {
+                    int graphLevel, ToolWindowsState& state, ToolActions& actions) {
     if (selected < 0 || static_cast<std::size_t>(selected) >= world.size()) return placement.position.y;
     const auto i = static_cast<std::size_t>(selected);
     place(placement);
@@ -191,6 +191,13 @@ float drawInspector(const Placement& placement, const physics::World& world, int
         i < world.contactState.size() ? world.contactState[i] : physics::ContactState::Free;
     const glm::dvec3& v = world.velocity[i];
     ImGui::Text("|v| = %.3f m/s, %s", std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z), stateName(contact));
+    if (graphLevel >= 0) {
+        ImGui::Text("contact graph level %d%s", graphLevel, graphLevel == 0 ? " (touches a plane)" : "");
+        tooltip("Slide 14: level 0 touches a plane, level k + 1 touches level k and none lower. Shock "
+                "propagation answers the levels from the floor up, each frozen once answered.");
+    } else if (graphLevel == -1) {
+        ImGui::TextUnformatted("contact graph: no level (reaches no plane)");
+    }
     if (!paused) ImGui::TextDisabled("pause (P) to edit; Ctrl + drag to throw");
     if (ImGui::Button(state.explainer ? "Hide explanation (E)" : "Explain contacts (E)")) actions.toggleExplainer = true;
     tooltip("The slides' formulas with the numbers of this sphere's latest contacts.");
@@ -322,7 +329,10 @@ ToolActions drawInteractionWindows(const Session& session, const ViewLayout& lay
         inspector.position = {area.x + area.z - gap, area.y + area.w - gap};
         inspector.pivot = {1.0f, 1.0f};
     }
-    const float inspectorBottom = drawInspector(inspector, world, selected, simulation.paused, state, actions);
+    const bool showsLevel = (simulation.params().shock == physics::ShockPropagation::On || simulation.overlayFlags().graph) &&
+                            selected >= 0 && static_cast<std::size_t>(selected) < world.size();
+    const int level = showsLevel ? simulation.contactGraph().level[std::size_t(selected)] : kLevelNotShown;
+    const float inspectorBottom = drawInspector(inspector, world, selected, simulation.paused, level, state, actions);
     const float readoutsWidth = std::min(18.0f * font, 0.3f * viewport->WorkSize.x);  // ui::drawReadouts'
     const float room = area.z - 3.0f * gap - (comparison ? inspectorWidth() : readoutsWidth);
     const float top = comparison ? area.y + 10.0f * font : (selected >= 0 ? inspectorBottom : area.y) + gap;

@@ -78,10 +78,12 @@ struct Placement {
 // The inspector's width (ImGui units).
 float inspectorWidth();
 
-// The selected sphere's p, v, r, m, editable while paused. Returns the window's
-// bottom edge (ImGui units), or the placement's y when nothing was drawn.
+// The selected sphere's p, v, r, m, editable while paused, and its level in slide 14's
+// contact graph (`graphLevel`: -1 reaches no plane; kLevelNotShown: not shown). Returns
+// the window's bottom edge (ImGui units), or the placement's y when nothing was drawn.
+constexpr int kLevelNotShown = -2;
 float drawInspector(const Placement& placement, const physics::World& world, int selected, bool paused,
-                    ToolWindowsState& state, ToolActions& actions);
+                    int graphLevel, ToolWindowsState& state, ToolActions& actions);
 
 // What the explainer explains: the selected sphere's latest contact responses.
 struct ExplainerInput {
