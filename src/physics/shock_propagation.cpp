@@ -12,10 +12,10 @@
 //
 // What the sweep answers: every overlap, by projection (the frozen side not moved; with
 // the reflection method too: a resting contact does not bounce, and (1 + beta) d lifted
-// each level above the last, the column gaining 2.8 % of its energy in 2 s) and the
-// static contacts (|c| <= epsilon, slide 13: the approach removed, then
-// mu). A contact that approaches faster is an impact: the passes answered it with both
-// masses, and the sweep leaves its velocity alone. Answered against a frozen sphere moving
+// each level above the last, the column gaining 2.8 % of its energy in 2 s), and the
+// static contacts (|c| <= epsilon, slide 13: the approach removed, then mu). A contact
+// that approaches faster is an impact: the passes answered it with both masses, and the
+// sweep leaves its velocity alone. Answered against a frozen sphere moving
 // towards it, an impact would throw the upper sphere off with energy from nowhere (the
 // frozen sphere keeps its own), and a struck stack would move as one rigid body.
 #include <algorithm>
@@ -143,24 +143,29 @@ class Sweep {
         : world_(world), graph_(world.workspace.contactGraph), params_(params), stats_(stats), moves_(moves) {}
 
     // Level k: its contacts inside, then each sphere's on the frozen level below and on the
-    // planes, velocities (static contacts) and overlaps. The pushes off the frozen level
-    // may press spheres of the level into each other: those contacts, and the frozen
-    // contacts of their spheres, are answered again (overlaps only) while any is deeper
-    // than kSettledOverlap, for at most kMostLevelRounds rounds in all. Only the few that
-    // need it: a whole level's contacts cost as much as a pass.
+    // planes, velocities (static contacts) and overlaps; then the contacts those pushes
+    // pressed together again (pressAgain).
     void level(std::uint32_t k) {
         for (std::uint32_t c = graph_.insideStart[k]; c < graph_.insideStart[k + 1]; ++c) inside(graph_.inside[c], true);
         for (std::uint32_t s = graph_.levelStart[k]; s < graph_.levelStart[k + 1]; ++s) onFrozen(s, true, kMostFrozenRounds);
         ++stats_.shockRounds;
-        if (!moves_) return;
+        if (moves_) pressAgain(k);
+    }
+
+  private:
+    // The pushes off the frozen level may press spheres of level k into each other: those
+    // contacts, and the frozen contacts of their spheres, are answered again (overlaps
+    // only) while any is deeper than kSettledOverlap, for at most kMostLevelRounds rounds
+    // in all. Only the few that need it: a whole level's contacts cost as much as a pass.
+    void pressAgain(std::uint32_t k) {
         std::vector<SpherePair>& pressed = graph_.pressed;
         pressed.clear();
         for (std::uint32_t c = graph_.insideStart[k]; c < graph_.insideStart[k + 1]; ++c) {
             if (overlap(graph_.inside[c]) > kSettledOverlap) pressed.push_back(graph_.inside[c]);
         }
+        std::vector<std::uint32_t>& moved = graph_.queue;  // free again: the levels are found
         for (int round = 1; round < kMostLevelRounds && !pressed.empty(); ++round) {
             for (const SpherePair& pair : pressed) inside(pair, false);
-            std::vector<std::uint32_t>& moved = graph_.queue;  // free again: the levels are found
             moved.clear();
             for (const SpherePair& pair : pressed) {
                 for (const std::uint32_t i : {pair.i, pair.j}) {
@@ -184,26 +189,23 @@ class Sweep {
         }
     }
 
-  private:
-    // Both spheres in the level: the passes' own response and split. Returns the overlap
-    // it found, as a fraction of the smaller radius.
     // The pair's overlap as a fraction of the smaller radius, 0 if it does not touch.
     double overlap(const SpherePair& pair) const {
         SphereContact contact;
         return touching(world_, pair, contact) ? contact.depth / std::min(world_.radius[pair.i], world_.radius[pair.j]) : 0.0;
     }
 
-    double inside(const SpherePair& pair, bool velocities) {
+    // Both spheres in the level: the passes' own response (static contacts) and split.
+    void inside(const SpherePair& pair, bool velocities) {
         SphereContact contact;
-        if (!touching(world_, pair, contact)) return 0.0;
+        if (!touching(world_, pair, contact)) return;
         const std::uint32_t i = pair.i, j = pair.j;
         if (velocities && isStatic(glm::dot(world_.velocity[j] - world_.velocity[i], contact.u), params_)) {
             respondToContact(world_, pair, contact, params_, stats_, params_.passes);
         }
-        if (!moves_) return 0.0;
+        if (!moves_) return;
         separateSpheres(world_.position[i], world_.position[j], world_.mass[i], world_.mass[j], contact.u,
                         contact.depth, params_.split);
-        return contact.depth / std::min(world_.radius[i], world_.radius[j]);
     }
 
     // byLevel's s-th sphere off the frozen spheres below it, then off the planes (walls
