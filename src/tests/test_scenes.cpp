@@ -299,7 +299,7 @@ TEST(Presets, OnePerLecturePhenomenonInLectureOrder) {
         "11_pile",                 "12_rain",              "13_tunnelling",
         "14_three_answers",        "15_fast_gas",          "16_bernoulli",
         "17_squeeze",              "18_two_strikers",      "19_symmetric_break",
-        "20_stacked_drop"};
+        "20_stacked_drop",         "21_shock_column",      "22_shock_pyramid"};
     EXPECT_EQ(scenes::listPresets(), expected);
     EXPECT_TRUE(std::filesystem::exists(scenes::presetPath("01_bounce_response_only")));
     EXPECT_EQ(scenes::presetPath("03_head_on.json"), scenes::presetPath("03_head_on"));
