@@ -36,9 +36,12 @@ double approach(const World& world, const MeasuredContact& c) {
     return glm::dot(world.velocity[c.i] - other, c.u);
 }
 
+// The step's candidate pairs are visitOrder (Workspace::pairs holds them only while the
+// grid keeps them from step to step: it held the last build's, and the pile's clusters
+// came out split, their floor contacts lost: momentum marked broken on a resting column).
 void findTouching(World& world, ImpactScratch& scratch) {
     scratch.contacts.clear();
-    for (const SpherePair& pair : world.workspace.pairs) {
+    for (const SpherePair& pair : world.workspace.visitOrder) {
         SphereContact contact;
         if (touching(world, pair, contact)) scratch.contacts.push_back({pair.i, pair.j, contact.u, 0.0});
     }
@@ -47,6 +50,15 @@ void findTouching(World& world, ImpactScratch& scratch) {
             scratch.contacts.push_back({i, -1, face.normal, 0.0});
         });
     }
+}
+
+// Within the candidate margin of a plane (a sphere projected out of a wall ends touching it).
+bool touchesAPlaneNow(const World& world, std::uint32_t i) {
+    for (const Plane& plane : world.planes) {
+        const Plane face = faceFor(plane, world.position[i]);
+        if (touching(world.position[i], world.radius[i] + world.workspace.margin, face)) return true;
+    }
+    return false;
 }
 
 double kineticOf(const World& world, std::size_t i, const glm::dvec3& v) {
@@ -77,6 +89,10 @@ void beginMeasuringImpacts(World& world) {
 void endMeasuringImpacts(World& world, StepStats& stats) {
     if (!world.measureImpacts) return;
     ImpactScratch& scratch = world.workspace.impacts;
+    // A sphere the passes pushed into a wall took an impulse from it: its cluster is not free.
+    for (std::uint32_t i = 0; i < world.size(); ++i) {
+        if (touchesAPlaneNow(world, i)) scratch.clusterFlags[root(scratch.cluster, i)] |= kTouchesPlane;
+    }
     ImpactProperties p;
     p.contacts = scratch.contacts.size();
     glm::dvec3 momentum(0.0);  // kg m/s
