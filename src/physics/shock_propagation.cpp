@@ -260,11 +260,33 @@ void findContactGraph(const World& world, PairOrder order, ContactGraph& graph) 
     findLevels(world, graph);
 }
 
+namespace {
+
+// Whether the graph the last sweep found is this step's too: the same candidate pairs in
+// the same order (a resting pile keeps them for many steps), and the same spheres near a
+// plane. Then its levels and sweep order are this step's, found again for nothing.
+bool graphStillHolds(const World& world, const ContactGraph& graph) {
+    const std::vector<SpherePair>& pairs = world.workspace.visitOrder;
+    if (graph.levelStart.empty()) return false;  // never found
+    if (graph.level.size() != world.size() || graph.builtFrom.size() != pairs.size()) return false;
+    const auto same = [](const SpherePair& a, const SpherePair& b) { return a.i == b.i && a.j == b.j; };
+    if (!std::equal(pairs.begin(), pairs.end(), graph.builtFrom.begin(), same)) return false;
+    for (std::uint32_t i = 0; i < world.size(); ++i) {
+        if (touchesAPlane(world, i, world.workspace.margin) != (graph.level[i] == 0)) return false;
+    }
+    return true;
+}
+
+}  // namespace
+
 void propagateShock(World& world, const Params& params, StepStats& stats, bool moves) {
     if (params.shock != ShockPropagation::On) return;
     ContactGraph& graph = world.workspace.contactGraph;
-    findContactGraph(world, params.order, graph);
-    findSweepOrder(graph);
+    if (!graphStillHolds(world, graph)) {
+        findContactGraph(world, params.order, graph);
+        findSweepOrder(graph);
+        graph.builtFrom = world.workspace.visitOrder;
+    }
     Sweep sweep(world, params, stats, moves);
     const std::size_t levels = graph.levelStart.size() - 1;
     for (std::uint32_t k = 0; k < levels; ++k) sweep.level(k);

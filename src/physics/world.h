@@ -154,6 +154,7 @@ struct ContactGraph {
     std::vector<std::uint32_t> slotOf;       // per sphere with a level: its s in byLevel
     std::vector<SpherePair> pressed;         // scratch: a level's contacts answered again
     std::vector<std::uint8_t> moved;         // scratch: per sphere, moved in this round
+    std::vector<SpherePair> builtFrom;       // the candidate pairs the sweep's graph was found from
     std::vector<std::uint32_t> queue;      // scratch: the breadth-first search's
     std::vector<std::uint32_t> next;       // scratch of the counting sorts: where the next entry goes
 };
