@@ -32,6 +32,8 @@ namespace {
 constexpr double kSettledOverlap = 1e-3;
 constexpr int kMostLevelRounds = 4;
 constexpr int kMostFrozenRounds = 8;
+// A level of fewer spheres is answered on one thread: sharing it out would cost more.
+constexpr std::uint32_t kParallelLevelSpheres = 512;
 
 // Whether sphere i is within `margin` (m) of touching a plane (slide 3: (p - a).n <= r).
 bool touchesAPlane(const World& world, std::uint32_t i, double margin) {
@@ -147,12 +149,33 @@ class Sweep {
     // pressed together again (pressAgain).
     void level(std::uint32_t k) {
         for (std::uint32_t c = graph_.insideStart[k]; c < graph_.insideStart[k + 1]; ++c) inside(graph_.inside[c], true);
-        for (std::uint32_t s = graph_.levelStart[k]; s < graph_.levelStart[k + 1]; ++s) onFrozen(s, true, kMostFrozenRounds);
+        onFrozenLevel(k);
         ++stats_.shockRounds;
         if (moves_) pressAgain(k);
     }
 
   private:
+    // Every sphere of level k against the frozen level below and its planes (onFrozen). Each
+    // moves only itself against spheres that no longer move: the level's spheres can be
+    // shared between threads, with the result of one thread.
+    void onFrozenLevel(std::uint32_t k) {
+        const std::uint32_t first = graph_.levelStart[k], count = graph_.levelStart[k + 1] - first;
+        const int threads = count >= kParallelLevelSpheres ? threadsFor(world_, params_) : 1;
+        if (threads == 1) {
+            for (std::uint32_t s = first; s < first + count; ++s) onFrozen(s, true, kMostFrozenRounds, stats_);
+            return;
+        }
+        const int tasks = 4 * threads;
+        std::vector<StepStats> taskStats(static_cast<std::size_t>(tasks));
+        runTasks(threads, tasks, [&](int t) {
+            StepStats local;  // neighbours in taskStats share cache lines: count apart
+            const Range range = rangeOf(count, t, tasks);
+            for (std::uint32_t s = first + range.begin; s < first + range.end; ++s) onFrozen(s, true, kMostFrozenRounds, local);
+            taskStats[std::size_t(t)] = local;
+        });
+        for (const StepStats& local : taskStats) stats_ += local;
+    }
+
     // The pushes off the frozen level may press spheres of level k into each other: those
     // contacts, and the frozen contacts of their spheres, are answered again (overlaps
     // only) while any is deeper than kSettledOverlap, for at most kMostLevelRounds rounds
@@ -172,7 +195,7 @@ class Sweep {
                     if (graph_.moved[i]) continue;
                     graph_.moved[i] = 1;
                     moved.push_back(i);
-                    onFrozen(graph_.slotOf[i], false, 1);  // the level's rounds repeat it
+                    onFrozen(graph_.slotOf[i], false, 1, stats_);  // the level's rounds repeat it
                 }
             }
             ++stats_.shockRounds;
@@ -211,36 +234,36 @@ class Sweep {
     // byLevel's s-th sphere off the frozen spheres below it, then off the planes (walls
     // last: never crossed), in at most `rounds` rounds: a round that pushed it off one
     // frozen sphere only, or none deeper than kSettledOverlap of its radius, is the last.
-    void onFrozen(std::uint32_t s, bool velocities, int rounds) {
+    void onFrozen(std::uint32_t s, bool velocities, int rounds, StepStats& stats) {
         const std::uint32_t i = graph_.byLevel[s];
         for (int round = 0; round < (moves_ ? rounds : 1); ++round) {
             double deepest = 0.0;  // m
             int pushed = 0;
             for (std::uint32_t b = graph_.belowStart[s]; b < graph_.belowStart[s + 1]; ++b) {
-                const double depth = onFrozenSphere(i, graph_.below[b], velocities && round == 0);  // m
+                const double depth = onFrozenSphere(i, graph_.below[b], velocities && round == 0, stats);  // m
                 deepest = std::max(deepest, depth);
                 pushed += depth > 0.0;
             }
-            onPlanes(i, velocities && round == 0);
+            onPlanes(i, velocities && round == 0, stats);
             if (pushed <= 1 || deepest <= kSettledOverlap * world_.radius[i]) return;
         }
     }
 
     // Returns the overlap (m) it found.
-    double onFrozenSphere(std::uint32_t i, std::uint32_t frozen, bool velocities) {
+    double onFrozenSphere(std::uint32_t i, std::uint32_t frozen, bool velocities, StepStats& stats) {
         SphereContact contact;  // u from the frozen sphere to i
         if (!touching(world_, SpherePair{i, frozen}, contact)) return 0.0;
         if (velocities && isStatic(glm::dot(world_.velocity[frozen] - world_.velocity[i], contact.u), params_)) {
-            respondToFrozenContact(world_, i, frozen, contact, params_, stats_);
+            respondToFrozenContact(world_, i, frozen, contact, params_, stats);
         }
         if (moves_) moveOffFrozenSphere(world_.position[i], contact.u, contact.depth);
         return contact.depth;
     }
 
-    void onPlanes(std::uint32_t i, bool velocities) {
+    void onPlanes(std::uint32_t i, bool velocities, StepStats& stats) {
         forEachTouchedPlane(world_, i, [&](std::size_t k, const Plane& face) {
             if (velocities && isStatic(glm::dot(world_.velocity[i], face.normal), params_)) {
-                respondToContact(world_, i, k, face, params_, stats_, params_.passes);
+                respondToContact(world_, i, k, face, params_, stats, params_.passes);
             }
             if (moves_) projectOnPlane(world_.position[i], world_.radius[i], face);
         });

@@ -248,6 +248,27 @@ TEST(SolverThreads, EveryMethodAndOrderReachesTheSameStateOnAnyThreadCount) {
     }
 }
 
+// Shock propagation shares out each level's spheres against the frozen level below (each
+// moves only itself): the same state on 1, 2 and 3 threads, the pile of 5000 landing
+// (1 s), under the position method (its widest level has over 1000 spheres: shared out)
+// and the velocity method (whose levels are small then: one thread).
+TEST(SolverThreads, ShockPropagationReachesTheSameStateOnAnyThreadCount) {
+    for (const char* method : {"method=position", "method=velocity"}) {
+        std::set<std::uint64_t> hashes;
+        std::uint64_t widestLevel = 0;
+        for (const char* threads : {"threads=1", "threads=2", "threads=3"}) {
+            const physics::World world = run(pile({method, "shock=on", threads}), 60);
+            hashes.insert(physics::stateHash(world));
+            const std::vector<std::uint32_t>& starts = world.workspace.contactGraph.levelStart;
+            for (std::size_t k = 0; k + 1 < starts.size(); ++k) {
+                widestLevel = std::max<std::uint64_t>(widestLevel, starts[k + 1] - starts[k]);
+            }
+        }
+        EXPECT_EQ(hashes.size(), 1u) << method;
+        if (std::string(method) == "method=position") EXPECT_GT(widestLevel, 1000u) << "a level is shared out";
+    }
+}
+
 // Slide 14's global solvers share out whole clusters of touching spheres, each solved in a
 // fixed order: the same state on any thread count. A gas of 5000 (small clusters, many;
 // 0.5 s) under both, and the landing pile of 5000 (0.67 s, one big cluster) under lcp

@@ -2,6 +2,8 @@
 // with --screenshot and checks what a teacher would see on them.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -86,19 +88,25 @@ TEST(Window, ShowsThePanelAndTheSpheresInTheBox) {
 }
 
 // Slide 7's preset opens side by side in three views (its "compare" key), each with
-// its ball: in two rows right of the panel (A, B above, C below left), the grid that
-// keeps each view largest at 1280x800.
+// its floor: in two rows right of the panel (A, B above, C below left), the grid that
+// keeps each view largest at 1280x800. (The floor, not the ball: the window runs in real
+// time, and near its apex the ball sits behind the view's label, which dims it: one run in
+// six failed so.)
 TEST(Window, ThePresetOfThreeAnswersOpensInThreeViews) {
     if (!haveXvfb()) GTEST_SKIP() << "xvfb-run not found: install the xvfb package to run the window tests";
     const std::string path = screenshot("window_three_answers", "--scene 14_three_answers --frames 30");
     ASSERT_FALSE(path.empty()) << "spheres did not run or wrote no screenshot under Xvfb";
     const render::Image image = load(path);
+    const auto floorGrid = [](glm::u8vec4 p) {  // the floor's light grey tiles
+        return p.x > 200 && p.y > 200 && p.z > 200 && std::max({p.x, p.y, p.z}) - std::min({p.x, p.y, p.z}) < 20;
+    };
     const int views[3][2] = {{430, 150}, {855, 150}, {430, 520}};  // x, y of each view's middle band
     for (int k = 0; k < 3; ++k) {
         const int x = views[k][0], y = views[k][1];
-        EXPECT_GT(fraction(image, x, y, x + 415, y + 210, saturated), 0.001) << "view " << char('A' + k);
+        EXPECT_GT(fraction(image, x, y, x + 415, y + 210, floorGrid), 0.05) << "view " << char('A' + k);
     }
-    EXPECT_LT(fraction(image, 860, 380, 1270, 720, saturated), 0.0001);  // no fourth view
+    EXPECT_LT(fraction(image, 860, 380, 1270, 720, floorGrid), 0.001);  // no fourth view
+    EXPECT_LT(fraction(image, 860, 380, 1270, 720, saturated), 0.0001);
 }
 
 TEST(Window, FramesChangeWhileRunningAndNotWhilePaused) {
