@@ -343,6 +343,9 @@ TEST(Overlays, TheContactGraphShowsEachLevelInItsColour) {
         const float top = std::max(lines[0].a.z, lines[0].b.z);  // the upper end: the level's own sphere
         EXPECT_NEAR(top, float(kRadius + 2 * kRadius * level), 1e-4) << "level " << level;
     }
+    for (int level = 0; level < 5; ++level) {  // the spheres take their level's colour too
+        EXPECT_TRUE(sameColor(snapshot.colors[std::size_t(level)], app::levelColor(level))) << "sphere " << level;
+    }
     EXPECT_TRUE(sameColor(app::levelColor(6), app::levelColor(0)));  // the colours repeat every six levels
     EXPECT_TRUE(sameColor(app::levelColor(-1), app::kNoLevelColor));
 }

@@ -360,7 +360,8 @@ void viewSection(PanelState& state, PanelActions& actions) {
     tooltip("Each overlap now: a red segment along the normal, 10 times the depth d (slide 7: p <- p + d n).");
     ImGui::SameLine();
     ImGui::Checkbox("contact graph", &state.showGraph);
-    tooltip("Slide 14's contact graph: a line between the centres of spheres that touch, coloured by level "
+    tooltip("Slide 14's contact graph: each sphere, and a line between the centres of spheres that touch, "
+            "coloured by level "
             "(0 red: touches a plane, 1 orange: touches level 0, 2 yellow, 3 green, 4 cyan, 5 blue, then red "
             "again; grey: reaches no plane). Shock propagation sweeps the levels from the floor up.");
     if (ImGui::SliderFloat("UI scale", &state.uiScale, 0.75f, 3.0f, "%.2f")) actions.fontChanged = true;

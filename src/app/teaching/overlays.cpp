@@ -310,6 +310,9 @@ glm::u8vec4 levelColor(int level) {
 void appendContactGraph(const physics::World& world, const physics::ContactGraph& graph,
                         render::FrameSnapshot& snapshot) {
     if (graph.level.size() != world.size() || graph.edgeStart.size() != world.size() + 1) return;
+    if (snapshot.colors.size() == world.size()) {  // in a pile the lines hide in the spheres
+        for (std::size_t i = 0; i < world.size(); ++i) snapshot.colors[i] = levelColor(graph.level[i]);
+    }
     std::size_t drawn = 0;
     for (std::uint32_t i = 0; i < world.size() && drawn < kMaxDrawnContacts; ++i) {
         const int level = graph.level[i];
@@ -366,8 +369,8 @@ std::vector<LegendLine> overlayLegend(const OverlayFlags& flags, std::size_t sph
         lines.push_back({text, glm::u8vec4(200, 200, 210, 255)});
     }
     if (flags.graph) {
-        lines.push_back({"contact graph: levels from the floor, 0 red, 1 orange, 2 yellow, 3 green, 4 cyan, 5 blue, "
-                         "then red again; grey reaches no plane",
+        lines.push_back({"contact graph: spheres and links by level from the floor, 0 red, 1 orange, 2 yellow, "
+                         "3 green, 4 cyan, 5 blue, then red again; grey reaches no plane",
                          levelColor(1)});  // not red: the penetration line above is
     }
     return lines;

@@ -117,9 +117,10 @@ void appendVelocityArrows(const physics::World& world, int selected, render::Fra
 void appendContacts(const physics::World& world, render::FrameSnapshot& snapshot);
 void appendImpulses(const OverlayState& state, const physics::World& world, render::FrameSnapshot& snapshot);
 void appendTrails(const OverlayState& state, const physics::World& world, render::FrameSnapshot& snapshot);
-// Slide 14's contact graph: a line between the centres of each pair it joins, in the
-// colour of the higher level (the sweep answers the pair there), and from each level-0
-// sphere to the planes it touches; grey where no plane is reached.
+// Slide 14's contact graph: each sphere in the colour of its level, a line between the
+// centres of each pair it joins in the colour of the higher level (the sweep answers the
+// pair there), and from each level-0 sphere to the planes it touches; grey where no plane
+// is reached. Call after the spheres are in the snapshot.
 void appendContactGraph(const physics::World& world, const physics::ContactGraph& graph,
                         render::FrameSnapshot& snapshot);
 
