@@ -56,6 +56,13 @@ void findEdges(const World& world, PairOrder order, ContactGraph& graph) {
     const std::vector<SpherePair>& pairs = world.workspace.visitOrder;
     const std::size_t n = world.size();
     graph.edgeStart.assign(n + 1, 0);
+    // The pairs are the last solver step's: a state put back since (the timeline) may hold
+    // fewer spheres. The app clears them then; no pair is read out of range either way.
+    const auto inRange = [n](const SpherePair& pair) { return pair.i < n && pair.j < n; };
+    if (!std::all_of(pairs.begin(), pairs.end(), inRange)) {
+        graph.neighbour.clear();
+        return;
+    }
     for (const SpherePair& pair : pairs) {
         ++graph.edgeStart[pair.i + 1];
         ++graph.edgeStart[pair.j + 1];

@@ -43,7 +43,7 @@ enum class ContactState : std::uint8_t {
 struct ContactEvent {
     std::uint32_t i = 0;         // the sphere
     std::int32_t other = -1;     // the other sphere's index, or -1 - (plane index) for a plane
-    int pass = 0;                // which of the K passes
+    int pass = 0;                // which of the K passes; K: shock propagation's sweep, after them
     bool bounce = false;         // true: relative normal speed above epsilon; false: static contact
     glm::dvec3 normal{0.0};      // unit: u (from the other sphere to i) or the plane's n
     glm::dvec3 point{0.0};       // m, on i's surface towards the other

@@ -386,9 +386,10 @@ const std::vector<MeterEntry>& meterTable() {
         {{"colliding_share", "", "the share of spheres that bounced in the last step (orange)"},
          world([](const World& w, const Scene&) { return shareIn(w, physics::ContactState::Colliding); })},
         {{"shock_levels", "", "the contact graph's levels the last shock propagation sweep climbed (0: none)"},
-         world([](const World& w, const Scene&) {
+         world([](const World& w, const Scene& s) {
              const std::size_t starts = w.workspace.contactGraph.levelStart.size();
-             return starts > 0 ? static_cast<double>(starts - 1) : 0.0;
+             const bool swept = s.params.shock == physics::ShockPropagation::On && starts > 0;
+             return swept ? static_cast<double>(starts - 1) : 0.0;
          })},
         {{"gravity_per_step", "m/s", "|g| h / substeps, the speed gravity adds in one solver step"},
          world([](const World&, const Scene& s) { return glm::length(s.params.gravity) * s.params.solverStep(); })},

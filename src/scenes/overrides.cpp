@@ -73,12 +73,22 @@ std::string overrideVariants(const Scene& scene, const std::vector<std::string>&
         if (settings.empty()) return "'" + part + "' has no name: write name=value,value";
         settings.back().second.push_back(part);
     }
-    // A view per combination of the values, in the order written.
-    Variants all{{}};
+    // A view per combination of the values: the names with several first (their values
+    // label the views), then the others, each group in the order written. More than
+    // kMostViews combinations cannot fit, even with the one A shows left out.
+    std::stable_partition(settings.begin(), settings.end(), [](const auto& setting) { return setting.second.size() > 1; });
+    std::size_t combinations = 1;
     for (const auto& [name, values] : settings) {
         if (int(values.size()) > kMostViews) {
             return "at most " + std::to_string(kMostViews) + " values of " + name + " (one view each)";
         }
+        combinations *= values.size();
+        if (combinations > std::size_t(kMostViews)) {
+            return "at most " + std::to_string(kMostViews) + " views: A and " + std::to_string(kMostViews - 1) + " others";
+        }
+    }
+    Variants all{{}};
+    for (const auto& [name, values] : settings) {
         Variants combined;
         for (const std::vector<std::string>& variant : all) {
             for (const std::string& value : values) {

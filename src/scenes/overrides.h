@@ -21,7 +21,8 @@ std::vector<std::string> splitOverrides(const std::vector<std::string>& lists);
 // value of the name before it, and each of that name's values is a view of its own:
 // "method=reflection,continuous,passes=1" gives {method=reflection, passes=1} and
 // {method=continuous, passes=1}. Several names with several values make a view per
-// combination: "shock=off,on,passes=1,4" gives four, in the order written. A view whose
+// combination: "shock=off,on,passes=1,4" gives four (the names with several values first,
+// then the others, each group in the order written). A view whose
 // overrides change nothing in `scene` is left out when another view does change
 // something (A shows it already). Returns "" or why not; `variants` is then filled.
 using Variants = std::vector<std::vector<std::string>>;

@@ -108,6 +108,8 @@ TEST(SideBySide, ANameWithSeveralValuesMakesAViewEach) {
     EXPECT_EQ(variants, (app::Variants{{"method=reflection"}, {"method=continuous"}}));
     ASSERT_EQ(app::overrideVariants(scene, {"method=velocity,reflection, passes=1"}, variants), "");
     EXPECT_EQ(variants, (app::Variants{{"method=velocity", "passes=1"}, {"method=reflection", "passes=1"}}));
+    ASSERT_EQ(app::overrideVariants(scene, {"passes=1, method=velocity,reflection"}, variants), "");  // several first
+    EXPECT_EQ(variants, (app::Variants{{"method=velocity", "passes=1"}, {"method=reflection", "passes=1"}}));
     EXPECT_EQ(app::overrideVariants(scene, {"method=velocity"}, variants), "");
     EXPECT_EQ(variants, (app::Variants{{"method=velocity"}}));
     EXPECT_EQ(app::overrideVariants(scene, {"method=position"}, variants), "");  // nothing differs: kept
@@ -120,6 +122,9 @@ TEST(SideBySide, ANameWithSeveralValuesMakesAViewEach) {
     EXPECT_EQ(variants, (app::Variants{{"method=position", "passes=1"}, {"method=velocity", "passes=4"},
                                        {"method=velocity", "passes=1"}}));
     EXPECT_NE(app::overrideVariants(scene, {"beta=0.1,0.2,0.3,0.4,0.5"}, variants).find("at most 4"), std::string::npos);
+    // Many names with many values are refused before any combination is built.
+    EXPECT_EQ(app::overrideVariants(scene, {"alpha=0,0.5,beta=0,0.5,mu=0,0.5,epsilon=0,0.1"}, variants),
+              "at most 4 views: A and 3 others");
     EXPECT_NE(app::overrideVariants(scene, {"method=velocity,fast"}, variants).find("method=fast"), std::string::npos);
 
     app::Simulation simulation(scene);

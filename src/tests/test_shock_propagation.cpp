@@ -342,3 +342,21 @@ TEST(ShockPropagation, APileOfTenThousandSettlesWithOverlapsUnderOnePercent) {
     EXPECT_LT(on, 0.01);
     EXPECT_GT(off, 0.04);
 }
+
+// The graph is found from the last step's candidate pairs: a world that lost spheres since
+// (a state put back from the timeline, a sphere removed) is read within range, its graph
+// empty until the next step finds its pairs (the sanitized run checks the reads).
+TEST(ShockPropagation, TheGraphOfAWorldThatLostSpheresSinceItsLastStepIsEmpty) {
+    physics::World world;
+    fixtures::addBox(world, {1.0, 1.0, 1.0});
+    addColumn(world, 10);
+    physics::step(world, lecture(ShockPropagation::On, 1));
+    ASSERT_FALSE(world.workspace.visitOrder.empty());
+    for (int k = 0; k < 5; ++k) world.removeSphere(world.size() - 1);
+    physics::ContactGraph graph;
+    physics::findContactGraph(world, physics::PairOrder::Index, graph);
+    EXPECT_TRUE(graph.neighbour.empty());
+    EXPECT_EQ(graph.level, (std::vector<std::int32_t>{0, -1, -1, -1, -1}));
+    physics::step(world, lecture(ShockPropagation::On, 1));
+    EXPECT_EQ(world.workspace.contactGraph.level, (std::vector<std::int32_t>{0, 1, 2, 3, 4}));
+}

@@ -42,6 +42,7 @@ void restoreState(const WorldState& state, physics::World& world) {
     world.time = state.time;
     world.stepCount = state.stepCount;
     world.workspace.cached = false;  // a fresh build gives the same pairs as the cache would
+    world.workspace.visitOrder.clear();  // the last step's pairs: not this state's (the contact graph reads them)
 }
 
 RewindBuffer::RewindBuffer(std::size_t maxFrames, std::size_t maxBytes)

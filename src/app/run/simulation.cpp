@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <exception>
+#include <functional>
 #include <utility>
 
 namespace app {
@@ -35,7 +36,8 @@ void Simulation::startFrom(physics::World world) {
 }
 
 const physics::ContactGraph& Simulation::contactGraph() const {
-    const std::uint64_t state = physics::stateHash(world_) ^ world_.stepCount;
+    std::uint64_t state = physics::stateHash(world_) ^ world_.stepCount;  // radii too: the inspector edits them
+    for (const double r : world_.radius) state = state * 1099511628211ull ^ std::hash<double>{}(r);
     if (!graphFound_ || state != graphOf_) {
         physics::findContactGraph(world_, scene_.params.order, graph_);
         graphOf_ = state;

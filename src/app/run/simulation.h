@@ -63,7 +63,8 @@ public:
     int selectedSphere() const { return selected_; }
     const OverlayState& overlays() const { return overlays_; }
     // Slide 14's contact graph of the world as it is now (its levels, as shock propagation
-    // sweeps them), found when first asked after the state changed: the graph overlay and
+    // sweeps them), from the last step's candidate pairs (none after a rewind, until the
+    // next step), found when first asked after the state changed: the graph overlay and
     // the inspector's level.
     const physics::ContactGraph& contactGraph() const;
 

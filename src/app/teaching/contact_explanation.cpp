@@ -123,8 +123,8 @@ void matchLine(std::vector<Line>& lines, const ContactExplanation& e, const phys
 
 void planeLines(const ContactExplanation& e, const physics::Params& p, int boxPlaneCount, std::vector<Line>& lines) {
     add(lines, Line::Kind::Heading,
-        format("Sphere #%u and the %s, pass %d of %d", e.sphere, planeName(e.other, boxPlaneCount).c_str(), e.pass + 1,
-               p.passes));
+        format("Sphere #%u and the %s, %s", e.sphere, planeName(e.other, boxPlaneCount).c_str(),
+               passName(e.pass, p.passes).c_str()));
     instantLine(lines, e, p);
     add(lines, Line::Kind::Heading, "Slide 3: detection, (p − a)·n ≤ r");
     add(lines, Line::Kind::Formula, "n = " + vec(e.normal) + "  (unit, into the free side)");
@@ -164,7 +164,7 @@ void planeLines(const ContactExplanation& e, const physics::Params& p, int boxPl
 void pairLines(const ContactExplanation& e, const physics::Params& p, std::vector<Line>& lines) {
     const bool lecture = p.response == physics::ResponseModel::LectureAttenuation;
     add(lines, Line::Kind::Heading,
-        format("Sphere 1 = #%u and sphere 2 = #%d, pass %d of %d", e.sphere, e.other, e.pass + 1, p.passes));
+        format("Sphere 1 = #%u and sphere 2 = #%d, %s", e.sphere, e.other, passName(e.pass, p.passes).c_str()));
     instantLine(lines, e, p);
     add(lines, Line::Kind::Heading, "Slides 9 and 11: ‖p₁ − p₂‖ ≤ r₁ + r₂, u = (p₁ − p₂) / ‖p₁ − p₂‖");
     add(lines, Line::Kind::Formula, "u = " + vec(e.normal) + "  (from 2 to 1)");
@@ -284,6 +284,10 @@ ContactExplanation explainContact(const physics::ContactEvent& event, const phys
         e.mismatch = std::max(e.mismatch, glm::length(e.predicted[k] - e.velocityAfter[k]));
     }
     return e;
+}
+
+std::string passName(int pass, int passes) {
+    return pass >= passes ? "the shock propagation sweep" : format("pass %d of %d", pass + 1, passes);
 }
 
 std::string planeName(int planeIndex, int boxPlaneCount) {

@@ -60,6 +60,10 @@ struct ContactExplanation {
 
 ContactExplanation explainContact(const physics::ContactEvent& event, const physics::Params& params);
 
+// "pass 2 of 4", or "the shock propagation sweep" for a contact the sweep answered (logged
+// with pass = K, after the K passes).
+std::string passName(int pass, int passes);
+
 // The plane's name: floor, ceiling, wall -x ... for the box (in scenes::boxPlanes'
 // order), "plane k" for the extra ones.
 std::string planeName(int planeIndex, int boxPlaneCount);

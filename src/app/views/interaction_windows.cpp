@@ -65,16 +65,17 @@ bool scalarField(const char* label, double& value, bool editable) {
 }
 
 
-// "vs #40, pass 2, bounce" or "floor, pass 1, static" for a contact of `selected`.
-std::string contactTitle(const physics::ContactEvent& event, int selected, int boxPlaneCount) {
-    char text[96];
+// "vs #40, pass 2 of 4, bounce" or "floor, pass 1 of 4, static" for a contact of `selected`.
+std::string contactTitle(const physics::ContactEvent& event, int selected, int boxPlaneCount, int passes) {
+    char text[128];
     const char* kind = event.bounce ? "bounce" : "static";
+    const std::string pass = passName(event.pass, passes);
     if (event.isPlane()) {
-        std::snprintf(text, sizeof text, "%s, pass %d, %s", planeName(-1 - event.other, boxPlaneCount).c_str(),
-                      event.pass + 1, kind);
+        std::snprintf(text, sizeof text, "%s, %s, %s", planeName(-1 - event.other, boxPlaneCount).c_str(), pass.c_str(),
+                      kind);
     } else {
         const int partner = static_cast<int>(event.i) == selected ? event.other : static_cast<int>(event.i);
-        std::snprintf(text, sizeof text, "vs #%d, pass %d, %s", partner, event.pass + 1, kind);
+        std::snprintf(text, sizeof text, "vs #%d, %s, %s", partner, pass.c_str(), kind);
     }
     return text;
 }
@@ -237,7 +238,7 @@ void drawExplainer(const Placement& placement, const ExplainerInput& input, Tool
     ImGui::SameLine();
     const physics::ContactEvent& event = events[static_cast<std::size_t>(state.explainIndex)];
     ImGui::Text("%d of %d: %s", state.explainIndex + 1, count,
-                contactTitle(event, input.selected, input.boxPlaneCount).c_str());
+                contactTitle(event, input.selected, input.boxPlaneCount, input.params->passes).c_str());
     const double age = input.now - input.eventTime;  // s
     if (age > 0.0) {
         ImGui::TextDisabled("in the step to t = %.4f s (step %llu), %.3g s ago", input.eventTime,
