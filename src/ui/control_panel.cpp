@@ -305,6 +305,13 @@ void readoutsBody(const Readouts& r, const PanelState& state, PanelActions& acti
                 "that took most, summed over the last time step's passes, and the clusters that stopped at a cap "
                 "(10 000 rounds, or 500 sweeps of their contacts) with a contact still approaching.");
     }
+    if (r.shock) {
+        ImGui::Text("shock: %llu levels, %llu rounds last step", static_cast<unsigned long long>(r.stats.shockLevels),
+                    static_cast<unsigned long long>(r.stats.shockRounds));
+        tooltip("Shock propagation, slide 14's contact graph: the most levels a solver step swept from the floor up (level 0 touches a "
+                "plane), and the rounds over them in the last time step, all substeps: one a level, more where the "
+                "pushes off a frozen level pressed spheres of the next one together (at most four a level).");
+    }
     if (r.continuous) {
         ImGui::Text("impacts last step %llu, TOI iterations %llu", static_cast<unsigned long long>(r.stats.events),
                     static_cast<unsigned long long>(r.stats.toiIterations));

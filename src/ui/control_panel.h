@@ -81,6 +81,7 @@ struct Readouts {
     bool untilConverged = false;            // slide 14's until-converged solver: its passes are shown
     bool globalSolve = false;               // slide 14's lcp solver: its sweeps and residual are shown
     bool reflections = false;               // generalized reflections: their rounds too
+    bool shock = false;                     // shock propagation: its levels and rounds are shown
     int passCap = 0;                        // K
     std::uint64_t cappedSinceRestart = 0;   // continuous solver steps that reached the impact cap
     // Slide 14: Smith et al.'s five properties since restart (app/teaching/impact_report.h);

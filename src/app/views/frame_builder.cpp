@@ -107,6 +107,7 @@ ui::Readouts makeReadouts(const Simulation& simulation, const ui::FrameTimes& ti
     r.globalSolve = simulation.params().solver == physics::Solver::Lcp ||
                     simulation.params().solver == physics::Solver::GeneralizedReflections;
     r.reflections = simulation.params().solver == physics::Solver::GeneralizedReflections;
+    r.shock = simulation.params().shock == physics::ShockPropagation::On && physics::sweepsLevels(simulation.params().method);
     r.cappedSinceRestart = simulation.alarms().count(AlarmKind::EventCap);
     if (simulation.impacts().total.contacts > 0) {
         std::vector<physics::MirrorAsymmetry> mirrors;
