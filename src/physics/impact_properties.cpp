@@ -52,15 +52,6 @@ void findTouching(World& world, ImpactScratch& scratch) {
     }
 }
 
-// Within the candidate margin of a plane (a sphere projected out of a wall ends touching it).
-bool touchesAPlaneNow(const World& world, std::uint32_t i) {
-    for (const Plane& plane : world.planes) {
-        const Plane face = faceFor(plane, world.position[i]);
-        if (touching(world.position[i], world.radius[i] + world.workspace.margin, face)) return true;
-    }
-    return false;
-}
-
 double kineticOf(const World& world, std::size_t i, const glm::dvec3& v) {
     return 0.5 * world.mass[i] * glm::dot(v, v);  // J
 }
@@ -90,8 +81,9 @@ void endMeasuringImpacts(World& world, StepStats& stats) {
     if (!world.measureImpacts) return;
     ImpactScratch& scratch = world.workspace.impacts;
     // A sphere the passes pushed into a wall took an impulse from it: its cluster is not free.
+    // (Within the margin: one projected out of a wall ends touching it.)
     for (std::uint32_t i = 0; i < world.size(); ++i) {
-        if (touchesAPlaneNow(world, i)) scratch.clusterFlags[root(scratch.cluster, i)] |= kTouchesPlane;
+        if (nearAPlane(world, i, world.workspace.margin)) scratch.clusterFlags[root(scratch.cluster, i)] |= kTouchesPlane;
     }
     ImpactProperties p;
     p.contacts = scratch.contacts.size();

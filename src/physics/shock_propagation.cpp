@@ -35,17 +35,6 @@ constexpr int kMostFrozenRounds = 8;
 // A level of fewer spheres is answered on one thread: sharing it out would cost more.
 constexpr std::uint32_t kParallelLevelSpheres = 512;
 
-// Whether sphere i is within `margin` (m) of touching a plane (slide 3: (p - a).n <= r).
-bool touchesAPlane(const World& world, std::uint32_t i, double margin) {
-    const double reach = world.radius[i] + margin;  // m
-    for (const Plane& plane : world.planes) {
-        const bool near = plane.thickness > 0.0 ? touching(world.position[i], reach, faceFor(plane, world.position[i]))
-                                                : touching(world.position[i], reach, plane);
-        if (near) return true;
-    }
-    return false;
-}
-
 // graph.edgeStart and graph.neighbour: the candidate pairs, all within the margin of
 // touching. A pair the passes left a hair apart is an edge too, so the sweep's moves, which
 // may close it, still reach the spheres above it (a column at K = 4 kept a gap under its
@@ -93,7 +82,7 @@ void findLevels(const World& world, ContactGraph& graph) {
     queue.clear();
     graph.level.assign(n, -1);
     for (std::uint32_t i = 0; i < n; ++i) {
-        if (!touchesAPlane(world, i, world.workspace.margin)) continue;
+        if (!nearAPlane(world, i, world.workspace.margin)) continue;
         graph.level[i] = 0;
         queue.push_back(i);
     }
@@ -302,7 +291,7 @@ bool graphStillHolds(const World& world, const ContactGraph& graph) {
     const auto same = [](const SpherePair& a, const SpherePair& b) { return a.i == b.i && a.j == b.j; };
     if (!std::equal(pairs.begin(), pairs.end(), graph.builtFrom.begin(), same)) return false;
     for (std::uint32_t i = 0; i < world.size(); ++i) {
-        if (touchesAPlane(world, i, world.workspace.margin) != (graph.level[i] == 0)) return false;
+        if (nearAPlane(world, i, world.workspace.margin) != (graph.level[i] == 0)) return false;
     }
     return true;
 }

@@ -252,6 +252,18 @@ inline void forEachTouchedPlane(const World& world, std::uint32_t i, const Visit
     }
 }
 
+// Whether sphere i is within `margin` (m) of touching a plane's face (slide 3 with r +
+// margin): the contact graph's level 0, and the impact measurement's walls.
+inline bool nearAPlane(const World& world, std::uint32_t i, double margin) {
+    const double reach = world.radius[i] + margin;  // m
+    for (const Plane& plane : world.planes) {
+        const bool near = plane.thickness > 0.0 ? touching(world.position[i], reach, faceFor(plane, world.position[i]))
+                                                : touching(world.position[i], reach, plane);
+        if (near) return true;
+    }
+    return false;
+}
+
 // m: the largest |a.x| + |a.y| + |a.z| of the planes' points, at least 1 m: with the
 // sphere's own, the scale of the rounding in wallClearance().
 inline double planeScale(const World& world) {

@@ -265,7 +265,9 @@ TEST(SolverThreads, ShockPropagationReachesTheSameStateOnAnyThreadCount) {
             }
         }
         EXPECT_EQ(hashes.size(), 1u) << method;
-        if (std::string(method) == "method=position") EXPECT_GT(widestLevel, 1000u) << "a level is shared out";
+        if (std::string(method) == "method=position") {
+            EXPECT_GT(widestLevel, 1000u) << "a level is shared out";
+        }
     }
 }
 
