@@ -61,6 +61,9 @@ void addCapture(CLI::App& cli, CaptureOptions& o) {
                     "azimuth,elevation[,distance] in degrees, degrees, m (default: the window's view of the box)");
     cap->add_option("--color-by", o.colorBy, "Sphere colours: id, speed or contact")->capture_default_str();
     cap->add_flag("--with-ui", o.withUi, "Draw the control panel and the readouts as the window does");
+    cap->add_option("--ui-scale", o.uiScale, "With --with-ui: the UI scale, 0.75 to 3 (2: as on a HiDPI screen)")
+        ->capture_default_str();
+    cap->add_flag("--present", o.present, "With --with-ui: the presentation layout (as F5 in the window)");
     cap->add_option("--compare", o.compare,
                     "Side by side: a second view with these overrides, name=value[,name=value] (e.g. method=velocity)");
     cap->add_option("--overlay", o.overlay,
@@ -82,6 +85,8 @@ void addWindowOptions(CLI::App& cli, WindowAppOptions& o) {
     cli.add_option("--select", o.select, "Start with this sphere selected (the inspector open)")
         ->check(wholeNumberFrom(0));
     cli.add_flag("--explain", o.explain, "With --select: open \"explain this contact\"");
+    cli.add_flag("--present", o.present,
+                 "Start in the presentation layout (F5): large type, the scene's text, the sliders it names and the view");
 }
 
 int listPresets() {

@@ -59,6 +59,11 @@ void Camera::pan(float dxPixels, float dyPixels, float viewportHeightPixels) {
 
 void Camera::fitBox(const glm::vec3& boxMin, const glm::vec3& boxMax, float aspect) {
     target = 0.5f * (boxMin + boxMax);
+    distance = fitDistance(boxMin, boxMax, aspect);
+}
+
+float Camera::fitDistance(const glm::vec3& boxMin, const glm::vec3& boxMax, float aspect) const {
+    const glm::vec3 centre = 0.5f * (boxMin + boxMax);
     const glm::vec3 f = forward();
     const glm::vec3 right = glm::normalize(glm::cross(f, kUp));
     const glm::vec3 up = glm::cross(right, f);
@@ -70,12 +75,12 @@ void Camera::fitBox(const glm::vec3& boxMin, const glm::vec3& boxMax, float aspe
     for (int corner = 0; corner < 8; ++corner) {
         const glm::vec3 p{corner & 1 ? boxMax.x : boxMin.x, corner & 2 ? boxMax.y : boxMin.y,
                           corner & 4 ? boxMax.z : boxMin.z};
-        const glm::vec3 o = p - target;
+        const glm::vec3 o = p - centre;
         const float z = glm::dot(o, f);
         needed = std::max(needed, std::abs(glm::dot(o, right)) * kFitMargin / tanX - z);
         needed = std::max(needed, std::abs(glm::dot(o, up)) * kFitMargin / tanY - z);
     }
-    distance = std::min(needed, kMaxDistance);
+    return std::min(needed, kMaxDistance);
 }
 
 void Camera::reset(const glm::vec3& boxMin, const glm::vec3& boxMax, float aspect) {

@@ -38,6 +38,8 @@ class Camera {
     // Keeps the angles; moves the target to the box centre and the eye back until
     // the whole box is in view (with a small margin).
     void fitBox(const glm::vec3& boxMin, const glm::vec3& boxMax, float aspect);
+    // The distance fitBox would choose for these angles, without moving (m).
+    float fitDistance(const glm::vec3& boxMin, const glm::vec3& boxMax, float aspect) const;
     // The default three-quarter view of the box, then fitBox.
     void reset(const glm::vec3& boxMin, const glm::vec3& boxMax, float aspect);
 

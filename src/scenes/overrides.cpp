@@ -118,4 +118,20 @@ std::string overrideVariants(const Scene& scene, const std::vector<std::string>&
 
 std::string settingName(std::string_view setting) { return std::string(trim(setting.substr(0, setting.find('=')))); }
 
+std::vector<std::string> slidersToMove(const Scene& scene) {
+    std::vector<std::string> named;
+    for (const Claim& claim : scene.claims) {
+        if (claim.in != ClaimSource::Description) continue;
+        for (const std::string& setting : claim.settings) named.push_back(settingName(setting));
+    }
+    for (const std::string& part : splitOverrides(scene.compare)) {
+        if (part.find('=') != std::string::npos) named.push_back(settingName(part));  // not a bare value
+    }
+    std::vector<std::string> sliders;
+    for (const Parameter& p : parameterTable()) {
+        if (std::find(named.begin(), named.end(), p.name) != named.end()) sliders.emplace_back(p.name);
+    }
+    return sliders;
+}
+
 }  // namespace scenes

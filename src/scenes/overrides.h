@@ -43,4 +43,9 @@ std::string overrideLabel(const Scene& scene, const std::vector<std::string>& ov
 // The name of a "name=value" setting, trimmed.
 std::string settingName(std::string_view setting);
 
+// The parameters a scene's text tells the class to move: those its description's
+// claims set and those its "compare" views differ in, in the parameter table's order.
+// The presentation layout shows their sliders only.
+std::vector<std::string> slidersToMove(const Scene& scene);
+
 }  // namespace scenes

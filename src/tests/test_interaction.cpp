@@ -8,7 +8,7 @@
 
 #include "app/run/interaction.h"
 #include "app/run/session.h"
-#include "app/views/view_layout.h"
+#include "app/views/window_layout.h"
 #include "app/run/simulation.h"
 #include "physics/diagnostics.h"
 #include "render/camera.h"
@@ -71,7 +71,12 @@ TEST(InteractionPicking, TheNearestSphereAlongTheRayWinsAndEmptySpacePicksNothin
 
 TEST(InteractionViews, MousePositionsMapToTheirViewAndPixelOnHiDpi) {
     // A 1280 x 800 window at 2 pixels per unit; the panel takes 400 units, the bar 60.
-    const app::ViewLayout one = app::layoutViews({2560, 1600}, {2.0f, 2.0f}, 400.0f, 60.0f, 1, 4);
+    app::LayoutRequest request;
+    request.window = {1280.0f, 800.0f};
+    request.pixelsPerUnit = {2.0f, 2.0f};
+    request.panelWidth = 400.0f;
+    request.barHeight = 60.0f;
+    const app::ViewLayout one = app::layoutWindow(request).views;
     EXPECT_EQ(one.count, 1);
     EXPECT_EQ(one.views[0], glm::ivec4(800, 120, 1760, 1480));
     EXPECT_EQ(one.viewAt({300.0f, 100.0f}), -1);  // over the panel
@@ -80,7 +85,8 @@ TEST(InteractionViews, MousePositionsMapToTheirViewAndPixelOnHiDpi) {
     EXPECT_EQ(one.pixelIn(0, {400.0f, 0.0f}), glm::vec2(0.0f, 0.0f));
     EXPECT_EQ(one.pixelIn(0, {500.0f, 100.0f}), glm::vec2(200.0f, 200.0f));
 
-    const app::ViewLayout two = app::layoutViews({2560, 1600}, {2.0f, 2.0f}, 400.0f, 60.0f, 2, 4);
+    request.views = 2;
+    const app::ViewLayout two = app::layoutWindow(request).views;
     EXPECT_EQ(two.views[0], glm::ivec4(800, 120, 878, 1480));
     EXPECT_EQ(two.views[1], glm::ivec4(1682, 120, 878, 1480));
     EXPECT_EQ(two.viewAt({500.0f, 300.0f}), 0);

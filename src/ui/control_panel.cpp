@@ -6,6 +6,7 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include "scenes/overrides.h"
 #include "scenes/parameters.h"
 #include "ui/wrapped_text.h"
 
@@ -378,6 +379,28 @@ void viewSection(PanelState& state, PanelActions& actions) {
     fileNotice(state, PanelState::FileButton::Screenshot);
 }
 
+// The scene's title, its slide and its text: what the class reads first.
+void sceneText(const scenes::Scene& scene) {
+    textWrappedAtSpaces(scenes::withCount(scene.title, scene));
+    if (!scene.slide.empty()) {  // wrapped: a long slide line must not be cut off
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+        textWrappedAtSpaces(scene.slide);
+        ImGui::PopStyleColor();
+    }
+    if (!scene.description.empty()) textWrappedAtSpaces(scenes::withCount(scene.description, scene));
+}
+
+// The presentation layout: only the sliders the scene's text names, and the keys.
+void presentedSliders(const scenes::Scene& scene, PanelState& state, PanelActions& actions) {
+    for (const std::string& name : scenes::slidersToMove(scene)) {
+        const scenes::Parameter* p = scenes::findParameter(name);
+        if (p && p->availableIn(scene)) parameterWidget(*p, scene, state, actions);
+    }
+    ImGui::Spacing();
+    wrappedColored(ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled),
+                   "F5: every control   P: pause   R: restart   [ ]: preset");
+}
+
 }  // namespace
 
 float panelWidth(const PanelState& state, float displayWidth) {
@@ -401,14 +424,14 @@ PanelActions drawControlPanel(const scenes::Scene& scene, double& timeScale, con
         state.scrollToTop = false;
     }
     ImGui::PushItemWidth(ImGui::GetFontSize() * 9.5f);
-    textWrappedAtSpaces(scenes::withCount(scene.title, scene));
-    if (!scene.slide.empty()) {  // wrapped: a long slide line must not be cut off
-        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-        textWrappedAtSpaces(scene.slide);
-        ImGui::PopStyleColor();
-    }
-    if (!scene.description.empty()) textWrappedAtSpaces(scenes::withCount(scene.description, scene));
+    sceneText(scene);
     ImGui::Separator();
+    if (state.present) {
+        presentedSliders(scene, state, actions);
+        ImGui::PopItemWidth();
+        ImGui::End();
+        return actions;
+    }
     runSection(timeScale, readouts, actions);
     alarmsSection(readouts);
     if (ImGui::CollapsingHeader("Lecture parameters", ImGuiTreeNodeFlags_DefaultOpen)) {
@@ -425,19 +448,30 @@ PanelActions drawControlPanel(const scenes::Scene& scene, double& timeScale, con
     return actions;
 }
 
-void drawReadouts(const Readouts& readouts, const PanelState& state, PanelActions& actions) {
-    const ImGuiViewport* viewport = ImGui::GetMainViewport();
-    const float margin = ImGui::GetFontSize() * 0.5f;
-    ImGui::SetNextWindowPos(ImVec2(viewport->WorkPos.x + viewport->WorkSize.x - margin, viewport->WorkPos.y + margin),
-                            ImGuiCond_Always, ImVec2(1.0f, 0.0f));
-    const float width = std::min(ImGui::GetFontSize() * 18.0f, viewport->WorkSize.x * 0.3f);
-    ImGui::SetNextWindowSize(ImVec2(width, 0.0f), ImGuiCond_Always);
-    // On a small window the readouts would hide the scene: they start folded there.
-    ImGui::SetNextWindowCollapsed(viewport->WorkSize.x < 1000.0f, ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowBgAlpha(0.82f);
-    ImGui::Begin("Readouts", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize);
-    readoutsBody(readouts, state, actions);
+// "Readouts   41 FPS   kinetic 0.5 J   potential 0 J   hash 7568873c8f2cd1a0": the folded line.
+std::string readoutsTitle(const Readouts& r) {
+    char text[192];
+    const int fps = static_cast<int>(r.timing.fps + 0.5);
+    std::snprintf(text, sizeof text, "Readouts   %s%skinetic %.4g J   potential %.6g J   hash %016llx###Readouts",
+                  fps > 0 ? std::to_string(fps).c_str() : "", fps > 0 ? " FPS   " : "", r.diagnostics.kinetic,
+                  r.diagnostics.potential, static_cast<unsigned long long>(r.diagnostics.hash));
+    return text;
+}
+
+void drawReadouts(const Readouts& readouts, PanelState& state, PanelActions& actions, const glm::vec4& line,
+                  const glm::vec4& open) {
+    const glm::vec4& at = state.readoutsOpen ? open : line;
+    if (at.z <= 0.0f) return;
+    ImGui::SetNextWindowPos(ImVec2(at.x, at.y), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(at.z, std::max(at.w, ImGui::GetFrameHeight())), ImGuiCond_Always);
+    ImGui::SetNextWindowCollapsed(!state.readoutsOpen, ImGuiCond_Always);
+    ImGui::SetNextWindowBgAlpha(0.92f);
+    ImGui::Begin(readoutsTitle(readouts).c_str(), nullptr,
+                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoSavedSettings);
+    const bool unfolded = !ImGui::IsWindowCollapsed();  // the arrow was clicked: laid out so from the next frame
+    if (unfolded) readoutsBody(readouts, state, actions);
     ImGui::End();
+    state.readoutsOpen = unfolded;
 }
 
 }  // namespace ui

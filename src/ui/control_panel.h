@@ -8,6 +8,8 @@
 #include <utility>
 #include <vector>
 
+#include <glm/vec4.hpp>
+
 #include "physics/diagnostics.h"
 #include "physics/step.h"
 #include "scenes/parameters.h"
@@ -15,9 +17,16 @@
 
 namespace ui {
 
+// The presentation layout's type: this times the screen's UI scale.
+constexpr float kPresentScale = 1.5f;
+
 // The panel's own settings, kept between frames.
 struct PanelState {
     bool visible = true;
+    // The presentation layout (F5, --present): large type, only the scene's title, text
+    // and the sliders it names, and the view; everything else one key away.
+    bool present = false;
+    bool readoutsOpen = false;  // the readouts unfolded (numbers and plots); folded: one line
     float uiScale = 1.0f;      // multiplies the font size
     int colorBy = 2;           // render::ColorBy: 0 id, 1 speed, 2 contact state
     bool showBox = true;
@@ -134,8 +143,12 @@ struct PanelActions {
 PanelActions drawControlPanel(const scenes::Scene& scene, double& timeScale, const Readouts& readouts,
                               PanelState& state, const std::vector<std::string>& presetNames);
 
-// The readouts (numbers and plots), floating at the top right of the scene view.
-void drawReadouts(const Readouts& readouts, const PanelState& state, PanelActions& actions);
+// The readouts: folded, one title line in `line` that reads the frame rate, the
+// energies and the hash; unfolded (state.readoutsOpen), their numbers and plots
+// filling `open`. Rectangles are x, y, width, height in ImGui units; a click on the
+// title's arrow folds or unfolds them (from the next frame on).
+void drawReadouts(const Readouts& readouts, PanelState& state, PanelActions& actions, const glm::vec4& line,
+                  const glm::vec4& open);
 
 // Width of the docked panel in ImGui units (window coordinates) for a display of
 // `displayWidth`, at the current font size; 0 when the panel is hidden.

@@ -2,6 +2,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 
@@ -281,6 +282,35 @@ void ImGuiGlRenderer::render(const ImDrawData* drawData) {
         renderList(*drawData->CmdLists[i], *drawData, framebufferWidth, framebufferHeight);
     }
     backup.restore();
+}
+
+std::vector<glm::vec4> drawnRectangles(const ImDrawData& drawData) {
+    std::vector<glm::vec4> boxes;
+    for (int n = 0; n < drawData.CmdListsCount; ++n) {
+        const ImDrawList& list = *drawData.CmdLists[n];
+        ImVec2 lo(1e30f, 1e30f), hi(-1e30f, -1e30f);
+        for (const ImDrawCmd& cmd : list.CmdBuffer) {
+            if (cmd.UserCallback || cmd.ElemCount == 0) continue;
+            // What a command covers: its triangles, cut by its scissor rectangle (ImGui
+            // leaves clipped text's vertices in the list).
+            ImVec2 a(1e30f, 1e30f), b(-1e30f, -1e30f);
+            for (unsigned int e = 0; e < cmd.ElemCount; ++e) {
+                const ImDrawVert& v = list.VtxBuffer[int(cmd.VtxOffset + list.IdxBuffer[int(cmd.IdxOffset + e)])];
+                a = ImVec2(std::min(a.x, v.pos.x), std::min(a.y, v.pos.y));
+                b = ImVec2(std::max(b.x, v.pos.x), std::max(b.y, v.pos.y));
+            }
+            a = ImVec2(std::max(a.x, cmd.ClipRect.x), std::max(a.y, cmd.ClipRect.y));
+            b = ImVec2(std::min(b.x, cmd.ClipRect.z), std::min(b.y, cmd.ClipRect.w));
+            if (a.x >= b.x || a.y >= b.y) continue;
+            lo = ImVec2(std::min(lo.x, a.x), std::min(lo.y, a.y));
+            hi = ImVec2(std::max(hi.x, b.x), std::max(hi.y, b.y));
+        }
+        if (lo.x >= hi.x) continue;
+        const ImVec2 scale = drawData.FramebufferScale, origin = drawData.DisplayPos;
+        boxes.emplace_back((lo.x - origin.x) * scale.x, (lo.y - origin.y) * scale.y, (hi.x - lo.x) * scale.x,
+                           (hi.y - lo.y) * scale.y);
+    }
+    return boxes;
 }
 
 }  // namespace ui

@@ -6,8 +6,11 @@
 // ...widgets..., ImGui::Render(), render(ImGui::GetDrawData()).
 #include <glad/gl.h>
 
+#include <glm/vec4.hpp>
+
 #include <memory>
 #include <string>
+#include <vector>
 
 struct ImDrawData;
 struct ImDrawList;
@@ -17,6 +20,10 @@ class GlProgram;
 }
 
 namespace ui {
+
+// What ImGui drew: the bounding box of each window's draw list, x, y, width, height
+// in framebuffer px from the top left (tests check that no panel covers a view).
+std::vector<glm::vec4> drawnRectangles(const ImDrawData& drawData);
 
 class ImGuiGlRenderer {
   public:

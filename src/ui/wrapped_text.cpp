@@ -44,15 +44,20 @@ void paragraph(std::string_view text, float width, std::string& out) {
 
 }  // namespace
 
-void textWrappedAtSpaces(std::string_view text) {
-    const float width = std::max(ImGui::GetContentRegionAvail().x, ImGui::GetFontSize() * 4.0f);
-    std::string lines;  // drawn as one item: the lines as close as ImGui's own wrapped text
+std::string wrapAtSpaces(std::string_view text, float width) {
+    std::string lines;
     for (std::size_t start = 0; start <= text.size();) {
         const std::size_t newline = std::min(text.find('\n', start), text.size());
         paragraph(text.substr(start, newline - start), width, lines);
         start = newline + 1;
     }
     if (!lines.empty()) lines.pop_back();  // the last line's '\n'
+    return lines;
+}
+
+void textWrappedAtSpaces(std::string_view text) {
+    const float width = std::max(ImGui::GetContentRegionAvail().x, ImGui::GetFontSize() * 4.0f);
+    const std::string lines = wrapAtSpaces(text, width);  // drawn as one item: as close as ImGui's own wrapped text
     ImGui::TextUnformatted(lines.data(), lines.data() + lines.size());
 }
 

@@ -3,6 +3,7 @@
 // after a '/').
 // ImGui's own wrapping also breaks after '.' and ',', which splits a number across
 // lines ("-1." / "193").
+#include <string>
 #include <string_view>
 
 namespace ui {
@@ -11,5 +12,7 @@ namespace ui {
 // line stands alone on its line, or breaks after a '/'). Newlines are kept, an empty
 // line too.
 void textWrappedAtSpaces(std::string_view text);
+// The same text broken into lines ('\n') that fit `width` (ImGui units, current font).
+std::string wrapAtSpaces(std::string_view text, float width);
 
 }  // namespace ui

@@ -51,6 +51,8 @@ constexpr int kMaxSamples = 16;                          // per pixel
 constexpr double kMaxElevationDeg = 88.0;                // the orbit camera must stay off the pole
 constexpr double kMaxDistance = 1000.0;                  // m, render::Camera's zoom limit
 constexpr int kUiWarmUpFrames = 3;                       // ImGui frames laid out before frame 0
+constexpr float kUiScaleRange[2] = {0.75f, 3.0f};         // as the panel's slider
+constexpr int kViewGap = 4;                              // px between views side by side, as the window
 
 // ---------------------------------------------------------------- the options, checked
 
@@ -191,9 +193,11 @@ OverlayFlags parseOverlays(const std::string& text) {
 }
 
 // The panel's view options for a capture: the window's defaults, the colouring and the overlays.
-ui::PanelState captureView(render::ColorBy colorBy, const OverlayFlags& overlays) {
+ui::PanelState captureView(render::ColorBy colorBy, const OverlayFlags& overlays, float uiScale, bool present) {
     ui::PanelState view = viewShowing(overlays);
     view.colorBy = static_cast<int>(colorBy);
+    view.uiScale = present ? ui::kPresentScale * uiScale : uiScale;  // as F5 in the window
+    view.present = present;
     return view;
 }
 
@@ -210,6 +214,9 @@ CapturePlan planCapture(const CaptureOptions& options) {
     if (options.samples < 0 || options.samples > kMaxSamples)
         throw UsageError("--samples: must be between 0 and 16");
     if (options.out.empty()) throw UsageError("--out: give a folder for the frames");
+    if (!(options.uiScale >= kUiScaleRange[0] && options.uiScale <= kUiScaleRange[1]))
+        throw UsageError("--ui-scale: must be between 0.75 and 3");
+    if (options.present && !options.withUi) throw UsageError("--present draws the panel: give --with-ui too");
     return plan;
 }
 
@@ -270,8 +277,8 @@ std::string glText(GLenum name) {
 
 // ---------------------------------------------------------------- the window's panel, headless
 
-// The window's ImGui panel and readouts at UI scale 1, with no input. Timings
-// (FPS, draw and step ms) are shown as 0 so that equal runs give equal images.
+// The window's ImGui panel and readouts, with no input, where the layout puts them.
+// Timings (FPS, draw and step ms) are shown as 0 so that equal runs give equal images.
 class UiOverlay {
   public:
     UiOverlay(glm::ivec2 size, const ui::PanelState& view, const std::string& scenePath);
@@ -279,28 +286,31 @@ class UiOverlay {
     UiOverlay(const UiOverlay&) = delete;
     UiOverlay& operator=(const UiOverlay&) = delete;
 
+    // What the layout needs of the panel: the font, its width, the readouts' line.
+    void measure(LayoutRequest& request);
+    void place(const WindowLayout& layout) { layout_ = layout; }
     // Lays out one ImGui frame (ends with ImGui::Render); draws nothing yet.
     void layout(Simulation& simulation);
-    // Draws the last layout into the bound framebuffer.
-    void draw();
-    float panelPixels() const { return panelPixels_; }  // px, the panel's width
+    // Draws the last layout into the bound framebuffer; returns what it drew (px).
+    std::vector<glm::vec4> draw();
 
   private:
     ImGuiContext* context_ = nullptr;
     ui::ImGuiGlRenderer renderer_;
     ui::PanelState panel_;
     std::vector<std::string> presets_;
-    float panelPixels_ = 0.0f;
+    WindowLayout layout_;
 };
 
 UiOverlay::UiOverlay(glm::ivec2 size, const ui::PanelState& view, const std::string& scenePath)
     : context_(ImGui::CreateContext()), panel_(view), presets_(scenes::listPresets()) {
+    ImGui::SetCurrentContext(context_);  // CreateContext makes it current only when none is
     ImGuiIO& io = ImGui::GetIO();
     io.IniFilename = nullptr;
     io.DisplaySize = ImVec2(float(size.x), float(size.y));
     io.DisplayFramebufferScale = ImVec2(1.0f, 1.0f);
     io.DeltaTime = float(kCaptureFrameSeconds);
-    ui::applyStyle(1.0f);  // the window's look at UI scale 1
+    ui::applyStyle(panel_.uiScale);
     if (const std::string error = renderer_.init(); !error.empty())
         throw std::runtime_error("ImGui: " + error);
     panel_.scenePath = scenePath;
@@ -319,20 +329,33 @@ UiOverlay::~UiOverlay() {
     ImGui::DestroyContext(context_);
 }
 
+void UiOverlay::measure(LayoutRequest& request) {
+    renderer_.newFrame();
+    if (!renderer_.error().empty()) throw std::runtime_error("ImGui: " + renderer_.error());
+    ImGui::NewFrame();  // the font's size is known inside a frame
+    request.font = ImGui::GetFontSize();
+    request.panelWidth = ui::panelWidth(panel_, ImGui::GetIO().DisplaySize.x);
+    request.readoutsLine = panel_.present ? 0.0f : ImGui::GetFrameHeight();
+    ImGui::EndFrame();
+}
+
 void UiOverlay::layout(Simulation& simulation) {
     renderer_.newFrame();
     if (!renderer_.error().empty()) throw std::runtime_error("ImGui: " + renderer_.error());
     ImGui::NewFrame();
-    panelPixels_ = ui::panelWidth(panel_, ImGui::GetIO().DisplaySize.x);
     // No wall times: they would make equal runs differ.
     ui::Readouts readouts = makeReadouts(simulation, ui::FrameTimes{});
     ui::PanelActions actions =
         ui::drawControlPanel(simulation.scene(), simulation.timeScale, readouts, panel_, presets_);
-    ui::drawReadouts(readouts, panel_, actions);
+    const auto box = [](const Rect& r) { return glm::vec4(r.min, r.size); };
+    if (!panel_.present) ui::drawReadouts(readouts, panel_, actions, box(layout_.readoutsLine), box(layout_.readouts));
     ImGui::Render();
 }
 
-void UiOverlay::draw() { renderer_.render(ImGui::GetDrawData()); }
+std::vector<glm::vec4> UiOverlay::draw() {
+    renderer_.render(ImGui::GetDrawData());
+    return ui::drawnRectangles(*ImGui::GetDrawData());
+}
 
 // ---------------------------------------------------------------- the capture
 
@@ -437,7 +460,9 @@ class Capturer {
     render::FrameSnapshot snapshot_;
     std::unique_ptr<UiOverlay> ui_;
     std::unique_ptr<CaptureComparison> compare_;  // --compare: views B, C, D
+    WindowLayout layout_;
     glm::ivec4 view_{0};  // x, y, width, height in px (GL's lower-left origin)
+    std::vector<glm::vec4> uiDrawn_;  // px from the top left: what the panels and labels covered
     render::Camera camera_;
     Json frames_ = Json::array();
     std::unique_ptr<PngWriter> writer_;  // last: its threads finish before the rest goes
@@ -459,33 +484,44 @@ Capturer::Capturer(const CaptureOptions& options, const CapturePlan& plan,
     // Contacts and trails are recorded from the first step on, as in a window whose
     // overlays were switched on before the run.
     simulation_.setOverlayFlags(plan.overlays);
-    float panel = 0.0f;
+    LayoutRequest request;
+    request.window = plan.size;
+    request.gap = kViewGap;
+    const ui::PanelState view = captureView(plan.colorBy, plan.overlays, options.uiScale, options.present);
     if (options.withUi) {
-        ui_ = std::make_unique<UiOverlay>(plan.size, captureView(plan.colorBy, plan.overlays), scenePath_);
+        ui_ = std::make_unique<UiOverlay>(plan.size, view, scenePath_);
+        ui_->measure(request);
+    }
+    // --compare, or else the scene's own "compare".
+    const std::vector<std::string>& compare = options.compare.empty() ? simulation_.scene().compare : options.compare;
+    if (!compare.empty()) {
+        compare_ = std::make_unique<CaptureComparison>(simulation_, compare, plan.size, view.uiScale, view.present);
+        request.views = compare_->views();
+        compare_->sizeLabels(simulation_, request);
+    }
+    if (plan.camera) {
+        camera_.azimuth = float(glm::radians(plan.camera->azimuthDeg));
+        camera_.elevation = float(glm::radians(plan.camera->elevationDeg));
+    }
+    glm::vec3 lo, hi;
+    sceneBounds(simulation_, lo, hi);
+    request.boxAspect = boxAspectOnScreen(camera_, lo, hi);
+    layout_ = layoutWindow(request);
+    view_ = layout_.views.views[0];
+    if (compare_) compare_->place(layout_);
+    if (ui_) {
+        ui_->place(layout_);
         // ImGui settles in a few frames (auto-sized windows, scrollbars and wrapped
         // text measure the previous frame), so every captured frame looks the same
         // whichever frames came before it.
         for (int frame = 0; frame < kUiWarmUpFrames; ++frame) ui_->layout(simulation_);
-        panel = ui_->panelPixels();
     }
-    view_ = viewportRightOf(plan.size, panel);
-    // --compare, or else the scene's own "compare".
-    const std::vector<std::string>& compare = options.compare.empty() ? simulation_.scene().compare : options.compare;
-    if (!compare.empty()) {
-        compare_ = std::make_unique<CaptureComparison>(simulation_, compare, view_, plan.size, options.withUi);
-        view_ = compare_->left();
-        if (ui_) {  // the views' labels carry both runs' readouts: fold the window that would hide view B
-            ImGui::SetWindowCollapsed("Readouts", true);
-            for (int frame = 0; frame < kUiWarmUpFrames; ++frame) ui_->layout(simulation_);
-        }
-    }
-    glm::vec3 lo, hi;
-    sceneBounds(simulation_, lo, hi);
     const float aspect = float(view_.z) / float(view_.w);
+    const render::Camera angles = camera_;
     camera_.reset(lo, hi, aspect);
     if (plan.camera) {
-        camera_.azimuth = float(glm::radians(plan.camera->azimuthDeg));
-        camera_.elevation = float(glm::radians(plan.camera->elevationDeg));
+        camera_.azimuth = angles.azimuth;
+        camera_.elevation = angles.elevation;
         camera_.fitBox(lo, hi, aspect);
         if (plan.camera->distance) camera_.distance = float(*plan.camera->distance);
     }
@@ -495,15 +531,19 @@ render::Image Capturer::drawFrame() {
     target_.bind();
     glClearColor(ui::kBackdropColor[0], ui::kBackdropColor[1], ui::kBackdropColor[2], 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    const ui::PanelState view = captureView(plan_.colorBy, plan_.overlays);
+    const ui::PanelState view = captureView(plan_.colorBy, plan_.overlays, options_.uiScale, options_.present);
     renderer_.style.overlayOnTop = overlaysOnTop(view, simulation_.world().size());
     buildSnapshot(simulation_, view, snapshot_);
     renderer_.draw(snapshot_, camera_, view_.x, view_.y, view_.z, view_.w);
-    if (compare_) compare_->draw(renderer_, camera_, view, simulation_);
+    uiDrawn_.clear();
+    if (compare_) {
+        compare_->draw(renderer_, camera_, view, simulation_);
+        uiDrawn_ = compare_->labelsDrawn();
+    }
     if (ui_) {
         ui_->layout(simulation_);
         target_.bind();
-        ui_->draw();
+        for (const glm::vec4& box : ui_->draw()) uiDrawn_.push_back(box);
     }
     if (const GLenum error = glGetError(); error != GL_NO_ERROR) {
         throw std::runtime_error("GL error " + std::to_string(error) + " while drawing a frame");
@@ -567,6 +607,16 @@ Json Capturer::manifest() const {
                 {"frame_s", kCaptureFrameSeconds},
                 {"time_scale", simulation_.timeScale},
                 {"frames", frames_}};
+    Json views = Json::array(), drawn = Json::array();
+    for (int k = 0; k < layout_.views.count; ++k) {
+        const glm::ivec4& v = layout_.views.views[k];
+        views.push_back({v.x, v.y, v.z, v.w});
+    }
+    for (const glm::vec4& box : uiDrawn_) drawn.push_back({box.x, box.y, box.z, box.w});
+    // Every view (px, GL's lower-left origin) and what the panels and labels drew over
+    // the last frame (px from the top left): no view may lie under a panel.
+    json["layout"] = Json{{"ui_scale", options_.uiScale}, {"present", options_.present}, {"views", views},
+                          {"ui_drawn", drawn}};
     if (compare_) {
         const Comparison& comparison = compare_->comparison();
         const auto viewport = [&](int k) {

@@ -6,9 +6,6 @@
 namespace app {
 namespace {
 
-constexpr int kViewGap = 4;           // px between the views
-constexpr float kLabelMargin = 8.0f;  // px from a view's corner
-
 // The views --compare asks for; throws UsageError naming a refused override.
 Variants variantsOf(const scenes::Scene& scene, const std::vector<std::string>& lists) {
     Variants variants;
@@ -21,14 +18,18 @@ Variants variantsOf(const scenes::Scene& scene, const std::vector<std::string>& 
 }  // namespace
 
 CaptureComparison::CaptureComparison(const Simulation& primary, const std::vector<std::string>& lists,
-                                     const glm::ivec4& view, glm::ivec2 size, bool labelsAtBottom)
-    : comparison_(primary.scene(), variantsOf(primary.scene(), lists)),
-      size_(size),
-      labelsAtBottom_(labelsAtBottom),
-      labels_(size) {
-    splitViewport(view, kViewGap, 1 + comparison_.count(), views_);
+                                     glm::ivec2 size, float uiScale, bool present)
+    : comparison_(primary.scene(), variantsOf(primary.scene(), lists)), labels_(size, uiScale), titlesOnly_(present) {
     for (int k = 0; k < comparison_.count(); ++k) comparison_.simulation(k).setOverlayFlags(primary.overlayFlags());
 }
+
+void CaptureComparison::sizeLabels(const Simulation& primary, LayoutRequest& request) {
+    sized_ = comparisonLabels(primary, comparison_, titlesOnly_);
+    request.labelWidth = labels_.width(sized_);
+    request.labelHeight = [this](float width) { return labels_.height(sized_, width); };
+}
+
+void CaptureComparison::place(const WindowLayout& layout) { layout_ = layout; }
 
 void CaptureComparison::advance(const Simulation& primary, double seconds) {
     comparison_.follow(primary);
@@ -38,12 +39,16 @@ void CaptureComparison::advance(const Simulation& primary, double seconds) {
 void CaptureComparison::draw(render::Renderer& renderer, const render::Camera& camera, const ui::PanelState& view,
                              const Simulation& primary) {
     for (int k = 0; k < comparison_.count(); ++k) {
-        const glm::ivec4& v = views_[k + 1];
+        const glm::ivec4& v = layout_.views.views[k + 1];
         buildSnapshot(comparison_.simulation(k), view, snapshot_);
         renderer.draw(snapshot_, camera, v.x, v.y, v.z, v.w);
     }
-    const glm::vec2 offset(kLabelMargin, labelsAtBottom_ ? -kLabelMargin : kLabelMargin);
-    labels_.draw(comparisonLabels(primary, comparison_, views_, size_, glm::vec2(1.0f), offset, labelsAtBottom_));
+    std::vector<ViewLabel> labels = comparisonLabels(primary, comparison_, titlesOnly_);
+    for (std::size_t k = 0; k < labels.size() && k < std::size_t(kMostViews); ++k) {
+        labels[k].topLeft = layout_.labels[k].min;
+        labels[k].room = layout_.labels[k].size;
+    }
+    labelsDrawn_ = labels_.draw(labels);
 }
 
 }  // namespace app

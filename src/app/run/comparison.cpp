@@ -65,33 +65,6 @@ bool Comparison::changesNothing(const scenes::Scene& primary) const {
     return true;
 }
 
-void splitViewport(glm::ivec4 view, int gap, glm::ivec4& left, glm::ivec4& right) {
-    const int leftWidth = std::max((view.z - gap) / 2, 1);
-    const int rightWidth = std::max(view.z - gap - leftWidth, 1);
-    left = {view.x, view.y, leftWidth, view.w};
-    right = {view.x + view.z - rightWidth, view.y, rightWidth, view.w};
-}
-
-void splitViewport(glm::ivec4 view, int gap, int count, glm::ivec4 out[kMostViews]) {
-    count = std::clamp(count, 1, kMostViews);
-    int bestColumns = 1;
-    double bestSide = -1.0;  // px: the smaller side of a view
-    for (int columns = 1; columns <= count; ++columns) {
-        const int rows = (count + columns - 1) / columns;
-        const double side = std::min(double(view.z - (columns - 1) * gap) / columns, double(view.w - (rows - 1) * gap) / rows);
-        if (side > bestSide) bestSide = side, bestColumns = columns;
-    }
-    const int rows = (count + bestColumns - 1) / bestColumns;
-    const int width = std::max((view.z - (bestColumns - 1) * gap) / bestColumns, 1);
-    const int height = std::max((view.w - (rows - 1) * gap) / rows, 1);
-    for (int k = 0; k < count; ++k) {
-        const int column = k % bestColumns, row = k / bestColumns;  // row 0 at the top
-        out[k] = {view.x + column * (width + gap), view.y + view.w - (row + 1) * height - row * gap, width, height};
-    }
-    // Two side by side keep the halves splitViewport(left, right) gives (the right one to the edge).
-    if (count == 2 && bestColumns == 2) splitViewport(view, gap, out[0], out[1]);
-}
-
 std::vector<std::string> viewReadoutLines(const ViewReadout& view) {
     const physics::Diagnostics& d = view.diagnostics;
     char line[160];

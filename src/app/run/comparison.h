@@ -60,16 +60,6 @@ private:
     std::vector<Run> runs_;
 };
 
-// The two halves of a viewport (x, y, width, height; GL's lower-left origin), with a
-// gap of `gap` pixels between them: left is the primary run, right the comparison.
-void splitViewport(glm::ivec4 view, int gap, glm::ivec4& left, glm::ivec4& right);
-
-// `count` views (1 to kMostViews) in a grid of the viewport, `gap` px apart, in the
-// order A, B, ... row by row from the top left: as many columns as give each view
-// the largest smaller side (two side by side, three in a row on a wide viewport, four
-// in two rows).
-void splitViewport(glm::ivec4 view, int gap, int count, glm::ivec4 out[kMostViews]);
-
 // One view's title and numbers, for its label.
 struct ViewReadout {
     std::string title;  // "A  method = position"

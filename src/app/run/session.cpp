@@ -13,10 +13,30 @@ namespace {
 
 constexpr int kRingSegments = 48;
 constexpr float kRingRadius = 1.25f;        // times the sphere's radius
-constexpr glm::u8vec4 kRingColor{255, 225, 0, 255};
+constexpr glm::u8vec4 kRingColor{255, 225, 0, 255};         // the selected sphere: yellow
+constexpr glm::u8vec4 kPartnerRingColor{255, 80, 235, 255};  // the other sphere of the explained contact: magenta
 constexpr glm::u8vec4 kRingOutline{20, 22, 30, 255};
 constexpr float kRingWidth = 4.0f;          // px
 constexpr float kOutlineWidth = 8.0f;       // px
+
+// A ring around a sphere, in front of it and facing the eye: seen whenever the sphere's front is.
+void addRing(render::FrameSnapshot& snapshot, const render::Camera& camera, const glm::dvec3& position, double radius,
+             glm::u8vec4 colour) {
+    const glm::vec3 centre(position);
+    const float r = float(radius);
+    const glm::vec3 toEye = glm::normalize(camera.position() - centre);
+    const glm::vec3 side = glm::normalize(glm::cross(toEye, std::abs(toEye.z) < 0.9f ? glm::vec3(0, 0, 1) : glm::vec3(1, 0, 0)));
+    const glm::vec3 up = glm::cross(side, toEye);
+    const glm::vec3 middle = centre + 0.9f * r * toEye;
+    const float ring = kRingRadius * r;
+    for (const auto& [color, width] : {std::pair{kRingOutline, kOutlineWidth}, std::pair{colour, kRingWidth}}) {
+        for (int s = 0; s < kRingSegments; ++s) {
+            const float a0 = 6.2831853f * float(s) / kRingSegments, a1 = 6.2831853f * float(s + 1) / kRingSegments;
+            snapshot.addLine(middle + ring * (std::cos(a0) * side + std::sin(a0) * up),
+                             middle + ring * (std::cos(a1) * side + std::sin(a1) * up), color, width);
+        }
+    }
+}
 
 }  // namespace
 
@@ -280,25 +300,16 @@ physics::Diagnostics Session::diagnostics(int k) const {
     return stale_[std::size_t(k)] ? physics::measure(simulation.world(), simulation.params()) : simulation.diagnostics();
 }
 
-void Session::appendSelection(int k, const render::Camera& camera, render::FrameSnapshot& snapshot) const {
+void Session::appendSelection(int k, const render::Camera& camera, render::FrameSnapshot& snapshot, int partner) const {
     const physics::World& world = run(k).world();
     if (selected_ < 0 || static_cast<std::size_t>(selected_) >= world.size()) return;
     const auto i = static_cast<std::size_t>(selected_);
-    const glm::vec3 centre(world.position[i]);
-    const float r = float(world.radius[i]);
-    // In front of the sphere, facing the eye: seen whenever the sphere's front is.
-    const glm::vec3 toEye = glm::normalize(camera.position() - centre);
-    const glm::vec3 side = glm::normalize(glm::cross(toEye, std::abs(toEye.z) < 0.9f ? glm::vec3(0, 0, 1) : glm::vec3(1, 0, 0)));
-    const glm::vec3 up = glm::cross(side, toEye);
-    const glm::vec3 middle = centre + 0.9f * r * toEye;
-    const float ring = kRingRadius * r;
-    for (const auto& [color, width] : {std::pair{kRingOutline, kOutlineWidth}, std::pair{kRingColor, kRingWidth}}) {
-        for (int s = 0; s < kRingSegments; ++s) {
-            const float a0 = 6.2831853f * float(s) / kRingSegments, a1 = 6.2831853f * float(s + 1) / kRingSegments;
-            snapshot.addLine(middle + ring * (std::cos(a0) * side + std::sin(a0) * up),
-                             middle + ring * (std::cos(a1) * side + std::sin(a1) * up), color, width);
-        }
+    addRing(snapshot, camera, world.position[i], world.radius[i], kRingColor);
+    if (partner >= 0 && static_cast<std::size_t>(partner) < world.size()) {
+        addRing(snapshot, camera, world.position[std::size_t(partner)], world.radius[std::size_t(partner)],
+                kPartnerRingColor);
     }
+    const glm::vec3 centre(world.position[i]);
     // While dragging: a plumb line to the floor, so that the height reads at a glance.
     if (drag_.active() && world.boxPlaneCount > 0) {
         const physics::Plane& floor = world.planes[0];

@@ -97,9 +97,11 @@ public:
     void setCatchEveryStep(bool on) { catchEveryStep_ = on; }
     // The readouts of run k, measured again when the world was edited since its last step.
     physics::Diagnostics diagnostics(int k) const;
-    // A ring around the selected sphere facing the camera (and, while dragging, a
-    // line down to the floor), appended to `snapshot` of run k.
-    void appendSelection(int k, const render::Camera& camera, render::FrameSnapshot& snapshot) const;
+    // A ring around the selected sphere facing the camera (yellow), one around
+    // `partner` (magenta: the other sphere of the contact explained; -1 none) and,
+    // while dragging, a line down to the floor, appended to `snapshot` of run k.
+    void appendSelection(int k, const render::Camera& camera, render::FrameSnapshot& snapshot,
+                         int partner = -1) const;
 
 private:
     void startAgain();  // the comparison from the primary's scene, an empty timeline

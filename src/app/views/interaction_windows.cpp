@@ -21,6 +21,7 @@ constexpr float kBackgroundAlpha = 0.86f;
 const ImVec4 kHeadingColor{1.0f, 0.85f, 0.45f, 1.0f};  // the slide a line comes from
 const ImVec4 kResultColor{0.55f, 0.90f, 0.55f, 1.0f};
 const ImVec4 kNoteColor{1.0f, 0.62f, 0.30f, 1.0f};
+const ImVec4 kRingNoteColor{1.0f, 0.55f, 0.95f, 1.0f};  // the rings' legend, magenta like the partner's
 
 void tooltip(const char* text) {
     if (!ImGui::IsItemHovered()) return;
@@ -34,7 +35,7 @@ void tooltip(const char* text) {
 void place(const Placement& placement) {
     ImGui::SetNextWindowPos(ImVec2(placement.position.x, placement.position.y), ImGuiCond_Always,
                             ImVec2(placement.pivot.x, placement.pivot.y));
-    ImGui::SetNextWindowSize(ImVec2(placement.width, 0.0f), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(placement.width, placement.height), ImGuiCond_Always);
     if (placement.maxHeight > 0.0f) {
         ImGui::SetNextWindowSizeConstraints(ImVec2(placement.width, 0.0f), ImVec2(placement.width, placement.maxHeight));
     }
@@ -147,7 +148,7 @@ void drawTimelineBar(const glm::vec4& scene, const TimelineInfo& timeline, bool 
 void drawMessage(const glm::vec4& scene, const ToolWindowsState& state) {
     if (state.message.empty()) return;
     const float gap = ImGui::GetFontSize() * 0.5f;
-    ImGui::SetNextWindowPos(ImVec2(scene.x + 0.5f * scene.z, scene.y + scene.w - timelineBarHeight() - gap),
+    ImGui::SetNextWindowPos(ImVec2(scene.x + 0.5f * scene.z, scene.y + scene.w - gap),
                             ImGuiCond_Always, ImVec2(0.5f, 1.0f));
     ImGui::SetNextWindowSize(ImVec2(0.0f, 0.0f), ImGuiCond_Always);
     ImGui::SetNextWindowBgAlpha(kBackgroundAlpha);
@@ -166,13 +167,13 @@ float inspectorWidth() { return ImGui::GetFontSize() * 20.0f; }
 
 float drawInspector(const Placement& placement, const physics::World& world, int selected, bool paused,
                     int graphLevel, ToolWindowsState& state, ToolActions& actions) {
-    if (selected < 0 || static_cast<std::size_t>(selected) >= world.size()) return placement.position.y;
+    if (selected < 0 || static_cast<std::size_t>(selected) >= world.size()) return 0.0f;
     const auto i = static_cast<std::size_t>(selected);
     place(placement);
     char title[64];
     std::snprintf(title, sizeof title, "Sphere #%d###inspector", selected);
     ImGui::Begin(title, nullptr, kFixed | ImGuiWindowFlags_NoCollapse);
-    ImGui::PushItemWidth(ImGui::GetFontSize() * 13.5f);
+    ImGui::PushItemWidth(-ImGui::GetFontSize() * 3.5f);  // the fields take the width the labels leave
     SphereFields fields{world.position[i], world.velocity[i], world.radius[i], world.mass[i]};
     bool changed = vectorField("p (m)", fields.p, paused);
     changed |= vectorField("v (m/s)", fields.v, paused);
@@ -204,9 +205,19 @@ float drawInspector(const Placement& placement, const physics::World& world, int
     tooltip("The slides' formulas with the numbers of this sphere's latest contacts.");
     ImGui::SameLine();
     if (ImGui::Button("Deselect")) actions.deselect = true;
-    const float bottom = ImGui::GetWindowPos().y + ImGui::GetWindowHeight();
+    // Its content's height, whatever room it had: the layout keeps that much from the next frame on.
+    const float height = ImGui::GetCursorPosY() - ImGui::GetStyle().ItemSpacing.y + ImGui::GetStyle().WindowPadding.y;
     ImGui::End();
-    return bottom;
+    return height;
+}
+
+int explainedPartner(const Session& session, const ToolWindowsState& state) {
+    const std::vector<physics::ContactEvent>& events = session.latestContacts().events;
+    const int selected = session.selected();
+    if (!state.explainer || selected < 0 || events.empty()) return -1;
+    const physics::ContactEvent& event = events[std::size_t(std::clamp(state.explainIndex, 0, int(events.size()) - 1))];
+    if (event.isPlane()) return -1;
+    return static_cast<int>(event.i) == selected ? event.other : static_cast<int>(event.i);
 }
 
 void drawExplainer(const Placement& placement, const ExplainerInput& input, ToolWindowsState& state,
@@ -239,6 +250,10 @@ void drawExplainer(const Placement& placement, const ExplainerInput& input, Tool
     const physics::ContactEvent& event = events[static_cast<std::size_t>(state.explainIndex)];
     ImGui::Text("%d of %d: %s", state.explainIndex + 1, count,
                 contactTitle(event, input.selected, input.boxPlaneCount, input.params->passes).c_str());
+    if (!event.isPlane()) {  // which ring is which sphere
+        const int partner = static_cast<int>(event.i) == input.selected ? event.other : static_cast<int>(event.i);
+        ImGui::TextColored(kRingNoteColor, "ringed: #%d yellow, #%d magenta", input.selected, partner);
+    }
     const double age = input.now - input.eventTime;  // s
     if (age > 0.0) {
         ImGui::TextDisabled("in the step to t = %.4f s (step %llu), %.3g s ago", input.eventTime,
@@ -267,43 +282,75 @@ void drawExplainer(const Placement& placement, const ExplainerInput& input, Tool
     ImGui::End();
 }
 
+glm::vec2 viewLabelSize(const ViewLabel& label) {
+    const ImGuiStyle& style = ImGui::GetStyle();
+    float width = 0.0f;
+    for (const std::string& line : label.lines) width = std::max(width, ImGui::CalcTextSize(line.c_str()).x);
+    const float lines = float(label.lines.size());
+    return {width + 2.0f * style.WindowPadding.x,
+            lines * ImGui::GetTextLineHeightWithSpacing() - style.ItemSpacing.y + 2.0f * style.WindowPadding.y};
+}
+
+float labelsWidth(const std::vector<ViewLabel>& labels) {
+    float width = 0.0f;
+    for (const ViewLabel& label : labels) width = std::max(width, viewLabelSize(label).x);
+    const float font = ImGui::GetFontSize();
+    return std::ceil(width / font) * font;
+}
+
+float labelsHeight(const std::vector<ViewLabel>& labels, float width) {
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float text = std::max(width - 2.0f * style.WindowPadding.x, ImGui::GetFontSize() * 4.0f);
+    float tallest = 0.0f;
+    for (const ViewLabel& label : labels) {
+        // A line to spare: changing digits and marks (- to a check) may wrap one more.
+        float height = 2.0f * style.WindowPadding.y + ImGui::GetTextLineHeight();
+        for (const std::string& line : label.lines) {
+            height += ImGui::CalcTextSize(ui::wrapAtSpaces(line, text).c_str()).y + style.ItemSpacing.y;
+        }
+        tallest = std::max(tallest, height);
+    }
+    return std::ceil(tallest);
+}
+
 void drawViewLabels(const std::vector<ViewLabel>& labels) {
     for (std::size_t k = 0; k < labels.size(); ++k) {
         const ViewLabel& label = labels[k];
-        ImGui::SetNextWindowPos(ImVec2(label.topLeft.x, label.topLeft.y), ImGuiCond_Always,
-                                ImVec2(label.pivot.x, label.pivot.y));
-        // Sized from this frame's text (an auto-sized window lags a frame behind changing numbers).
-        const ImGuiStyle& style = ImGui::GetStyle();
-        float width = 0.0f;
-        for (const std::string& line : label.lines) width = std::max(width, ImGui::CalcTextSize(line.c_str()).x);
-        const float lines = float(label.lines.size());
-        ImGui::SetNextWindowSize(ImVec2(width + 2.0f * style.WindowPadding.x,
-                                        lines * ImGui::GetTextLineHeightWithSpacing() - style.ItemSpacing.y +
-                                            2.0f * style.WindowPadding.y),
-                                 ImGuiCond_Always);
+        ImGui::SetNextWindowPos(ImVec2(label.topLeft.x, label.topLeft.y), ImGuiCond_Always);
+        // Sized from this frame's text (an auto-sized window lags a frame behind changing
+        // numbers), within the place the layout keeps for it: a longer line wraps.
+        const glm::vec2 size = glm::min(viewLabelSize(label), label.room);
+        ImGui::SetNextWindowSize(ImVec2(size.x, 0.0f), ImGuiCond_Always);
+        ImGui::SetNextWindowSizeConstraints(ImVec2(size.x, 0.0f), ImVec2(size.x, label.room.y));
         ImGui::SetNextWindowBgAlpha(0.75f);
         const std::string name = "##view label " + std::to_string(k);
         ImGui::Begin(name.c_str(), nullptr,
-                     kFixed | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar |
+                     kFixed | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_AlwaysAutoResize |
                          ImGuiWindowFlags_NoInputs | ImGuiWindowFlags_NoBringToFrontOnFocus);
         for (std::size_t n = 0; n < label.lines.size(); ++n) {
-            if (n == 0) {
-                const ImVec4 color(label.color.x / 255.0f, label.color.y / 255.0f, label.color.z / 255.0f, 1.0f);
-                ImGui::TextColored(color, "%s", label.lines[n].c_str());
-            } else {
-                ImGui::TextUnformatted(label.lines[n].c_str());
-            }
+            const ImVec4 color = n == 0 ? ImVec4(label.color.x / 255.0f, label.color.y / 255.0f, label.color.z / 255.0f, 1.0f)
+                                        : ImGui::GetStyleColorVec4(ImGuiCol_Text);
+            ImGui::PushStyleColor(ImGuiCol_Text, color);
+            ui::textWrappedAtSpaces(label.lines[n]);
+            ImGui::PopStyleColor();
         }
         ImGui::End();
     }
 }
 
-ToolActions drawInteractionWindows(const Session& session, const ViewLayout& layout, float panelUnits,
-                                   ToolWindowsState& state) {
+namespace {
+
+glm::vec4 asVec4(const Rect& r) { return {r.min.x, r.min.y, r.size.x, r.size.y}; }
+
+// A docked window: `rect` exactly, or its width and at most its height when `fitHeight`.
+Placement docked(const Rect& rect, bool fitHeight) {
+    return {rect.min, {0.0f, 0.0f}, rect.size.x, fitHeight ? rect.size.y : 0.0f, fitHeight ? 0.0f : rect.size.y};
+}
+
+}  // namespace
+
+ToolActions drawInteractionWindows(const Session& session, const WindowLayout& layout, ToolWindowsState& state) {
     ToolActions actions;
-    const ImGuiViewport* viewport = ImGui::GetMainViewport();
-    const glm::vec4 scene(viewport->WorkPos.x + panelUnits, viewport->WorkPos.y, viewport->WorkSize.x - panelUnits,
-                          viewport->WorkSize.y);
     const Simulation& simulation = session.run(0);
     const physics::World& world = simulation.world();
     const RewindBuffer& timeline = session.timeline();
@@ -317,40 +364,35 @@ ToolActions drawInteractionWindows(const Session& session, const ViewLayout& lay
     }
     info.bytes = timeline.bytes();
     const Comparison* comparison = session.comparison();
-    drawTimelineBar(scene, info, comparison != nullptr, state, actions);
+    if (!layout.timeline.empty()) drawTimelineBar(asVec4(layout.timeline), info, comparison != nullptr, state, actions);
 
-    // Alone: the inspector at the top left of the scene, the explainer under it, both
-    // left of the readouts. Side by side: the views' labels take the top, the inspector
-    // goes to the bottom right and the explainer to the bottom left.
-    const glm::vec4 area(scene.x, scene.y, scene.z, scene.w - timelineBarHeight());
-    const float font = ImGui::GetFontSize(), gap = 0.5f * font;
     const int selected = session.selected();
-    Placement inspector{{area.x + gap, area.y + gap}, {0.0f, 0.0f}, inspectorWidth(), 0.0f};
-    if (comparison) {
-        inspector.position = {area.x + area.z - gap, area.y + area.w - gap};
-        inspector.pivot = {1.0f, 1.0f};
-    }
     const bool showsLevel = (simulation.params().shock == physics::ShockPropagation::On || simulation.overlayFlags().graph) &&
                             selected >= 0 && static_cast<std::size_t>(selected) < world.size();
     const int level = showsLevel ? simulation.contactGraph().level[std::size_t(selected)] : kLevelNotShown;
-    const float inspectorBottom = drawInspector(inspector, world, selected, simulation.paused, level, state, actions);
-    const float readoutsWidth = std::min(18.0f * font, 0.3f * viewport->WorkSize.x);  // ui::drawReadouts'
-    const float room = area.z - 3.0f * gap - (comparison ? inspectorWidth() : readoutsWidth);
-    const float top = comparison ? area.y + 10.0f * font : (selected >= 0 ? inspectorBottom : area.y) + gap;
-    const Placement explainer{{area.x + gap, area.y + area.w - gap}, {0.0f, 1.0f},
-                              std::clamp(room, 22.0f * font, 40.0f * font),
-                              std::max(area.y + area.w - gap - top, 8.0f * font)};
-    const Session::Contacts& contacts = session.latestContacts();
-    drawExplainer(explainer,
-                  {selected, &contacts.events, contacts.time, contacts.steps, world.time, world.boxPlaneCount,
-                   &simulation.params(), simulation.paused, world.recordContacts, &contacts.solvedTogether},
-                  state, actions);
-    if (comparison) {
-        const float below = ImGui::GetFrameHeight() + 2.0f * ImGui::GetStyle().ItemSpacing.y;  // the readouts' title
-        drawViewLabels(comparisonLabels(simulation, *comparison, layout.views, layout.framebuffer,
-                                        layout.pixelsPerUnit, glm::vec2(gap, gap + below)));
+    state.inspectorHeight = 0.0f;
+    if (!layout.inspector.empty()) {
+        state.inspectorHeight = drawInspector(docked(layout.inspector, true), world, selected, simulation.paused,
+                                              level, state, actions);
+    } else if (selected >= 0) {
+        state.inspectorHeight = 10.0f * ImGui::GetFontSize();  // room for it from the next frame on
     }
-    drawMessage(scene, state);
+    if (!layout.explainer.empty()) {
+        const Session::Contacts& contacts = session.latestContacts();
+        drawExplainer(docked(layout.explainer, false),
+                      {selected, &contacts.events, contacts.time, contacts.steps, world.time, world.boxPlaneCount,
+                       &simulation.params(), simulation.paused, world.recordContacts, &contacts.solvedTogether},
+                      state, actions);
+    }
+    if (comparison) {
+        std::vector<ViewLabel> labels = comparisonLabels(simulation, *comparison, state.present);
+        for (std::size_t k = 0; k < labels.size() && k < std::size_t(kMostViews); ++k) {
+            labels[k].topLeft = layout.labels[k].min;
+            labels[k].room = layout.labels[k].size;
+        }
+        drawViewLabels(labels);
+    }
+    drawMessage(asVec4(Rect{layout.scene.min, layout.scene.size}), state);
     return actions;
 }
 

@@ -15,7 +15,7 @@
 #include <glm/vec4.hpp>
 
 #include "app/run/interaction.h"
-#include "app/views/view_layout.h"
+#include "app/views/window_layout.h"
 #include "physics/params.h"
 #include "physics/world.h"
 
@@ -32,6 +32,8 @@ struct ToolWindowsState {
     std::string message;                // the last result or refusal
     std::string inspectorRefusal;       // why the inspector's last edit was refused, shown under its fields
     int refusedSphere = -1;             // the sphere it was about
+    float inspectorHeight = 0.0f;       // ImGui units, as last drawn (the layout keeps room for it)
+    bool present = false;               // the presentation layout: the views' labels show their titles only
 };
 
 struct ToolActions {
@@ -59,12 +61,12 @@ struct TimelineInfo {
 // Height (ImGui units) of the timeline bar: two rows, whatever it shows.
 float timelineBarHeight();
 
-// The bar along the bottom of `scene`, timelineBarHeight() high.
-void drawTimelineBar(const glm::vec4& scene, const TimelineInfo& timeline, bool compareOn, ToolWindowsState& state,
+// The bar, filling `bar` (x, y, width, height).
+void drawTimelineBar(const glm::vec4& bar, const TimelineInfo& timeline, bool compareOn, ToolWindowsState& state,
                      ToolActions& actions);
 
-// The last result or refusal (state.message), centred just above the bar, on top
-// of the other windows: the views keep their size when it comes and goes.
+// The last result or refusal (state.message), centred at the bottom of `scene`, on
+// top of the other windows: the views keep their size when it comes and goes.
 void drawMessage(const glm::vec4& scene, const ToolWindowsState& state);
 
 // Where a window goes: `pivot` of it (0..1 each way) at `position` (ImGui units).
@@ -73,6 +75,7 @@ struct Placement {
     glm::vec2 pivot{0.0f};
     float width = 0.0f;      // ImGui units
     float maxHeight = 0.0f;  // ImGui units; 0: no limit (the rest scrolls)
+    float height = 0.0f;     // ImGui units; 0: as tall as its content (up to maxHeight)
 };
 
 // The inspector's width (ImGui units).
@@ -80,7 +83,7 @@ float inspectorWidth();
 
 // The selected sphere's p, v, r, m, editable while paused, and its level in slide 14's
 // contact graph (`graphLevel`: -1 reaches no plane; kLevelNotShown: not shown). Returns
-// the window's bottom edge (ImGui units), or the placement's y when nothing was drawn.
+// the height its content needs (ImGui units), 0 when nothing was drawn.
 constexpr int kLevelNotShown = -2;
 float drawInspector(const Placement& placement, const physics::World& world, int selected, bool paused,
                     int graphLevel, ToolWindowsState& state, ToolActions& actions);
@@ -99,23 +102,33 @@ struct ExplainerInput {
     const std::vector<physics::ContactEvent>* solvedTogether = nullptr;  // Session::Contacts'
 };
 
+// The other sphere of the contact the explainer shows (ringed in magenta), or -1:
+// the explainer closed, nothing recorded, or a plane.
+int explainedPartner(const Session& session, const ToolWindowsState& state);
+
 // "Explain this contact": the slides' formulas with the numbers of one of the events.
 void drawExplainer(const Placement& placement, const ExplainerInput& input, ToolWindowsState& state,
                    ToolActions& actions);
 
-// All of the above for the session's state: the timeline bar, the inspector and the
-// explainer of the selected sphere, the views' labels side by side and the message.
-// `panelUnits` is the width of the control panel (ImGui units).
-ToolActions drawInteractionWindows(const Session& session, const ViewLayout& layout, float panelUnits,
-                                   ToolWindowsState& state);
+// All of the above for the session's state, where `layout` puts them: the timeline
+// bar, the inspector and the explainer of the selected sphere in the dock, the views'
+// labels side by side, and the message.
+ToolActions drawInteractionWindows(const Session& session, const WindowLayout& layout, ToolWindowsState& state);
 
-// A view's label: its title and readouts, at the top left of the view.
+// A view's label: its title and readouts, in the place the layout keeps for it.
 struct ViewLabel {
-    glm::vec2 topLeft{0.0f};  // ImGui units: where `pivot` of the label goes
-    glm::vec2 pivot{0.0f};    // (0, 0): the label's top left; (0, 1): its bottom left
+    glm::vec2 topLeft{0.0f};  // ImGui units
+    glm::vec2 room{1e6f};     // ImGui units: the place kept for it; longer lines wrap
     std::vector<std::string> lines;  // the first is the title
     glm::u8vec4 color{255, 255, 255, 255};  // of the title
 };
+// A label's size with the current font (ImGui units).
+glm::vec2 viewLabelSize(const ViewLabel& label);
+// The widest of `labels` unwrapped, rounded up to whole font sizes so that changing
+// digits do not move the views; the tallest when laid `width` wide (lines wrap), and
+// a line to spare.
+float labelsWidth(const std::vector<ViewLabel>& labels);
+float labelsHeight(const std::vector<ViewLabel>& labels, float width);
 void drawViewLabels(const std::vector<ViewLabel>& labels);
 
 }  // namespace app

@@ -10,9 +10,7 @@
 
 namespace app {
 
-std::vector<ViewLabel> comparisonLabels(const Simulation& primary, const Comparison& comparison,
-                                        const glm::ivec4 views[kMostViews], glm::ivec2 framebufferSize,
-                                        glm::vec2 pixelsPerUnit, glm::vec2 offset, bool atBottom) {
+std::vector<ViewLabel> comparisonLabels(const Simulation& primary, const Comparison& comparison, bool titlesOnly) {
     std::vector<ViewLabel> labels;
     for (int k = 0; k <= comparison.count(); ++k) {
         const Simulation& run = k == 0 ? primary : comparison.simulation(k - 1);
@@ -20,16 +18,13 @@ std::vector<ViewLabel> comparisonLabels(const Simulation& primary, const Compari
                                   (k == 0 ? comparison.primaryLabel(primary.scene()) : comparison.label(k - 1));
         const physics::World& world = run.world();
         ViewReadout readout{title, physics::measure(world, run.params()), world.time, world.stepCount, ""};
-        if (run.impacts().total.contacts > 0) {
-            std::vector<physics::MirrorAsymmetry> mirrors;
-            for (const physics::Plane& m : run.scene().mirrors) mirrors.push_back(physics::mirrorAsymmetry(world, m));
-            readout.properties = propertiesMarks(judgeProperties(run.impacts(), mirrors, run.params()));
-        }
-        const glm::ivec4& view = views[k];
-        const float top = float(framebufferSize.y - (view.y + view.w));  // px from the framebuffer's top
-        const glm::vec2 corner(float(view.x), atBottom ? top + float(view.w) : top);
-        labels.push_back({corner / pixelsPerUnit + offset, glm::vec2(0.0f, atBottom ? 1.0f : 0.0f),
-                          viewReadoutLines(readout), kViewColors[k]});
+        // From the first frame on (dashes until measured): the label keeps its size.
+        std::vector<physics::MirrorAsymmetry> mirrors;
+        for (const physics::Plane& m : run.scene().mirrors) mirrors.push_back(physics::mirrorAsymmetry(world, m));
+        readout.properties = propertiesMarks(judgeProperties(run.impacts(), mirrors, run.params()));
+        std::vector<std::string> lines = viewReadoutLines(readout);
+        if (titlesOnly) lines.resize(1);
+        labels.push_back({glm::vec2(0.0f), glm::vec2(1e6f), std::move(lines), kViewColors[k]});
     }
     return labels;
 }
@@ -57,25 +52,47 @@ private:
 
 }  // namespace
 
-HeadlessViewLabels::HeadlessViewLabels(glm::ivec2 size) : impl_(std::make_unique<Impl>()) {
+HeadlessViewLabels::HeadlessViewLabels(glm::ivec2 size, float uiScale) : impl_(std::make_unique<Impl>()) {
+    ImGuiContext* previous = ImGui::GetCurrentContext();
     impl_->context = ImGui::CreateContext();
+    ImGui::SetCurrentContext(previous);  // CreateContext makes it current when none is
     CurrentContext current(impl_->context);
     ImGuiIO& io = ImGui::GetIO();
     io.IniFilename = nullptr;
     io.DisplaySize = ImVec2(float(size.x), float(size.y));
     io.DisplayFramebufferScale = ImVec2(1.0f, 1.0f);
     io.DeltaTime = 1.0f / 60.0f;
-    ui::applyStyle(1.0f);
+    ui::applyStyle(uiScale);
     if (const std::string error = impl_->renderer.init(); !error.empty()) throw std::runtime_error("ImGui: " + error);
 }
 
 HeadlessViewLabels::~HeadlessViewLabels() {
-    CurrentContext current(impl_->context);
+    ImGuiContext* previous = ImGui::GetCurrentContext();
+    ImGui::SetCurrentContext(impl_->context);
     impl_->renderer.shutdown();
     ImGui::DestroyContext(impl_->context);
+    ImGui::SetCurrentContext(previous == impl_->context ? nullptr : previous);  // never a destroyed one
 }
 
-void HeadlessViewLabels::draw(const std::vector<ViewLabel>& labels) {
+float HeadlessViewLabels::width(const std::vector<ViewLabel>& labels) {
+    CurrentContext current(impl_->context);
+    impl_->renderer.newFrame();  // a frame, so that the font is built
+    ImGui::NewFrame();
+    const float width = labelsWidth(labels);
+    ImGui::EndFrame();
+    return width;
+}
+
+float HeadlessViewLabels::height(const std::vector<ViewLabel>& labels, float width) {
+    CurrentContext current(impl_->context);
+    impl_->renderer.newFrame();
+    ImGui::NewFrame();
+    const float height = labelsHeight(labels, width);
+    ImGui::EndFrame();
+    return height;
+}
+
+std::vector<glm::vec4> HeadlessViewLabels::draw(const std::vector<ViewLabel>& labels) {
     CurrentContext current(impl_->context);
     for (int layout = 0; layout < 2; ++layout) {
         impl_->renderer.newFrame();
@@ -85,6 +102,7 @@ void HeadlessViewLabels::draw(const std::vector<ViewLabel>& labels) {
         ImGui::Render();
     }
     impl_->renderer.render(ImGui::GetDrawData());
+    return ui::drawnRectangles(*ImGui::GetDrawData());
 }
 
 }  // namespace app

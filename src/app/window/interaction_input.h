@@ -7,7 +7,7 @@
 
 #include "app/views/interaction_windows.h"
 #include "app/run/session.h"
-#include "app/views/view_layout.h"
+#include "app/views/window_layout.h"
 #include "render/camera.h"
 
 namespace app {
@@ -20,6 +20,7 @@ public:
     explicit InteractionInput(Session& session) : session_(session) {}
 
     ToolWindowsState& tools() { return tools_; }
+    const ToolWindowsState& tools() const { return tools_; }
 
     // ImGui's mouse this frame (window time `now`, s). True when it was used here (a
     // grab, its drag, its release): the camera must then not move.

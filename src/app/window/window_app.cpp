@@ -18,7 +18,8 @@
 #include "app/run/scene_source.h"
 #include "app/run/session.h"
 #include "app/run/simulation.h"
-#include "app/views/view_layout.h"
+#include "app/views/view_labels.h"
+#include "app/views/window_layout.h"
 #include "platform/window.h"
 #include "render/camera.h"
 #include "render/image_io.h"
@@ -58,9 +59,11 @@ private:
     template <class Write>
     std::string writeOutput(ui::PanelState::FileButton at, const char* stem, const char* extension, const Write& write);
     void rebuildFont();
+    void togglePresentation();
     void resetCamera();
     void fitCamera();
-    ViewLayout layout() const;  // the views: right of the panel, above the timeline bar
+    void followViewShape(const ViewLayout& views);
+    WindowLayout layout() const;  // everything's place: the panel, the dock, the bars and the views
     bool saveScreenshot(const std::string& path);
 
     std::unique_ptr<platform::Window> window_;
@@ -78,6 +81,10 @@ private:
     double frameSeconds_ = 0.0;  // s, a running average of the real frame time
     bool screenshotRequested_ = false;
     bool cameraFitted_ = false;  // fitted in the first frame, once the panel's width is known
+    float screenScale_ = 1.0f;   // the screen's content scale: UI scale 1 there
+    float scaleBeforePresenting_ = 1.0f;
+    std::vector<ViewLabel> labels_;  // side by side: this frame's labels, measured for the layout
+    float viewAspect_ = 0.0f;    // of the views last frame: a change refits the camera's distance
 };
 
 WindowApp::WindowApp(std::unique_ptr<platform::Window> window, scenes::Scene scene, const WindowAppOptions& options)
@@ -118,8 +125,10 @@ WindowApp::WindowApp(std::unique_ptr<platform::Window> window, scenes::Scene sce
     ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini left in the working directory
     ImGui_ImplGlfw_InitForOpenGL(handle, true);
     imguiRenderer_.init();
-    panel_.uiScale = std::max(1.0f, window_->contentScale().x);
+    screenScale_ = std::max(1.0f, window_->contentScale().x);
+    panel_.uiScale = screenScale_;
     rebuildFont();
+    if (options.present) togglePresentation();
 }
 
 WindowApp::~WindowApp() {
@@ -134,26 +143,75 @@ void WindowApp::rebuildFont() {
     imguiRenderer_.invalidateFontTexture();
 }
 
-// The scene takes the window right of the panel and above the timeline bar, in one
-// view or two side by side (ImGui must be inside a frame).
-ViewLayout WindowApp::layout() const {
-    const float panel = ImGui::GetCurrentContext() ? ui::panelWidth(panel_, float(window_->windowSize().x)) : 0.0f;
-    const float bar = ImGui::GetCurrentContext() ? timelineBarHeight() : 0.0f;
-    return layoutViews(window_->framebufferSize(), window_->framebufferScale(), panel, bar, session_.runCount(),
-                       kViewGap);
+// Large type, the scene's text and its sliders, the view; F5 again puts back the rest.
+void WindowApp::togglePresentation() {
+    panel_.present = !panel_.present;
+    if (panel_.present) {
+        scaleBeforePresenting_ = panel_.uiScale;
+        panel_.uiScale = std::max(panel_.uiScale, ui::kPresentScale * screenScale_);
+    } else {
+        panel_.uiScale = scaleBeforePresenting_;
+    }
+    panel_.scrollToTop = true;
+    rebuildFont();
+}
+
+// The panel on the left, the bar at the bottom, the readouts' line at the top, the
+// dock for the inspector, the explainer and the unfolded readouts, and the views in
+// the rest (ImGui must be inside a frame for the sizes; before, the views take all).
+WindowLayout WindowApp::layout() const {
+    LayoutRequest q;
+    q.window = window_->windowSize();
+    q.pixelsPerUnit = window_->framebufferScale();
+    q.views = session_.runCount();
+    q.gap = kViewGap;
+    glm::vec3 lo, hi;
+    sceneBounds(simulation_, lo, hi);
+    q.boxAspect = boxAspectOnScreen(render::Camera{}, lo, hi);  // at the default angles: orbiting moves nothing
+    if (!ImGui::GetCurrentContext()) return layoutWindow(q);
+    const bool present = panel_.present;
+    const ToolWindowsState& tools = input_.tools();
+    const bool selected = session_.selected() >= 0;
+    q.font = ImGui::GetFontSize();
+    q.panelWidth = ui::panelWidth(panel_, q.window.x);
+    q.barHeight = present ? 0.0f : timelineBarHeight();
+    q.readoutsLine = present || panel_.readoutsOpen ? 0.0f : ImGui::GetFrameHeight();
+    q.readouts = !present && panel_.readoutsOpen;
+    q.inspectorHeight = selected && !present ? std::max(tools.inspectorHeight, q.font) : 0.0f;
+    q.explainer = selected && tools.explainer;
+    if (!labels_.empty()) {
+        q.labelWidth = labelsWidth(labels_);
+        q.labelHeight = [this](float width) { return labelsHeight(labels_, width); };
+    }
+    return layoutWindow(q);
 }
 
 void WindowApp::resetCamera() {
     glm::vec3 lo, hi;
     sceneBounds(simulation_, lo, hi);
-    camera_.reset(lo, hi, layout().aspect());
+    viewAspect_ = layout().views.aspect();
+    camera_.reset(lo, hi, viewAspect_);
 }
 
 // The same angles, the box fitted again (the views changed shape).
 void WindowApp::fitCamera() {
     glm::vec3 lo, hi;
     sceneBounds(simulation_, lo, hi);
-    camera_.fitBox(lo, hi, layout().aspect());
+    viewAspect_ = layout().views.aspect();
+    camera_.fitBox(lo, hi, viewAspect_);
+}
+
+// The views changed shape (a window opened in the dock, the window was resized): the
+// camera keeps its angles, target and zoom relative to the box, so that the box
+// still fits as it did.
+void WindowApp::followViewShape(const ViewLayout& views) {
+    const float aspect = views.aspect();
+    if (viewAspect_ > 0.0f && aspect != viewAspect_) {
+        glm::vec3 lo, hi;
+        sceneBounds(simulation_, lo, hi);
+        camera_.distance *= camera_.fitDistance(lo, hi, aspect) / camera_.fitDistance(lo, hi, viewAspect_);
+    }
+    viewAspect_ = aspect;
 }
 
 void WindowApp::onKey(GLFWwindow* w, int key, int, int action, int) {
@@ -175,12 +233,13 @@ void WindowApp::handleKey(int key) {
         case GLFW_KEY_R: session_.restart(); break;
         case GLFW_KEY_LEFT: session_.stepBack(); break;
         case GLFW_KEY_RIGHT: session_.stepForward(); break;
-        case GLFW_KEY_F: input_.shoot(layout(), camera_, true, window_->time()); break;
+        case GLFW_KEY_F: input_.shoot(layout().views, camera_, true, window_->time()); break;
         case GLFW_KEY_V: if (input_.toggleCompare(window_->time())) fitCamera(); break;
         case GLFW_KEY_E: input_.toggleExplainer(); break;
         case GLFW_KEY_RIGHT_BRACKET: loadPreset((panel_.presetIndex + 1) % count); break;
         case GLFW_KEY_LEFT_BRACKET: loadPreset((panel_.presetIndex + count - 1) % count); break;
         case GLFW_KEY_TAB: panel_.visible = !panel_.visible; break;
+        case GLFW_KEY_F5: togglePresentation(); break;
         case GLFW_KEY_F12: screenshotRequested_ = true; break;
         case GLFW_KEY_C: resetCamera(); break;
         case GLFW_KEY_ESCAPE: window_->requestClose(); break;
@@ -191,7 +250,7 @@ void WindowApp::handleKey(int key) {
 // Clicks, grabs and throws first (InteractionInput); then left drag orbits, right
 // drag (or shift + left drag) pans: unless ImGui has the mouse.
 void WindowApp::handleMouse() {
-    if (input_.handleMouse(layout(), camera_, window_->time())) return;
+    if (input_.handleMouse(layout().views, camera_, window_->time())) return;
     const ImGuiIO& io = ImGui::GetIO();
     if (io.WantCaptureMouse) return;
     const glm::vec2 scale = window_->framebufferScale();
@@ -297,11 +356,11 @@ void WindowApp::drawScene() {
     glViewport(0, 0, size.x, size.y);
     glClearColor(ui::kBackdropColor[0], ui::kBackdropColor[1], ui::kBackdropColor[2], 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
-    const ViewLayout views = layout();
+    const ViewLayout views = layout().views;
     for (int k = 0; k < views.count; ++k) {
         const glm::ivec4& view = views.views[k];
         buildSnapshot(session_.run(k), panel_, snapshots_[k]);
-        session_.appendSelection(k, camera_, snapshots_[k]);
+        session_.appendSelection(k, camera_, snapshots_[k], explainedPartner(session_, input_.tools()));
         renderer_.draw(snapshots_[k], camera_, view.x, view.y, view.z, view.w);
     }
     // A software GL draws after the calls return: time the drawing, not the calls. (On a
@@ -315,6 +374,11 @@ void WindowApp::frame(double dt) {
     imguiRenderer_.newFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
+    input_.tools().present = panel_.present;
+    labels_.clear();
+    if (const Comparison* comparison = session_.comparison()) {
+        labels_ = comparisonLabels(simulation_, *comparison, panel_.present);
+    }
     if (!cameraFitted_) resetCamera();
     cameraFitted_ = true;
     input_.expireMessage(window_->time());
@@ -326,18 +390,20 @@ void WindowApp::frame(double dt) {
     const std::uint64_t stepsAfter = simulation_.world().stepCount;
     timing_.stepsThisFrame = stepsAfter >= stepsBefore ? stepsAfter - stepsBefore : 0;
     timing_.steppingMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - stepping).count();
+    if (input_.takeFoldReadouts()) panel_.readoutsOpen = false;  // the views' labels carry them
+    const WindowLayout placed = layout();
+    followViewShape(placed.views);
     drawScene();
     ui::Readouts readouts = makeReadouts(simulation_, timing_);
     readouts.diagnostics = session_.diagnostics(0);  // measured again after an edit or a step back
     ui::PanelActions actions = ui::drawControlPanel(simulation_.scene(), simulation_.timeScale, readouts, panel_, presets_);
-    ui::drawReadouts(readouts, panel_, actions);
-    if (input_.takeFoldReadouts()) ImGui::SetWindowCollapsed("Readouts", true);  // the views' labels carry them
-    const float panel = ui::panelWidth(panel_, ImGui::GetMainViewport()->WorkSize.x);
-    const ToolActions tools = drawInteractionWindows(session_, layout(), panel, input_.tools());
+    const auto box = [](const Rect& r) { return glm::vec4(r.min, r.size); };
+    if (!panel_.present) ui::drawReadouts(readouts, panel_, actions, box(placed.readoutsLine), box(placed.readouts));
+    const ToolActions tools = drawInteractionWindows(session_, placed, input_.tools());
     ImGui::Render();
     imguiRenderer_.render(ImGui::GetDrawData());
     apply(actions);
-    if (input_.apply(tools, layout(), camera_, window_->time())) fitCamera();
+    if (input_.apply(tools, layout().views, camera_, window_->time())) fitCamera();
     if (const std::string note = session_.takeNote(); !note.empty()) {  // side by side stopped: one view again
         input_.say(window_->time(), "%s", note.c_str());
         fitCamera();

@@ -1,6 +1,6 @@
 #pragma once
 // `spheres [--scene FILE] [--set name=value]... [--frames N] [--screenshot FILE.png]
-//  [--compare name=value[,name=value]] [--select INDEX [--explain]]`: the interactive window.
+//  [--compare name=value[,name=value]] [--select INDEX [--explain]] [--present]`: the interactive window.
 #include <string>
 #include <vector>
 
@@ -16,6 +16,7 @@ struct WindowAppOptions {
     std::vector<std::string> compare;   // "name=value[,name=value]": start side by side
     int select = -1;                    // >= 0: start with this sphere selected (inspector open)
     bool explain = false;               // with select: open "explain this contact"
+    bool present = false;               // start in the presentation layout (F5)
 };
 
 // Returns the exit code; 2 when no window can be opened (no display).

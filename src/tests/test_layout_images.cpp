@@ -1,0 +1,118 @@
+// The classroom sizes, as images: `spheres capture --with-ui` at 1024x768 and
+// 1280x720 (projectors), 1920x1080 and a HiDPI screen at 2x, lays the frame out as the
+// window does (app/views/window_layout.h). In each, every corner of the preset's box
+// projects inside a view, no panel, label or bar was drawn over a view (ImGui's own
+// draw lists say where it drew), and the pixels at the corners show the scene: no
+// panel's dark grey there.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "app/commands/capture_command.h"
+#include "render/camera.h"
+#include "scenes/presets.h"
+#include "scenes/scene.h"
+#include "test_capture_support.h"
+
+namespace {
+
+struct Case {
+    std::string name, scene, size;
+    float uiScale = 1.0f;
+    bool present = false;
+};
+
+// An ImGui panel's pixel: its window background, a dark neutral grey (the box's edges
+// are a dark blue, the sky and the floor light, the spheres coloured).
+bool panelPixel(glm::u8vec4 p) {
+    const int hi = std::max({int(p.x), int(p.y), int(p.z)}), lo = std::min({int(p.x), int(p.y), int(p.z)});
+    return hi < 40 && hi - lo < 8;
+}
+
+// x, y, width, height from the top left.
+glm::vec4 topLeft(const nlohmann::json& view, int imageHeight) {
+    const float x = view[0], y = view[1], w = view[2], h = view[3];
+    return {x, float(imageHeight) - (y + h), w, h};
+}
+
+// Overlapping by more than ImGui's anti-aliased fringe (1 px around each shape).
+bool overlap(const glm::vec4& a, const glm::vec4& b) {
+    constexpr float kFringe = 1.5f;  // px
+    return a.x < b.x + b.z - kFringe && b.x < a.x + a.z - kFringe && a.y < b.y + b.w - kFringe &&
+           b.y < a.y + a.w - kFringe;
+}
+
+class LayoutImages : public ::testing::TestWithParam<Case> {
+  protected:
+    void SetUp() override {
+        if (const std::string why = capture_test::unavailableReason(platform::HeadlessBackend::Auto); !why.empty()) {
+            GTEST_SKIP() << "no headless GL: " << why;
+        }
+    }
+};
+
+TEST_P(LayoutImages, TheBoxIsInViewAndUncovered) {
+    const Case& c = GetParam();
+    const std::string out = capture_test::freshFolder("layout_" + c.name);
+    app::CaptureOptions options;
+    options.scene = c.scene;
+    options.out = out;
+    options.size = c.size;
+    options.at = "30";
+    options.withUi = true;
+    options.uiScale = c.uiScale;
+    options.present = c.present;
+    ASSERT_EQ(app::runCapture(options), 0);
+    const nlohmann::json manifest = capture_test::readManifest(out);
+    const render::Image image = capture_test::readFrame(out, 30);
+    const render::Camera camera = capture_test::cameraOf(manifest);
+    const scenes::Scene scene = scenes::loadScene(scenes::presetPath(c.scene));
+    ASSERT_TRUE(scene.box.has_value());
+    const glm::vec3 size(scene.box->size);
+    const nlohmann::json& views = manifest.at("layout").at("views");
+    ASSERT_GE(views.size(), 1u);
+    std::vector<glm::vec4> drawn;
+    for (const auto& box : manifest.at("layout").at("ui_drawn")) drawn.push_back({box[0], box[1], box[2], box[3]});
+    ASSERT_FALSE(drawn.empty()) << "the panel was not drawn";
+    for (std::size_t k = 0; k < views.size(); ++k) {
+        const glm::vec4 view = topLeft(views[k], image.height);
+        for (const glm::vec4& ui : drawn) {
+            EXPECT_FALSE(overlap(view, ui)) << c.name << ": something drawn at (" << ui.x << ", " << ui.y << ", " << ui.z
+                                            << ", " << ui.w << ") covers view " << k;
+        }
+        for (int corner = 0; corner < 8; ++corner) {
+            const glm::vec3 p{(corner & 1 ? 0.5f : -0.5f) * size.x, (corner & 2 ? 0.5f : -0.5f) * size.y,
+                              corner & 4 ? size.z : 0.0f};
+            const glm::vec3 pixel = camera.project(p, glm::vec2(view.z, view.w));
+            EXPECT_GE(pixel.x, 0.0f) << c.name << " view " << k << " corner " << corner;
+            EXPECT_LE(pixel.x, view.z) << c.name << " view " << k << " corner " << corner;
+            EXPECT_GE(pixel.y, 0.0f) << c.name << " view " << k << " corner " << corner;
+            EXPECT_LE(pixel.y, view.w) << c.name << " view " << k << " corner " << corner;
+            // The corner's pixels in the image: the scene, not a panel's background.
+            const int x = int(view.x + pixel.x), y = int(view.y + pixel.y);
+            int panel = 0;
+            for (int dy = -3; dy <= 3; ++dy) {
+                for (int dx = -3; dx <= 3; ++dx) {
+                    const int px = std::clamp(x + dx, 0, image.width - 1), py = std::clamp(y + dy, 0, image.height - 1);
+                    panel += panelPixel(image.pixel(px, py));
+                }
+            }
+            EXPECT_EQ(panel, 0) << c.name << " view " << k << " corner " << corner << " at " << x << ", " << y;
+        }
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    ClassroomSizes, LayoutImages,
+    ::testing::Values(Case{"pile_1024x768", "11_pile", "1024x768"}, Case{"pile_1280x720", "11_pile", "1280x720"},
+                      Case{"pile_1920x1080", "11_pile", "1920x1080"},
+                      Case{"pile_hidpi_2x", "11_pile", "2560x1440", 2.0f},
+                      Case{"column_views_1280x720", "21_shock_column", "1280x720"},
+                      Case{"bernoulli_views_1024x768", "16_bernoulli", "1024x768"},
+                      Case{"present_column_1024x768", "09_column", "1024x768", 1.0f, true},
+                      Case{"present_bernoulli_hidpi_2x", "16_bernoulli", "2560x1440", 2.0f, true}),
+    [](const ::testing::TestParamInfo<Case>& info) { return info.param.name; });
+
+}  // namespace

@@ -1,0 +1,188 @@
+// The window's layout (app/views/window_layout.h) without a window: nothing a
+// teacher opens may cover the views, the dock goes where the box stays largest, and
+// the views side by side make the grid (and label places) that keep each one largest.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "app/views/window_layout.h"
+
+namespace {
+
+using app::Rect;
+
+constexpr float kFont = 17.0f;  // ImGui units, UI scale 1
+
+bool overlap(const Rect& a, const Rect& b) {
+    return !a.empty() && !b.empty() && a.min.x < b.max().x - 0.5f && b.min.x < a.max().x - 0.5f &&
+           a.min.y < b.max().y - 0.5f && b.min.y < a.max().y - 0.5f;
+}
+
+bool inside(const Rect& inner, const Rect& outer) {
+    return inner.min.x >= outer.min.x - 0.5f && inner.min.y >= outer.min.y - 0.5f &&
+           inner.max().x <= outer.max().x + 0.5f && inner.max().y <= outer.max().y + 0.5f;
+}
+
+// The window as a teacher finds it: the panel, the bar, the readouts' line.
+app::LayoutRequest request(glm::vec2 window, float scale = 1.0f) {
+    app::LayoutRequest q;
+    q.window = window;
+    q.font = kFont * scale;
+    q.panelWidth = std::min(25.0f * q.font, 0.45f * window.x);
+    q.barHeight = 2.5f * q.font + 16.0f * scale;
+    q.readoutsLine = 1.4f * q.font;
+    return q;
+}
+
+// Every rectangle a window lays out other than the views.
+std::vector<Rect> panels(const app::WindowLayout& l) {
+    std::vector<Rect> all{l.panel, l.readoutsLine, l.timeline, l.inspector, l.explainer, l.readouts};
+    for (int k = 0; k < l.views.count; ++k) all.push_back(l.labels[k]);
+    return all;
+}
+
+void expectNothingCoversTheViews(const app::LayoutRequest& q, const std::string& what) {
+    const app::WindowLayout l = app::layoutWindow(q);
+    const Rect window{{0.0f, 0.0f}, q.window};
+    ASSERT_EQ(l.views.count, q.views) << what;
+    for (int k = 0; k < l.views.count; ++k) {
+        const Rect view = l.views.rect(k);
+        EXPECT_TRUE(inside(view, window)) << what << " view " << k;
+        EXPECT_GT(view.size.x, 50.0f) << what << " view " << k;
+        EXPECT_GT(view.size.y, 50.0f) << what << " view " << k;
+        for (const Rect& panel : panels(l)) EXPECT_FALSE(overlap(view, panel)) << what << " view " << k;
+        for (int j = 0; j < k; ++j) EXPECT_FALSE(overlap(view, l.views.rect(j))) << what << " views " << j << k;
+    }
+    for (const Rect& panel : panels(l)) EXPECT_TRUE(panel.empty() || inside(panel, window)) << what;
+    // The dock's windows lie in the dock and do not cover each other.
+    for (const Rect* w : {&l.inspector, &l.explainer, &l.readouts}) {
+        EXPECT_TRUE(w->empty() || inside(*w, l.dock)) << what;
+    }
+    EXPECT_FALSE(overlap(l.inspector, l.explainer)) << what;
+    EXPECT_FALSE(overlap(l.explainer, l.readouts)) << what;
+    EXPECT_FALSE(overlap(l.inspector, l.readouts)) << what;
+}
+
+}  // namespace
+
+// Projector sizes and a HiDPI screen, with every combination of what a teacher may
+// open: no view lies under a panel, a label, a bar or a docked window.
+TEST(WindowLayout, NothingCoversTheViewsAtAnyClassroomSize) {
+    struct Size {
+        glm::vec2 window;
+        float pixelsPerUnit;
+    };
+    const Size sizes[] = {{{1024, 768}, 1}, {{1280, 720}, 1}, {{1280, 800}, 1}, {{1920, 1080}, 1}, {{1280, 720}, 2}};
+    for (const Size& size : sizes) {
+        for (int open = 0; open < 8; ++open) {
+            for (int views = 1; views <= app::kMostViews; views += 3) {
+                app::LayoutRequest q = request(size.window);
+                q.pixelsPerUnit = glm::vec2(size.pixelsPerUnit);
+                q.inspectorHeight = (open & 1) ? 9.0f * kFont : 0.0f;
+                q.explainer = (open & 2) != 0;
+                q.readouts = (open & 4) != 0;
+                if (q.readouts) q.readoutsLine = 0.0f;
+                q.views = views;
+                q.labelWidth = 17.0f * kFont;
+                q.labelHeight = [](float width) { return 8.0f * kFont * std::max(1.0f, 17.0f * kFont / width); };
+                expectNothingCoversTheViews(q, std::to_string(int(size.window.x)) + "x" +
+                                                   std::to_string(int(size.window.y)) + " open " +
+                                                   std::to_string(open) + " views " + std::to_string(views));
+            }
+        }
+    }
+}
+
+// The readouts start as one line along the top; unfolded they take the dock.
+TEST(WindowLayout, FoldedReadoutsAreALineOnTopAndUnfoldedOnesTakeTheDock) {
+    app::LayoutRequest q = request({1280, 720});
+    const app::WindowLayout folded = app::layoutWindow(q);
+    EXPECT_EQ(folded.readoutsLine.min, glm::vec2(q.panelWidth, 0.0f));
+    EXPECT_EQ(folded.readoutsLine.size, glm::vec2(1280.0f - q.panelWidth, q.readoutsLine));
+    EXPECT_TRUE(folded.dock.empty());
+    EXPECT_EQ(folded.scene.min, glm::vec2(q.panelWidth, q.readoutsLine));
+    EXPECT_EQ(folded.scene.max(), glm::vec2(1280.0f, 720.0f - q.barHeight));
+    q.readoutsLine = 0.0f;
+    q.readouts = true;
+    const app::WindowLayout open = app::layoutWindow(q);
+    EXPECT_FALSE(open.readouts.empty());
+    EXPECT_EQ(open.readouts.size.y, open.dock.size.y);
+    EXPECT_TRUE(open.readoutsLine.empty());
+}
+
+// The explanation beside the view where the window is wide, under it where it is not:
+// whichever leaves the box larger. On a 4:3 projector a column of 32 font sizes would
+// leave the view a sliver; on a wide screen the column costs the box nothing.
+TEST(WindowLayout, TheDockGoesWhereTheBoxStaysLargest) {
+    app::LayoutRequest narrow = request({1024, 768});
+    narrow.inspectorHeight = 9.0f * kFont;
+    narrow.explainer = true;
+    const app::WindowLayout a = app::layoutWindow(narrow);
+    EXPECT_TRUE(a.dockAtBottom);
+    EXPECT_EQ(a.inspector.min, a.dock.min);                   // the inspector on the left of the strip
+    EXPECT_EQ(a.explainer.min.x, a.inspector.max().x);        // the explanation beside it
+    EXPECT_FLOAT_EQ(a.explainer.max().x, 1024.0f);
+    EXPECT_FLOAT_EQ(a.dock.max().y, 768.0f - narrow.barHeight);  // on the bar
+
+    app::LayoutRequest wide = request({1920, 1080});
+    wide.inspectorHeight = 9.0f * kFont;
+    wide.explainer = true;
+    const app::WindowLayout b = app::layoutWindow(wide);
+    EXPECT_FALSE(b.dockAtBottom);
+    EXPECT_FLOAT_EQ(b.dock.max().x, 1920.0f);
+    EXPECT_FLOAT_EQ(b.dock.size.x, app::kExplainerFonts * kFont);
+    EXPECT_EQ(b.inspector.min, b.dock.min);                   // the inspector above the explanation
+    EXPECT_FLOAT_EQ(b.inspector.size.y, 9.0f * kFont);
+    EXPECT_FLOAT_EQ(b.explainer.min.y, b.inspector.max().y);
+    EXPECT_FLOAT_EQ(b.explainer.max().y, b.dock.max().y);
+    // A tall box (the column, 0.45 as wide as high) keeps the column on the right at 1024 too.
+    narrow.boxAspect = 0.45f;
+    EXPECT_FALSE(app::layoutWindow(narrow).dockAtBottom);
+}
+
+// Three views in a row on a wide area, four in two rows with A at the top left; the
+// last column and row reach the area's edges.
+TEST(WindowLayout, ViewsMakeTheGridThatKeepsEachViewLargest) {
+    glm::ivec4 views[app::kMostViews], labels[app::kMostViews];
+    app::arrangeViews({0, 0, 1920, 600}, 3, 4, 0, {}, 1.0f, views, labels);
+    EXPECT_EQ(views[0], glm::ivec4(0, 0, 637, 600));
+    EXPECT_EQ(views[2], glm::ivec4(1282, 0, 638, 600));
+    app::arrangeViews({400, 60, 880, 740}, 4, 4, 0, {}, 1.0f, views, labels);
+    EXPECT_EQ(views[0], glm::ivec4(400, 432, 438, 368));  // top left
+    EXPECT_EQ(views[1], glm::ivec4(842, 432, 438, 368));
+    EXPECT_EQ(views[3], glm::ivec4(842, 60, 438, 368));   // bottom right
+    app::arrangeViews({400, 60, 880, 740}, 2, 4, 0, {}, 1.0f, views, labels);
+    EXPECT_EQ(views[0], glm::ivec4(400, 60, 438, 740));
+    EXPECT_EQ(views[1], glm::ivec4(842, 60, 438, 740));
+}
+
+// Labels take the room the box does not use: four views of the column (a tall box)
+// stand in one row with each label above its view; two views of a wide box lie one
+// above the other with each label beside its view. Never over it.
+TEST(WindowLayout, LabelsTakeTheRoomTheBoxDoesNotUse) {
+    glm::ivec4 views[app::kMostViews], labels[app::kMostViews];
+    // Seven lines of readouts, 300 px wide; narrower, each line wraps in two.
+    const app::LabelHeight label = [](int width) { return width >= 300 ? 160 : 320; };
+    const float tall = app::arrangeViews({0, 0, 1280, 800}, 4, 4, 300, label, 0.45f, views, labels);
+    EXPECT_EQ(labels[0], glm::ivec4(0, 640, 317, 160));  // above view A
+    EXPECT_EQ(views[0], glm::ivec4(0, 0, 317, 640));
+    EXPECT_EQ(views[3], glm::ivec4(963, 0, 317, 640));
+    EXPECT_FLOAT_EQ(tall, 640.0f);  // px: in a 2 x 2 grid the box would be 398 high
+    const float wide = app::arrangeViews({0, 0, 1280, 800}, 2, 4, 300, label, 2.0f, views, labels);
+    EXPECT_EQ(labels[0], glm::ivec4(0, 402, 300, 398));  // left of view A, at the top
+    EXPECT_EQ(views[0], glm::ivec4(300, 402, 980, 398));
+    EXPECT_EQ(views[1], glm::ivec4(300, 0, 980, 398));
+    EXPECT_FLOAT_EQ(wide, 398.0f);
+}
+
+// The box's aspect on screen: a cube seen from the default angles (from above: its
+// top shows) is about as wide as high; the column's box (1 x 1 x 2.5 m) is tall.
+TEST(WindowLayout, TheBoxAspectFollowsTheBoxAndTheAngles) {
+    const render::Camera camera;
+    const float cube = app::boxAspectOnScreen(camera, glm::vec3(-1, -1, 0), glm::vec3(1, 1, 2));
+    EXPECT_NEAR(cube, 0.93f, 0.01f);
+    const float column = app::boxAspectOnScreen(camera, glm::vec3(-0.5f, -0.5f, 0), glm::vec3(0.5f, 0.5f, 2.5f));
+    EXPECT_NEAR(column, 0.48f, 0.01f);
+}
