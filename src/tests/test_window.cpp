@@ -104,10 +104,30 @@ TEST(Window, ThePresetOfThreeAnswersOpensInThreeViews) {
         const int x = 435 + 286 * k;  // each view's floor, in the lower half of the window
         EXPECT_GT(fraction(image, x, 500, x + 260, 600, floorGrid), 0.05) << "view " << char('A' + k);
         // Under the labels the view starts with sky: no label's dark box reaches into it.
-        EXPECT_LT(fraction(image, x, 190, x + 260, 320, dark), 0.01) << "view " << char('A' + k);
+        EXPECT_LT(fraction(image, x, 220, x + 260, 320, dark), 0.01) << "view " << char('A' + k);
         // The label above it: dark, with its text.
         EXPECT_GT(fraction(image, x, 40, x + 260, 170, dark), 0.5) << "label " << char('A' + k);
     }
+}
+
+// The presentation layout from the command line: the panel holds the scene's text and
+// its sliders in large type, with no timeline bar under the view and no readouts'
+// line over it (the scene reaches the window's top and bottom edges).
+TEST(Window, ThePresentationLayoutLeavesTheViewToTheScene) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run not found: install the xvfb package to run the window tests";
+    const std::string normal = screenshot("window_column", "--scene 09_column --frames 20");
+    const std::string present = screenshot("window_present", "--scene 09_column --present --frames 20");
+    ASSERT_FALSE(normal.empty() || present.empty());
+    const render::Image a = load(normal), b = load(present);
+    // The bottom rows right of the panel: the timeline bar (dark) normally, the floor's sky in the presentation.
+    EXPECT_GT(fraction(a, 700, 770, 1270, 798, dark), 0.25);  // its slider and text are lighter
+    EXPECT_LT(fraction(b, 700, 770, 1270, 798, dark), 0.01);
+    // The top rows: the readouts' line, or the sky.
+    EXPECT_GT(fraction(a, 700, 2, 1270, 18, dark), 0.5);
+    EXPECT_LT(fraction(b, 700, 2, 1270, 18, dark), 0.01);
+    // The panel: wider (larger type), dark down to its bottom.
+    EXPECT_GT(fraction(b, 440, 300, 560, 780, dark), 0.6);
+    EXPECT_LT(fraction(a, 440, 300, 560, 780, dark), 0.1);
 }
 
 TEST(Window, FramesChangeWhileRunningAndNotWhilePaused) {

@@ -132,6 +132,39 @@ TEST(WindowInteraction, ACountThePileCannotHoldIsRefusedUnderItsSliderAndTheWind
     EXPECT_GT(fraction(image, kSceneX0 + 180, 220, 940, 480, saturated), 0.2);
 }
 
+// A teacher presses F5 on the column: the presentation layout (the panel in large type
+// is wider, the bar and the readouts' line are gone); F12's screenshot shows it and
+// F5 again brings every control back (a second screenshot).
+TEST(WindowInteraction, F5SwitchesToThePresentationLayoutAndBack) {
+    if (!haveXvfb() || !haveXdotool()) GTEST_SKIP() << "xvfb-run or xdotool not found";
+    const fs::path folder = fs::path(SPHERES_TEST_OUTPUT_DIR) / "window_present_key";
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    {
+        std::ofstream script(folder / "teacher.sh");
+        script << "'" SPHERES_EXECUTABLE "' --scene 09_column --paused & pid=$!\n"
+                  "w=$(timeout 30 xdotool search --sync --onlyvisible --name 'Rigid Spheres')\n"
+                  "xdotool windowfocus --sync $w; sleep 2; xdotool mousemove 900 400 sleep 0.5\n"
+                  "xdotool keydown F5 sleep 0.3 keyup F5 sleep 1 keydown F12 sleep 0.3 keyup F12 sleep 1\n"
+                  "xdotool keydown F5 sleep 0.3 keyup F5 sleep 1 keydown F12 sleep 0.3 keyup F12 sleep 1\n"
+                  "xdotool keydown Escape sleep 0.3 keyup Escape\n"
+                  "wait $pid\n";
+    }
+    const std::string command = "cd '" + folder.string() +
+                                "' && timeout 90 xvfb-run -a -s '-screen 0 1280x800x24' sh teacher.sh >/dev/null 2>&1";
+    const int status = std::system(command.c_str());
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 0);
+    const fs::path present = folder / "spheres_output" / "screenshot_0001.png";
+    const fs::path back = folder / "spheres_output" / "screenshot_0002.png";
+    ASSERT_TRUE(fs::exists(present) && fs::exists(back)) << "F12 wrote no screenshot";
+    const render::Image a = load(present.string()), b = load(back.string());
+    EXPECT_GT(fraction(a, 440, 300, 560, 780, dark), 0.6);  // the wider panel
+    EXPECT_LT(fraction(a, 700, 770, 1270, 798, dark), 0.01);  // no bar
+    EXPECT_LT(fraction(b, 440, 300, 560, 780, dark), 0.1);   // the panel as it was
+    EXPECT_GT(fraction(b, 700, 770, 1270, 798, dark), 0.25);  // the bar again
+}
+
 TEST(WindowInteraction, RefusedOptionsExitWithCodeTwo) {
     if (!haveXvfb()) GTEST_SKIP() << "xvfb-run not found";
     for (const char* arguments : {"--scene 03_head_on --compare bogus=1 --frames 1",

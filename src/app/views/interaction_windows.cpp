@@ -295,7 +295,7 @@ float labelsWidth(const std::vector<ViewLabel>& labels) {
     float width = 0.0f;
     for (const ViewLabel& label : labels) width = std::max(width, viewLabelSize(label).x);
     const float font = ImGui::GetFontSize();
-    return std::ceil(width / font) * font;
+    return std::ceil(width / font + 1.0f) * font;  // a font to spare: a mark's dash becomes a wider check
 }
 
 float labelsHeight(const std::vector<ViewLabel>& labels, float width) {
