@@ -89,6 +89,17 @@ TEST(WindowInteraction, SelectOpensTheInspectorAndTheExplainer) {
 
 bool haveXdotool() { return std::system("command -v xdotool >/dev/null 2>&1") == 0; }
 
+// Writes `script` (sh) into a fresh `folder` and runs it under Xvfb there (90 s at
+// most); returns std::system's status.
+int runScript(const fs::path& folder, const std::string& script) {
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    std::ofstream(folder / "session.sh") << script;
+    const std::string command = "cd '" + folder.string() +
+                                "' && timeout 90 xvfb-run -a -s '-screen 0 1280x800x24' sh session.sh >/dev/null 2>&1";
+    return std::system(command.c_str());
+}
+
 bool orange(glm::u8vec4 p) { return p.x > 200 && p.y > 120 && p.y < 190 && p.z < 110; }  // the panel's refusals
 
 // A student drags the pile's N to a count the region cannot hold (typed here, Ctrl +
@@ -101,13 +112,10 @@ bool orange(glm::u8vec4 p) { return p.x > 200 && p.y > 120 && p.y < 190 && p.z <
 TEST(WindowInteraction, ACountThePileCannotHoldIsRefusedUnderItsSliderAndTheWindowStays) {
     if (!haveXvfb() || !haveXdotool()) GTEST_SKIP() << "xvfb-run or xdotool not found";
     const fs::path folder = fs::path(SPHERES_TEST_OUTPUT_DIR) / "window_refusal";
-    fs::remove_all(folder);
-    fs::create_directories(folder);
-    {
-        std::ofstream script(folder / "student.sh");
-        // Paused: a loaded machine cannot put "behind real time" over the panel, which
-        // would move the slider down a line.
-        script << "'" SPHERES_EXECUTABLE "' --scene 11_pile --paused & pid=$!\n"
+    // Paused: a loaded machine cannot put "behind real time" over the panel, which
+    // would move the slider down a line.
+    const int status = runScript(folder,
+                  "'" SPHERES_EXECUTABLE "' --scene 11_pile --paused & pid=$!\n"
                   "w=$(timeout 30 xdotool search --sync --onlyvisible --name 'Rigid Spheres')\n"
                   "xdotool windowfocus --sync $w; sleep 3\n"
                   "xdotool mousemove 200 500 sleep 0.3 click --repeat 3 --delay 30 5 sleep 1\n"
@@ -115,11 +123,7 @@ TEST(WindowInteraction, ACountThePileCannotHoldIsRefusedUnderItsSliderAndTheWind
                   "xdotool type --delay 50 7483\n"  // type takes every argument after it as text
                   "xdotool keydown Return sleep 0.3 keyup Return sleep 0.5 mousemove 700 300 sleep 2 \\\n"
                   "  keydown F12 sleep 0.3 keyup F12 sleep 2 keydown Escape sleep 0.3 keyup Escape\n"
-                  "wait $pid\n";
-    }
-    const std::string command = "cd '" + folder.string() +
-                                "' && timeout 90 xvfb-run -a -s '-screen 0 1280x800x24' sh student.sh >/dev/null 2>&1";
-    const int status = std::system(command.c_str());
+                  "wait $pid\n");
     ASSERT_TRUE(WIFEXITED(status));
     EXPECT_EQ(WEXITSTATUS(status), 0) << "the window ended by itself, or did not end on Esc";
     const fs::path shot = folder / "spheres_output" / "screenshot_0001.png";
@@ -138,21 +142,14 @@ TEST(WindowInteraction, ACountThePileCannotHoldIsRefusedUnderItsSliderAndTheWind
 TEST(WindowInteraction, F5SwitchesToThePresentationLayoutAndBack) {
     if (!haveXvfb() || !haveXdotool()) GTEST_SKIP() << "xvfb-run or xdotool not found";
     const fs::path folder = fs::path(SPHERES_TEST_OUTPUT_DIR) / "window_present_key";
-    fs::remove_all(folder);
-    fs::create_directories(folder);
-    {
-        std::ofstream script(folder / "teacher.sh");
-        script << "'" SPHERES_EXECUTABLE "' --scene 09_column --paused & pid=$!\n"
+    const int status = runScript(folder,
+                  "'" SPHERES_EXECUTABLE "' --scene 09_column --paused & pid=$!\n"
                   "w=$(timeout 30 xdotool search --sync --onlyvisible --name 'Rigid Spheres')\n"
                   "xdotool windowfocus --sync $w; sleep 2; xdotool mousemove 900 400 sleep 0.5\n"
                   "xdotool keydown F5 sleep 0.3 keyup F5 sleep 1 keydown F12 sleep 0.3 keyup F12 sleep 1\n"
                   "xdotool keydown F5 sleep 0.3 keyup F5 sleep 1 keydown F12 sleep 0.3 keyup F12 sleep 1\n"
                   "xdotool keydown Escape sleep 0.3 keyup Escape\n"
-                  "wait $pid\n";
-    }
-    const std::string command = "cd '" + folder.string() +
-                                "' && timeout 90 xvfb-run -a -s '-screen 0 1280x800x24' sh teacher.sh >/dev/null 2>&1";
-    const int status = std::system(command.c_str());
+                  "wait $pid\n");
     ASSERT_TRUE(WIFEXITED(status));
     EXPECT_EQ(WEXITSTATUS(status), 0);
     const fs::path present = folder / "spheres_output" / "screenshot_0001.png";
