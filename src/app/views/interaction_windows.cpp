@@ -200,10 +200,18 @@ float drawInspector(const Placement& placement, const physics::World& world, int
     } else if (graphLevel == -1) {
         ImGui::TextUnformatted("contact graph: no level (reaches no plane)");
     }
-    if (!paused) ImGui::TextDisabled("pause (P) to edit; Ctrl + drag to throw");
+    if (!paused) {  // wrapped: the dock may be narrow
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+        ui::textWrappedAtSpaces("pause (P) to edit; Ctrl + drag to throw");
+        ImGui::PopStyleColor();
+    }
     if (ImGui::Button(state.explainer ? "Hide explanation (E)" : "Explain contacts (E)")) actions.toggleExplainer = true;
     tooltip("The slides' formulas with the numbers of this sphere's latest contacts.");
-    ImGui::SameLine();
+    const ImGuiStyle& style = ImGui::GetStyle();
+    if (ImGui::CalcTextSize("Deselect").x + 2.0f * style.FramePadding.x + style.ItemSpacing.x <
+        ImGui::GetContentRegionAvail().x - ImGui::GetItemRectSize().x) {
+        ImGui::SameLine();  // beside it where it fits (a narrow dock: under it)
+    }
     if (ImGui::Button("Deselect")) actions.deselect = true;
     // Its content's height, whatever room it had: the layout keeps that much from the next frame on.
     const float height = ImGui::GetCursorPosY() - ImGui::GetStyle().ItemSpacing.y + ImGui::GetStyle().WindowPadding.y;
