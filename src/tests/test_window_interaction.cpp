@@ -138,7 +138,8 @@ TEST(WindowInteraction, ACountThePileCannotHoldIsRefusedUnderItsSliderAndTheWind
 
 // A teacher presses F5 on the column: the presentation layout (the panel in large type
 // is wider, the bar and the readouts' line are gone); F12's screenshot shows it and
-// F5 again brings every control back (a second screenshot).
+// F5 again brings every control back (a second screenshot); a click on the readouts'
+// arrow unfolds them into the dock (a third).
 TEST(WindowInteraction, F5SwitchesToThePresentationLayoutAndBack) {
     if (!haveXvfb() || !haveXdotool()) GTEST_SKIP() << "xvfb-run or xdotool not found";
     const fs::path folder = fs::path(SPHERES_TEST_OUTPUT_DIR) / "window_present_key";
@@ -148,6 +149,9 @@ TEST(WindowInteraction, F5SwitchesToThePresentationLayoutAndBack) {
                   "xdotool windowfocus --sync $w; sleep 2; xdotool mousemove 900 400 sleep 0.5\n"
                   "xdotool keydown F5 sleep 0.3 keyup F5 sleep 1 keydown F12 sleep 0.3 keyup F12 sleep 1\n"
                   "xdotool keydown F5 sleep 0.3 keyup F5 sleep 1 keydown F12 sleep 0.3 keyup F12 sleep 1\n"
+                  // The readouts' arrow, at the top left of the view: they unfold into the dock.
+                  "xdotool mousemove 438 11 sleep 0.3 click 1 sleep 1 mousemove 900 400 sleep 0.3\n"
+                  "xdotool keydown F12 sleep 0.3 keyup F12 sleep 1\n"
                   "xdotool keydown Escape sleep 0.3 keyup Escape\n"
                   "wait $pid\n");
     ASSERT_TRUE(WIFEXITED(status));
@@ -160,6 +164,11 @@ TEST(WindowInteraction, F5SwitchesToThePresentationLayoutAndBack) {
     EXPECT_LT(fraction(a, 700, 770, 1270, 798, dark), 0.01);  // no bar
     EXPECT_LT(fraction(b, 440, 300, 560, 780, dark), 0.1);   // the panel as it was
     EXPECT_GT(fraction(b, 700, 770, 1270, 798, dark), 0.25);  // the bar again
+    // A click on the readouts' arrow: their numbers fill a column on the right (the dock).
+    const fs::path unfolded = folder / "spheres_output" / "screenshot_0003.png";
+    ASSERT_TRUE(fs::exists(unfolded));
+    EXPECT_LT(fraction(b, 1000, 100, 1270, 700, notSky), 0.3);
+    EXPECT_GT(fraction(load(unfolded.string()), 1000, 100, 1270, 700, notSky), 0.8);
 }
 
 TEST(WindowInteraction, RefusedOptionsExitWithCodeTwo) {

@@ -466,7 +466,7 @@ void drawReadouts(const Readouts& readouts, PanelState& state, PanelActions& act
     ImGui::SetNextWindowSize(ImVec2(at.z, std::max(at.w, ImGui::GetFrameHeight())), ImGuiCond_Always);
     ImGui::SetNextWindowCollapsed(!state.readoutsOpen, ImGuiCond_Always);
     ImGui::SetNextWindowBgAlpha(0.92f);
-    ImGui::Begin(readoutsTitle(readouts).c_str(), nullptr,
+    ImGui::Begin(state.readoutsOpen ? "Readouts###Readouts" : readoutsTitle(readouts).c_str(), nullptr,
                  ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoSavedSettings);
     const bool unfolded = !ImGui::IsWindowCollapsed();  // the arrow was clicked: laid out so from the next frame
     if (unfolded) readoutsBody(readouts, state, actions);
