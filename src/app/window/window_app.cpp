@@ -1,10 +1,12 @@
 #include "app/window/window_app.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <ctime>
 #include <memory>
+#include <vector>
 
 #include <glad/gl.h>
 #include <GLFW/glfw3.h>
@@ -38,6 +40,57 @@ constexpr int kViewGap = 4;  // px between the two views side by side
 // s of wall time a frame may spend stepping: beyond it a heavy scene runs in slow
 // motion ("behind real time") and the window stays responsive.
 constexpr double kStepBudgetSeconds = 1.0 / 30.0;
+
+// --frames N: where each frame's wall time went, printed as one line at the end. The
+// first frame (start-up: shaders, the font atlas) is left out.
+class FrameProfile {
+public:
+    enum Part { Events, Stepping, Draw, Layout, UiRender, Other, Present, kParts };
+
+    void begin() { last_ = std::chrono::steady_clock::now(); }
+    // The time since the last lap() or begin() goes to `part`.
+    void lap(Part part) {
+        const auto now = std::chrono::steady_clock::now();
+        current_[part] += std::chrono::duration<double, std::milli>(now - last_).count();
+        last_ = now;
+    }
+    void endFrame(bool keep) {
+        if (keep) frames_.push_back(current_);
+        current_ = {};
+    }
+    void print(int frames, double seconds) const {
+        std::vector<double> total;
+        for (const Parts& f : frames_) {
+            double sum = 0.0;
+            for (double ms : f) sum += ms;
+            total.push_back(sum);
+        }
+        const int timed = static_cast<int>(frames_.size());
+        std::printf("spheres: %d frames; the last %d in %.2f s: %.1f frames per second (median frame %.1f ms; "
+                    "events %.1f, stepping %.1f, draw %.1f, UI layout %.1f, UI render %.1f, other %.1f, present %.1f ms)\n",
+                    frames, timed, seconds, seconds > 0.0 ? timed / seconds : 0.0, median(total),
+                    medianOf(Events), medianOf(Stepping), medianOf(Draw), medianOf(Layout), medianOf(UiRender),
+                    medianOf(Other), medianOf(Present));
+        std::fflush(stdout);
+    }
+
+private:
+    using Parts = std::array<double, kParts>;
+    static double median(std::vector<double> values) {
+        if (values.empty()) return 0.0;
+        const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
+        std::nth_element(values.begin(), middle, values.end());
+        return *middle;
+    }
+    double medianOf(Part part) const {
+        std::vector<double> values;
+        for (const Parts& f : frames_) values.push_back(f[part]);
+        return median(values);
+    }
+    std::chrono::steady_clock::time_point last_;
+    Parts current_{};
+    std::vector<Parts> frames_;
+};
 
 class WindowApp {
 public:
@@ -85,6 +138,7 @@ private:
     float scaleBeforePresenting_ = 1.0f;
     std::vector<ViewLabel> labels_;  // side by side: this frame's labels, measured for the layout
     float viewAspect_ = 0.0f;    // of the views last frame: a change refits the camera's distance
+    FrameProfile profile_;       // --frames N only
 };
 
 WindowApp::WindowApp(std::unique_ptr<platform::Window> window, scenes::Scene scene, const WindowAppOptions& options)
@@ -384,16 +438,19 @@ void WindowApp::frame(double dt) {
     input_.expireMessage(window_->time());
     handleMouse();
     session_.setCatchEveryStep(input_.tools().explainer);
+    profile_.lap(FrameProfile::Events);
     const auto stepping = std::chrono::steady_clock::now();
     const std::uint64_t stepsBefore = simulation_.world().stepCount;
     session_.advance(dt);
     const std::uint64_t stepsAfter = simulation_.world().stepCount;
     timing_.stepsThisFrame = stepsAfter >= stepsBefore ? stepsAfter - stepsBefore : 0;
     timing_.steppingMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - stepping).count();
+    profile_.lap(FrameProfile::Stepping);
     if (input_.takeFoldReadouts()) panel_.readoutsOpen = false;  // the views' labels carry them
     const WindowLayout placed = layout();
     followViewShape(placed.views);
     drawScene();
+    profile_.lap(FrameProfile::Draw);
     ui::Readouts readouts = makeReadouts(simulation_, timing_);
     readouts.diagnostics = session_.diagnostics(0);  // measured again after an edit or a step back
     ui::PanelActions actions = ui::drawControlPanel(simulation_.scene(), simulation_.timeScale, readouts, panel_, presets_);
@@ -401,7 +458,10 @@ void WindowApp::frame(double dt) {
     if (!panel_.present) ui::drawReadouts(readouts, panel_, actions, box(placed.readoutsLine), box(placed.readouts));
     const ToolActions tools = drawInteractionWindows(session_, placed, input_.tools());
     ImGui::Render();
+    profile_.lap(FrameProfile::Layout);
     imguiRenderer_.render(ImGui::GetDrawData());
+    if (options_.frames > 0) glFinish();  // measured: the UI's drawing, not only its calls
+    profile_.lap(FrameProfile::UiRender);
     apply(actions);
     if (input_.apply(tools, layout().views, camera_, window_->time())) fitCamera();
     if (const std::string note = session_.takeNote(); !note.empty()) {  // side by side stopped: one view again
@@ -429,7 +489,11 @@ int WindowApp::run() {
         return 1;
     }
     double last = window_->time();
+    auto timedFrom = std::chrono::steady_clock::now();
+    int drawn = 0;
     for (int frames = 0; !window_->shouldClose(); ++frames) {
+        if (frames == 1) timedFrom = std::chrono::steady_clock::now();
+        profile_.begin();
         const double now = window_->time();
         const double dt = std::min(now - last, 0.25);  // s; a stall (dragging the window) is not simulated
         // Averaged in time, not in rate, so one near-instant first frame cannot inflate it.
@@ -442,8 +506,16 @@ int WindowApp::run() {
             std::fprintf(stderr, "spheres: --screenshot %s: cannot write the file\n", options_.screenshot.c_str());
             return 1;
         }
+        profile_.lap(FrameProfile::Other);
         window_->swapBuffers();
+        profile_.lap(FrameProfile::Present);
+        profile_.endFrame(options_.frames > 0 && frames > 0);
+        ++drawn;
         if (lastFrame) break;
+    }
+    if (options_.frames > 0) {
+        const std::chrono::duration<double> timed = std::chrono::steady_clock::now() - timedFrom;
+        profile_.print(drawn, timed.count());
     }
     return 0;
 }
