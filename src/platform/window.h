@@ -14,7 +14,9 @@ struct WindowOptions {
     int height = 720;  // screen coordinates
     std::string title = "Rigid Spheres";
     bool vsync = true;
-    int samples = 4;  // MSAA samples of the default framebuffer, 0 for none
+    // MSAA samples of the default framebuffer, 0 for none: the app draws its views
+    // multisampled offscreen and the panel needs none.
+    int samples = 0;
 };
 
 // One window per process: it initialises GLFW and terminates it when destroyed.

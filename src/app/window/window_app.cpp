@@ -40,6 +40,9 @@ constexpr int kViewGap = 4;  // px between the two views side by side
 // s of wall time a frame may spend stepping: beyond it a heavy scene runs in slow
 // motion ("behind real time") and the window stays responsive.
 constexpr double kStepBudgetSeconds = 1.0 / 30.0;
+// MSAA samples of the views' offscreen target (the window itself has none: the panel
+// needs none, and a software GL resolves every pixel of a multisampled window).
+constexpr int kSceneSamples = 4;
 
 // --frames N: where each frame's wall time went, printed as one line at the end. The
 // first frame (start-up: shaders, the font atlas) is left out.
@@ -105,6 +108,7 @@ private:
     void handleMouse();
     void frame(double dt);
     void drawScene();
+    void drawView(const render::FrameSnapshot& snapshot, const glm::ivec4& view);
     void apply(const ui::PanelActions& actions);
     void loadPreset(int index);
     void loadFile(const std::string& path);
@@ -126,6 +130,8 @@ private:
     render::Renderer renderer_;
     render::Camera camera_;
     render::FrameSnapshot snapshots_[kMostViews];  // one per view
+    render::OffscreenTarget sceneTarget_;          // a view is drawn here, then copied into the window
+    bool drawIntoWindow_ = false;                  // sceneTarget_ could not be made
     ui::ImGuiGlRenderer imguiRenderer_;
     ui::PanelState panel_;
     InteractionInput input_;
@@ -415,12 +421,32 @@ void WindowApp::drawScene() {
         const glm::ivec4& view = views.views[k];
         buildSnapshot(session_.run(k), panel_, snapshots_[k]);
         session_.appendSelection(k, camera_, snapshots_[k], explainedPartner(session_, input_.tools()));
-        renderer_.draw(snapshots_[k], camera_, view.x, view.y, view.z, view.w);
+        drawView(snapshots_[k], view);
     }
     // A software GL draws after the calls return: time the drawing, not the calls. (On a
     // GPU this costs the overlap of one frame's GL work with the next one's CPU work.)
     glFinish();
     timing_.drawMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Multisampled, as big as the view, then resolved into the window; straight into the
+// window when no such target can be made.
+void WindowApp::drawView(const render::FrameSnapshot& snapshot, const glm::ivec4& view) {
+    if (view.z <= 0 || view.w <= 0) return;
+    if (!drawIntoWindow_ && (sceneTarget_.width() != view.z || sceneTarget_.height() != view.w)) {
+        if (const std::string error = sceneTarget_.resize(view.z, view.w, kSceneSamples); !error.empty()) {
+            std::fprintf(stderr, "spheres: %s; the views are drawn without anti-aliasing\n", error.c_str());
+            drawIntoWindow_ = true;
+        }
+    }
+    if (drawIntoWindow_) {
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        renderer_.draw(snapshot, camera_, view.x, view.y, view.z, view.w);
+        return;
+    }
+    sceneTarget_.bind();
+    renderer_.draw(snapshot, camera_, 0, 0, view.z, view.w);
+    sceneTarget_.copyTo(0, view.x, view.y);
 }
 
 void WindowApp::frame(double dt) {
