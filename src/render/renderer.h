@@ -51,6 +51,16 @@ class Renderer {
     void draw(const FrameSnapshot& snapshot, const Camera& camera, int x, int y, int width,
               int height);
 
+    // The part of a width x height view that draw() may paint with more than the
+    // background: (x, y, width, height) in pixels from the view's lower-left corner.
+    // The whole view when something is near or behind the eye; width or height 0
+    // when only the background shows. Drawing the view with its viewport moved by
+    // (-x, -y) into a target of this size gives these pixels of the view.
+    glm::ivec4 contentRect(const FrameSnapshot& snapshot, const Camera& camera, int width,
+                           int height) const;
+    // Paints only the background gradient into a viewport, as draw() does first.
+    void drawBackground(int x, int y, int width, int height);
+
     RenderStyle style;
 
     // Leave out the spheres no pixel can show: the same image, drawn faster by a

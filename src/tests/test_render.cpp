@@ -519,6 +519,69 @@ TEST_P(Headless, MultisampledTargetResolvesSmoothSphereEdges) {
     EXPECT_EQ(blended, 2) << "one blended pixel at each edge";
 }
 
+// The window draws only a view's content rectangle multisampled (with the viewport
+// moved) and the rest as background: together they must make the same image.
+TEST_P(Headless, AViewIsItsBackgroundOutsideItsContentRectAndTheSameInside) {
+    render::FrameSnapshot snapshot = boxSnapshot();
+    snapshot.addSphere({0.3f, 0.2f, 0.4f}, 0.25f, kRed);
+    snapshot.addSphere({-0.7f, -0.5f, 1.9f}, 0.1f, kBlue);
+    snapshot.addLine({0.0f, 0.0f, 1.0f}, {0.0f, 0.0f, 2.6f}, {255, 0, 255, 255}, 6.0f);  // out of the box
+    snapshot.addPoint({1.0f, -1.0f, 0.0f}, {0, 255, 0, 255}, 16.0f);
+    render::Camera camera;
+    camera.target = {0.0f, 0.0f, 1.0f};
+    camera.distance = 9.0f;
+    const int width = 240, height = 180, samples = 4;
+    render::Renderer renderer;
+    ASSERT_EQ(renderer.init(), "");
+    render::OffscreenTarget target;
+    ASSERT_EQ(target.resize(width, height, samples), "");
+    renderer.draw(snapshot, camera, 0, 0, width, height);
+    const render::Image whole = target.read();
+    renderer.drawBackground(0, 0, width, height);
+    const render::Image background = target.read();
+    renderer.draw(render::FrameSnapshot{}, camera, 0, 0, width, height);
+    const render::Image empty = target.read();
+    EXPECT_EQ(background.rgba, empty.rgba) << "drawBackground paints what draw() paints first";
+
+    const glm::ivec4 rect = renderer.contentRect(snapshot, camera, width, height);
+    ASSERT_GT(rect.z, 0);
+    ASSERT_GT(rect.w, 0);
+    EXPECT_LT(rect.z * rect.w, width * height / 2) << "the box far away covers a small part";
+    const auto inside = [&](int x, int yDown) {
+        const int y = height - 1 - yDown;
+        return x >= rect.x && x < rect.x + rect.z && y >= rect.y && y < rect.y + rect.w;
+    };
+    int outsideChanged = 0, insideChanged = 0;
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+            if (channelSpread(whole.pixel(x, y), background.pixel(x, y)) == 0) continue;
+            ++(inside(x, y) ? insideChanged : outsideChanged);
+        }
+    }
+    EXPECT_GT(insideChanged, 1000);
+    EXPECT_EQ(outsideChanged, 0);
+
+    // From even pixels: the shader's derivatives (the edges' anti-aliasing) come from
+    // blocks of 2 x 2 pixels, aligned on the target.
+    const glm::ivec4 even(rect.x / 2 * 2, rect.y / 2 * 2, rect.z + rect.x % 2, rect.w + rect.y % 2);
+    ASSERT_EQ(target.resize(even.z, even.w, samples), "");
+    renderer.draw(snapshot, camera, -even.x, -even.y, width, height);
+    const render::Image part = target.read();
+    int differ = 0;
+    for (int y = 0; y < even.w; ++y) {
+        for (int x = 0; x < even.z; ++x) {
+            const int yDown = height - even.y - even.w + y;
+            if (channelSpread(part.pixel(x, y), whole.pixel(even.x + x, yDown)) > 2) ++differ;
+        }
+    }
+    EXPECT_EQ(differ, 0);
+
+    EXPECT_EQ(renderer.contentRect(render::FrameSnapshot{}, camera, width, height), glm::ivec4(0));
+    camera.distance = 0.5f;  // the eye inside the box: all of the view
+    EXPECT_EQ(renderer.contentRect(snapshot, camera, width, height), glm::ivec4(0, 0, width, height));
+    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+}
+
 // Renders one ImGui frame with a window at (20, 30) of size 100 x 80 (ImGui
 // units) whose background is orange, into a target scaled by framebufferScale.
 render::Image renderImGuiWindow(float framebufferScale, bool checkState) {

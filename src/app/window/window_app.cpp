@@ -44,6 +44,21 @@ constexpr double kStepBudgetSeconds = 1.0 / 30.0;
 // needs none, and a software GL resolves every pixel of a multisampled window).
 constexpr int kSceneSamples = 4;
 
+// Only the part of a view with more than the background is drawn multisampled (the
+// resolve costs per pixel on a software GL), into a target of its size rounded out to
+// this grid, in px: the target is made again only when the content crosses a line of it,
+// and the part starts on even pixels of the view as the shaders' 2 x 2 blocks do.
+constexpr int kContentGrid = 64;
+
+glm::ivec4 roundOutToGrid(const glm::ivec4& rect, int width, int height) {
+    if (rect.z <= 0 || rect.w <= 0) return glm::ivec4(0);
+    const int x0 = rect.x / kContentGrid * kContentGrid;
+    const int y0 = rect.y / kContentGrid * kContentGrid;
+    const int x1 = std::min((rect.x + rect.z + kContentGrid - 1) / kContentGrid * kContentGrid, width);
+    const int y1 = std::min((rect.y + rect.w + kContentGrid - 1) / kContentGrid * kContentGrid, height);
+    return glm::ivec4(x0, y0, x1 - x0, y1 - y0);
+}
+
 // --frames N: where each frame's wall time went, printed as one line at the end. The
 // first frame (start-up: shaders, the font atlas) is left out.
 class FrameProfile {
@@ -108,7 +123,7 @@ private:
     void handleMouse();
     void frame(double dt);
     void drawScene();
-    void drawView(const render::FrameSnapshot& snapshot, const glm::ivec4& view);
+    void drawView(int k, const glm::ivec4& view);
     void apply(const ui::PanelActions& actions);
     void loadPreset(int index);
     void loadFile(const std::string& path);
@@ -130,8 +145,8 @@ private:
     render::Renderer renderer_;
     render::Camera camera_;
     render::FrameSnapshot snapshots_[kMostViews];  // one per view
-    render::OffscreenTarget sceneTarget_;          // a view is drawn here, then copied into the window
-    bool drawIntoWindow_ = false;                  // sceneTarget_ could not be made
+    render::OffscreenTarget sceneTargets_[kMostViews];  // a view's content, multisampled
+    bool drawIntoWindow_ = false;                       // such a target could not be made
     ui::ImGuiGlRenderer imguiRenderer_;
     ui::PanelState panel_;
     InteractionInput input_;
@@ -421,7 +436,7 @@ void WindowApp::drawScene() {
         const glm::ivec4& view = views.views[k];
         buildSnapshot(session_.run(k), panel_, snapshots_[k]);
         session_.appendSelection(k, camera_, snapshots_[k], explainedPartner(session_, input_.tools()));
-        drawView(snapshots_[k], view);
+        drawView(k, view);
     }
     // A software GL draws after the calls return: time the drawing, not the calls. (On a
     // GPU this costs the overlap of one frame's GL work with the next one's CPU work.)
@@ -429,24 +444,33 @@ void WindowApp::drawScene() {
     timing_.drawMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
-// Multisampled, as big as the view, then resolved into the window; straight into the
-// window when no such target can be made.
-void WindowApp::drawView(const render::FrameSnapshot& snapshot, const glm::ivec4& view) {
+// The background straight into the window; what covers it into the view's multisampled
+// target, then resolved into the window. All of it straight into the window when no such
+// target can be made.
+void WindowApp::drawView(int k, const glm::ivec4& view) {
+    const render::FrameSnapshot& snapshot = snapshots_[k];
     if (view.z <= 0 || view.w <= 0) return;
-    if (!drawIntoWindow_ && (sceneTarget_.width() != view.z || sceneTarget_.height() != view.w)) {
-        if (const std::string error = sceneTarget_.resize(view.z, view.w, kSceneSamples); !error.empty()) {
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    const glm::ivec4 content = drawIntoWindow_ ? glm::ivec4(0)
+        : roundOutToGrid(renderer_.contentRect(snapshot, camera_, view.z, view.w), view.z, view.w);
+    render::OffscreenTarget& target = sceneTargets_[k];
+    if (!drawIntoWindow_ && content.z > 0 && content.w > 0 &&
+        (target.width() != content.z || target.height() != content.w)) {
+        if (const std::string error = target.resize(content.z, content.w, kSceneSamples); !error.empty()) {
             std::fprintf(stderr, "spheres: %s; the views are drawn without anti-aliasing\n", error.c_str());
             drawIntoWindow_ = true;
+            glBindFramebuffer(GL_FRAMEBUFFER, 0);
         }
     }
     if (drawIntoWindow_) {
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
         renderer_.draw(snapshot, camera_, view.x, view.y, view.z, view.w);
         return;
     }
-    sceneTarget_.bind();
-    renderer_.draw(snapshot, camera_, 0, 0, view.z, view.w);
-    sceneTarget_.copyTo(0, view.x, view.y);
+    if (content.z < view.z || content.w < view.w) renderer_.drawBackground(view.x, view.y, view.z, view.w);
+    if (content.z <= 0 || content.w <= 0) return;
+    target.bind();
+    renderer_.draw(snapshot, camera_, -content.x, -content.y, view.z, view.w);
+    target.copyTo(0, view.x + content.x, view.y + content.y);
 }
 
 void WindowApp::frame(double dt) {
