@@ -138,10 +138,12 @@ bool HiddenSphereFinder::coversAPixel(const Cover& cover) const {
     return false;
 }
 
-// nearestCover_ on rows [firstRow, endRow): the nearest of the covers there.
+// nearestCover_ on rows [firstRow, endRow) within box_: the nearest of the covers there.
 void HiddenSphereFinder::coverRows(int firstRow, int endRow) {
-    std::fill(nearestCover_.begin() + std::ptrdiff_t(firstRow) * width_,
-              nearestCover_.begin() + std::ptrdiff_t(endRow) * width_, INFINITY);
+    for (int y = firstRow; y < endRow; ++y) {
+        const auto row = nearestCover_.begin() + std::ptrdiff_t(y) * width_;
+        std::fill(row + box_.x0, row + box_.x1, INFINITY);
+    }
     for (const std::vector<Cover>& covers : covers_) {
         for (const Cover& cover : covers) {
             const int end = std::min(cover.endRow, endRow);
@@ -171,6 +173,8 @@ bool HiddenSphereFinder::behindCover(const ViewSphere& sphere, float edgeMarginP
     for (int y = rows.first; y < rows.end; ++y) {
         const float* row = &nearestCover_[std::size_t(y) * std::size_t(width_)];
         const Span span = rowSpan(y, disc.center, disc.outside, width_);
+        if (span.first >= span.end) continue;
+        if (y < box_.y0 || y >= box_.y1 || span.first < box_.x0 || span.end > box_.x1) return false;  // +infinity
         for (int x = span.first; x < span.end; ++x) {
             if (!(row[x] < nearest)) return false;
         }
@@ -180,12 +184,25 @@ bool HiddenSphereFinder::behindCover(const ViewSphere& sphere, float edgeMarginP
 
 // Tiles of kTile x kTile pixels: the farthest cover of each, so that most hidden
 // spheres are found hidden by the few tiles under them, without their pixels.
-// Rows of tiles [firstTileRow, endTileRow); farthestCover_ starts at 0.
+// Rows of tiles [firstTileRow, endTileRow); farthestCover_ starts at 0. A tile with
+// a pixel outside box_ holds +infinity.
 void HiddenSphereFinder::findFarthestCoverOfTiles(int firstTileRow, int endTileRow) {
-    for (int y = firstTileRow * kTile; y < std::min(endTileRow * kTile, height_); ++y) {
-        const float* row = &nearestCover_[std::size_t(y) * std::size_t(width_)];
-        float* tiles = &farthestCover_[std::size_t(y / kTile) * std::size_t(tilesX_)];
-        for (int x = 0; x < width_; ++x) tiles[x / kTile] = std::max(tiles[x / kTile], row[x]);
+    const int firstColumn = (box_.x0 + kTile - 1) / kTile;  // tiles inside box_, columns
+    const int endColumn = std::max(firstColumn, box_.x1 == width_ ? tilesX_ : box_.x1 / kTile);
+    for (int ty = firstTileRow; ty < endTileRow; ++ty) {
+        float* tiles = &farthestCover_[std::size_t(ty) * std::size_t(tilesX_)];
+        const int y0 = ty * kTile, y1 = std::min(y0 + kTile, height_);
+        const bool inside = y0 >= box_.y0 && y1 <= box_.y1;
+        for (int tx = 0; tx < tilesX_; ++tx) {
+            if (!inside || tx < firstColumn || tx >= endColumn) tiles[tx] = INFINITY;
+        }
+        if (!inside) continue;
+        for (int y = y0; y < y1; ++y) {
+            const float* row = &nearestCover_[std::size_t(y) * std::size_t(width_)];
+            for (int x = firstColumn * kTile; x < std::min(endColumn * kTile, width_); ++x) {
+                tiles[x / kTile] = std::max(tiles[x / kTile], row[x]);
+            }
+        }
     }
 }
 
@@ -238,9 +255,19 @@ void HiddenSphereFinder::find(std::vector<ViewSphere>& spheres, const FrameConte
     // Spheres too small on the screen to cover a pixel whole (a million under MSAA):
     // few could be hidden, and testing them all would cost more than it saves.
     if (findCovers(spheres, frame, margin, threads) < spheres.size() / kFewestCovering) return;
+    box_ = Box{width_, 0, height_, 0};
+    for (const std::vector<Cover>& covers : covers_) {
+        for (const Cover& cover : covers) {
+            const Span columns = pixelsBetween(cover.disc.center.x - cover.disc.inside,
+                                               cover.disc.center.x + cover.disc.inside, width_);
+            box_ = Box{std::min(box_.x0, columns.first), std::max(box_.x1, columns.end),
+                       std::min(box_.y0, cover.firstRow), std::max(box_.y1, cover.endRow)};
+        }
+    }
+    if (box_.x0 >= box_.x1 || box_.y0 >= box_.y1) box_ = Box{};
     nearestCover_.resize(std::size_t(width_) * std::size_t(height_));
-    forEachRange(threads, std::size_t(height_), [&](int, std::size_t begin, std::size_t end) {
-        coverRows(int(begin), int(end));
+    forEachRange(threads, std::size_t(box_.y1 - box_.y0), [&](int, std::size_t begin, std::size_t end) {
+        coverRows(box_.y0 + int(begin), box_.y0 + int(end));
     });
     tilesX_ = (width_ + kTile - 1) / kTile;
     tilesY_ = (height_ + kTile - 1) / kTile;

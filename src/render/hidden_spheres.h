@@ -70,6 +70,11 @@ class HiddenSphereFinder {
     bool tilesBehindCover(const Disc& disc, float nearest) const;
 
     int width_ = 0, height_ = 0;  // px, the viewport
+    // Pixels [x0, x1) x [y0, y1) that some cover reaches: outside, nearestCover_ is not
+    // written and stands for +infinity (a few spheres cost as few pixels).
+    struct Box {
+        int x0 = 0, x1 = 0, y0 = 0, y1 = 0;
+    } box_;
     std::vector<std::vector<Cover>> covers_;  // per range of spheres: those that cover a pixel
     // Per pixel (row 0 at the bottom): the distance from the eye along the pixel's ray
     // (m) in front of which some sphere covers the whole pixel; +infinity where none does.
