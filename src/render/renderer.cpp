@@ -203,15 +203,25 @@ glm::ivec4 Renderer::contentRect(const FrameSnapshot& snapshot, const Camera& ca
     return glm::ivec4(glm::ivec2(from), glm::ivec2(to - from));
 }
 
-void Renderer::drawBackground(int x, int y, int width, int height) {
+void Renderer::drawBackground(int x, int y, int width, int height, const glm::ivec4& except) {
     if (!passes_ || width <= 0 || height <= 0) return;
     FrameContext frame;
     frame.viewport = glm::vec4(x, y, width, height);
     frame.style = &style;
     glViewport(x, y, width, height);
     glEnable(GL_SCISSOR_TEST);
-    glScissor(x, y, width, height);
-    passes_->background.draw(frame);
+    // Below and above the part left out, then left and right of it (all of the
+    // viewport when that part is empty).
+    const int top = except.y + except.w, right = except.x + except.z;
+    const glm::ivec4 around[] = {{0, 0, width, except.y},
+                                 {0, top, width, height - top},
+                                 {0, except.y, except.x, except.w},
+                                 {right, except.y, width - right, except.w}};
+    for (const glm::ivec4& part : around) {
+        if (part.z <= 0 || part.w <= 0) continue;
+        glScissor(x + part.x, y + part.y, part.z, part.w);
+        passes_->background.draw(frame);
+    }
     glDisable(GL_SCISSOR_TEST);
     glUseProgram(0);
 }

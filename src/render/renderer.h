@@ -58,8 +58,9 @@ class Renderer {
     // (-x, -y) into a target of this size gives these pixels of the view.
     glm::ivec4 contentRect(const FrameSnapshot& snapshot, const Camera& camera, int width,
                            int height) const;
-    // Paints only the background gradient into a viewport, as draw() does first.
-    void drawBackground(int x, int y, int width, int height);
+    // Paints only the background gradient into a viewport, as draw() does first, but for
+    // the part `except` of it (x, y, width, height from the viewport's lower-left corner).
+    void drawBackground(int x, int y, int width, int height, const glm::ivec4& except = glm::ivec4(0));
 
     RenderStyle style;
 

@@ -466,7 +466,7 @@ void WindowApp::drawView(int k, const glm::ivec4& view) {
         renderer_.draw(snapshot, camera_, view.x, view.y, view.z, view.w);
         return;
     }
-    if (content.z < view.z || content.w < view.w) renderer_.drawBackground(view.x, view.y, view.z, view.w);
+    if (content.z < view.z || content.w < view.w) renderer_.drawBackground(view.x, view.y, view.z, view.w, content);
     if (content.z <= 0 || content.w <= 0) return;
     target.bind();
     renderer_.draw(snapshot, camera_, -content.x, -content.y, view.z, view.w);
