@@ -1,7 +1,6 @@
 #include "app/window/window_app.h"
 
 #include <algorithm>
-#include <array>
 #include <chrono>
 #include <cstdio>
 #include <ctime>
@@ -14,7 +13,9 @@
 #include <backends/imgui_impl_glfw.h>
 
 #include "app/views/frame_builder.h"
+#include "app/window/frame_profile.h"
 #include "app/window/interaction_input.h"
+#include "app/window/multisampled_views.h"
 #include "app/views/interaction_windows.h"
 #include "app/run/output_files.h"
 #include "app/run/scene_source.h"
@@ -25,7 +26,6 @@
 #include "platform/window.h"
 #include "render/camera.h"
 #include "render/image_io.h"
-#include "render/offscreen_target.h"
 #include "render/renderer.h"
 #include "scenes/presets.h"
 #include "scenes/scene_json.h"
@@ -40,76 +40,6 @@ constexpr int kViewGap = 4;  // px between the two views side by side
 // s of wall time a frame may spend stepping: beyond it a heavy scene runs in slow
 // motion ("behind real time") and the window stays responsive.
 constexpr double kStepBudgetSeconds = 1.0 / 30.0;
-// MSAA samples of the views' offscreen target (the window itself has none: the panel
-// needs none, and a software GL resolves every pixel of a multisampled window).
-constexpr int kSceneSamples = 4;
-
-// Only the part of a view with more than the background is drawn multisampled (the
-// resolve costs per pixel on a software GL), into a target of its size rounded out to
-// this grid, in px: the target is made again only when the content crosses a line of it,
-// and the part starts on even pixels of the view as the shaders' 2 x 2 blocks do.
-constexpr int kContentGrid = 64;
-
-glm::ivec4 roundOutToGrid(const glm::ivec4& rect, int width, int height) {
-    if (rect.z <= 0 || rect.w <= 0) return glm::ivec4(0);
-    const int x0 = rect.x / kContentGrid * kContentGrid;
-    const int y0 = rect.y / kContentGrid * kContentGrid;
-    const int x1 = std::min((rect.x + rect.z + kContentGrid - 1) / kContentGrid * kContentGrid, width);
-    const int y1 = std::min((rect.y + rect.w + kContentGrid - 1) / kContentGrid * kContentGrid, height);
-    return glm::ivec4(x0, y0, x1 - x0, y1 - y0);
-}
-
-// --frames N: where each frame's wall time went, printed as one line at the end. The
-// first frame (start-up: shaders, the font atlas) is left out.
-class FrameProfile {
-public:
-    enum Part { Events, Stepping, Draw, Layout, UiRender, Other, Present, kParts };
-
-    void begin() { last_ = std::chrono::steady_clock::now(); }
-    // The time since the last lap() or begin() goes to `part`.
-    void lap(Part part) {
-        const auto now = std::chrono::steady_clock::now();
-        current_[part] += std::chrono::duration<double, std::milli>(now - last_).count();
-        last_ = now;
-    }
-    void endFrame(bool keep) {
-        if (keep) frames_.push_back(current_);
-        current_ = {};
-    }
-    void print(int frames, double seconds) const {
-        std::vector<double> total;
-        for (const Parts& f : frames_) {
-            double sum = 0.0;
-            for (double ms : f) sum += ms;
-            total.push_back(sum);
-        }
-        const int timed = static_cast<int>(frames_.size());
-        std::printf("spheres: %d frames; the last %d in %.2f s: %.1f frames per second (median frame %.1f ms; "
-                    "events %.1f, stepping %.1f, draw %.1f, UI layout %.1f, UI render %.1f, other %.1f, present %.1f ms)\n",
-                    frames, timed, seconds, seconds > 0.0 ? timed / seconds : 0.0, median(total),
-                    medianOf(Events), medianOf(Stepping), medianOf(Draw), medianOf(Layout), medianOf(UiRender),
-                    medianOf(Other), medianOf(Present));
-        std::fflush(stdout);
-    }
-
-private:
-    using Parts = std::array<double, kParts>;
-    static double median(std::vector<double> values) {
-        if (values.empty()) return 0.0;
-        const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
-        std::nth_element(values.begin(), middle, values.end());
-        return *middle;
-    }
-    double medianOf(Part part) const {
-        std::vector<double> values;
-        for (const Parts& f : frames_) values.push_back(f[part]);
-        return median(values);
-    }
-    std::chrono::steady_clock::time_point last_;
-    Parts current_{};
-    std::vector<Parts> frames_;
-};
-
 class WindowApp {
 public:
     WindowApp(std::unique_ptr<platform::Window> window, scenes::Scene scene, const WindowAppOptions& options);
@@ -123,7 +53,6 @@ private:
     void handleMouse();
     void frame(double dt);
     void drawScene();
-    void drawView(int k, const glm::ivec4& view);
     void apply(const ui::PanelActions& actions);
     void loadPreset(int index);
     void loadFile(const std::string& path);
@@ -145,8 +74,7 @@ private:
     render::Renderer renderer_;
     render::Camera camera_;
     render::FrameSnapshot snapshots_[kMostViews];  // one per view
-    render::OffscreenTarget sceneTargets_[kMostViews];  // a view's content, multisampled
-    bool drawIntoWindow_ = false;                       // such a target could not be made
+    MultisampledViews views_;  // each view's content drawn anti-aliased, then copied in
     ui::ImGuiGlRenderer imguiRenderer_;
     ui::PanelState panel_;
     InteractionInput input_;
@@ -436,41 +364,12 @@ void WindowApp::drawScene() {
         const glm::ivec4& view = views.views[k];
         buildSnapshot(session_.run(k), panel_, snapshots_[k]);
         session_.appendSelection(k, camera_, snapshots_[k], explainedPartner(session_, input_.tools()));
-        drawView(k, view);
+        views_.draw(renderer_, snapshots_[k], camera_, k, view);
     }
     // A software GL draws after the calls return: time the drawing, not the calls. (On a
     // GPU this costs the overlap of one frame's GL work with the next one's CPU work.)
     glFinish();
     timing_.drawMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
-
-// The background straight into the window; what covers it into the view's multisampled
-// target, then resolved into the window. All of it straight into the window when no such
-// target can be made.
-void WindowApp::drawView(int k, const glm::ivec4& view) {
-    const render::FrameSnapshot& snapshot = snapshots_[k];
-    if (view.z <= 0 || view.w <= 0) return;
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    const glm::ivec4 content = drawIntoWindow_ ? glm::ivec4(0)
-        : roundOutToGrid(renderer_.contentRect(snapshot, camera_, view.z, view.w), view.z, view.w);
-    render::OffscreenTarget& target = sceneTargets_[k];
-    if (!drawIntoWindow_ && content.z > 0 && content.w > 0 &&
-        (target.width() != content.z || target.height() != content.w)) {
-        if (const std::string error = target.resize(content.z, content.w, kSceneSamples); !error.empty()) {
-            std::fprintf(stderr, "spheres: %s; the views are drawn without anti-aliasing\n", error.c_str());
-            drawIntoWindow_ = true;
-            glBindFramebuffer(GL_FRAMEBUFFER, 0);
-        }
-    }
-    if (drawIntoWindow_) {
-        renderer_.draw(snapshot, camera_, view.x, view.y, view.z, view.w);
-        return;
-    }
-    if (content.z < view.z || content.w < view.w) renderer_.drawBackground(view.x, view.y, view.z, view.w, content);
-    if (content.z <= 0 || content.w <= 0) return;
-    target.bind();
-    renderer_.draw(snapshot, camera_, -content.x, -content.y, view.z, view.w);
-    target.copyTo(0, view.x + content.x, view.y + content.y);
 }
 
 void WindowApp::frame(double dt) {
