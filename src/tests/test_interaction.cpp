@@ -3,15 +3,19 @@
 // shooting from the camera and its refusals, editing the selected sphere.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
 
 #include "app/run/interaction.h"
+#include "app/views/interaction_windows.h"
 #include "app/run/session.h"
 #include "app/views/window_layout.h"
 #include "app/run/simulation.h"
 #include "physics/diagnostics.h"
 #include "render/camera.h"
+#include "scenes/presets.h"
+#include "scenes/scene_json.h"
 #include "scenes/scene.h"
 
 namespace {
@@ -285,3 +289,33 @@ TEST(InteractionEdit, EditsGoIntoEveryRunAndTheReadoutsAreMeasuredAgain) {
 }
 
 }  // namespace
+
+// ---------------------------------------------------------------- the explained contact
+
+// While a contact is explained, both of its spheres are ringed: the selected one
+// yellow, the other magenta (the explainer's "ringed" line names them); a plane's
+// contact, or no explanation, rings the selected sphere alone.
+TEST(InteractionSelection, TheExplainedContactsOtherSphereIsRingedToo) {
+    app::Simulation simulation(scenes::loadScene(scenes::presetPath("03_head_on")));
+    app::Session session(simulation);
+    session.select(0);
+    app::ToolWindowsState tools;
+    tools.explainer = true;
+    EXPECT_EQ(app::explainedPartner(session, tools), -1);  // nothing recorded yet
+    session.setCatchEveryStep(true);
+    for (int frame = 0; frame < 180 && session.latestContacts().events.empty(); ++frame) session.advance(1.0 / 60.0);
+    ASSERT_FALSE(session.latestContacts().events.empty()) << "the head-on spheres never met";
+    EXPECT_EQ(app::explainedPartner(session, tools), 1);
+    const auto ringed = [&](int partner, glm::u8vec4 colour) {
+        render::FrameSnapshot snapshot;
+        session.appendSelection(0, outsideCamera(), snapshot, partner);
+        return std::count_if(snapshot.lines.begin(), snapshot.lines.end(),
+                             [&](const render::OverlayLine& line) { return line.color == colour; });
+    };
+    const glm::u8vec4 yellow{255, 225, 0, 255}, magenta{255, 80, 235, 255};
+    EXPECT_GT(ringed(1, yellow), 0);
+    EXPECT_EQ(ringed(1, magenta), ringed(1, yellow));  // a whole ring each
+    EXPECT_EQ(ringed(-1, magenta), 0);
+    tools.explainer = false;
+    EXPECT_EQ(app::explainedPartner(session, tools), -1);
+}
