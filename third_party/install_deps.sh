@@ -3,6 +3,8 @@
 # Safe to run any number of times: it does nothing when everything is there.
 #   --fuzz  also clang and its sanitizer and libFuzzer runtimes, for
 #           src/tests/run_sanitized.sh (the test command asks for them)
+#   --web   also emscripten (C++ to WebAssembly) and chromium (headless, to test the
+#           page), for the browser build (src/web/)
 set -euo pipefail
 
 packages=(
@@ -15,7 +17,8 @@ packages=(
 for option in "$@"; do
   case "$option" in
     --fuzz) packages+=(clang libclang-rt-14-dev) ;;
-    *) echo "install_deps.sh: unknown option $option (known: --fuzz)" >&2; exit 2 ;;
+    --web) packages+=(emscripten chromium) ;;
+    *) echo "install_deps.sh: unknown option $option (known: --fuzz, --web)" >&2; exit 2 ;;
   esac
 done
 

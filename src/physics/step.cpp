@@ -226,7 +226,7 @@ int solverThreads(const World& world, const Params& params) {
     // Impacts in time order are one sequence: the continuous method runs on one thread; so
     // does the simultaneous solver, whose sums per sphere then add in one order. (The
     // global solvers share out whole clusters of touching spheres.)
-    if (world.size() < kParallelMinSpheres || params.method == Method::Continuous ||
+    if (!kCanStartThreads || world.size() < kParallelMinSpheres || params.method == Method::Continuous ||
         params.solver == Solver::Simultaneous) {
         return 1;
     }

@@ -176,6 +176,7 @@ bool spinningPays(int threads) {
 }
 
 int usableCores() {
+    if (!kCanStartThreads) return 1;
 #ifdef __linux__
     cpu_set_t allowed;
     if (sched_getaffinity(0, sizeof allowed, &allowed) == 0) return std::max(1, CPU_COUNT(&allowed));

@@ -68,4 +68,12 @@ bool spinningPays(int threads);
 // hardware's count; at least 1.
 int usableCores();
 
+// A browser build without WebAssembly threads cannot start one: every stage then runs
+// on the calling thread (the result is the same on any thread count).
+#if defined(__EMSCRIPTEN__) && !defined(__EMSCRIPTEN_PTHREADS__)
+constexpr bool kCanStartThreads = false;
+#else
+constexpr bool kCanStartThreads = true;
+#endif
+
 }  // namespace physics

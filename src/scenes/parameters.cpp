@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <glm/geometric.hpp>
 #include <type_traits>
 
@@ -306,8 +307,18 @@ std::string_view trim(std::string_view s) {
 // A whole decimal number (optionally with a leading '+'), or nothing.
 bool parseNumber(std::string_view text, double& value) {
     if (!text.empty() && text.front() == '+') text.remove_prefix(1);
+#if defined(__cpp_lib_to_chars)
     const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
     return error == std::errc() && end == text.data() + text.size() && !text.empty();
+#else
+    // libc++ 14 (the browser build) has no from_chars for double: strtod reads the same
+    // decimals as exactly, once what from_chars refuses (spaces, hexadecimal) is refused.
+    if (text.empty() || text.find_first_of(" \t\n\r\f\vxXpP") != std::string_view::npos) return false;
+    const std::string copy(text);
+    char* end = nullptr;
+    value = std::strtod(copy.c_str(), &end);
+    return end == copy.c_str() + copy.size();
+#endif
 }
 
 // The number a "--set" text stands for: a choice's index or a decimal.
@@ -343,10 +354,20 @@ std::string formatNumber(double value) {
     const double size = std::abs(value);
     const bool plain = size == 0.0 || (size >= 1e-6 && size < 1e16);
     char buffer[400];
+#if defined(__cpp_lib_to_chars)
     const auto result =
         plain ? std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::fixed)
               : std::to_chars(buffer, buffer + sizeof buffer, value);
     return std::string(buffer, result.ptr);
+#else
+    // libc++ 14 (the browser build): the fewest digits that read back as the same double,
+    // as to_chars writes them.
+    for (int digits = 0; digits <= 40; ++digits) {
+        std::snprintf(buffer, sizeof buffer, plain ? "%.*f" : "%.*e", digits, value);
+        if (std::strtod(buffer, nullptr) == value) break;
+    }
+    return buffer;
+#endif
 }
 
 std::string checkValue(const Parameter& p, double value) {

@@ -46,4 +46,21 @@ std::string presetPath(std::string_view name) {
     return (presetDirectory() / (stem + std::string(kExtension))).string();
 }
 
+std::string matchPreset(std::string_view name, std::string& why) {
+    why.clear();
+    std::vector<std::string> partial;
+    for (const std::string& stem : listPresets()) {
+        const std::size_t underscore = stem.find('_');
+        const std::string bare = underscore == std::string::npos ? stem : stem.substr(underscore + 1);
+        if (name == stem || name == bare || name == stem + ".json") return presetPath(stem);
+        if (!name.empty() && bare.find(name) != std::string::npos) partial.push_back(stem);
+    }
+    if (partial.size() > 1) {
+        why = "more than one preset matches: ";
+        for (std::size_t k = 0; k < partial.size(); ++k) why += (k > 0 ? ", " : "") + partial[k];
+        return "";
+    }
+    return partial.size() == 1 ? presetPath(partial.front()) : std::string();
+}
+
 }  // namespace scenes

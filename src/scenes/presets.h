@@ -19,4 +19,9 @@ std::vector<std::string> listPresets();
 // SceneError naming the presets when there is none of that name.
 std::string presetPath(std::string_view name);
 
+// The preset a name means: its full name ("11_pile"), without its number ("pile"), or
+// any part of its name no other preset shares ("cradle"). Returns its file, or "" with
+// `why` ("more than one preset matches: ...", or empty: none does).
+std::string matchPreset(std::string_view name, std::string& why);
+
 }  // namespace scenes

@@ -113,6 +113,6 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"bernoulli_views_1024x768", "16_bernoulli", "1024x768"},
                       Case{"present_column_1024x768", "09_column", "1024x768", 1.0f, true},
                       Case{"present_bernoulli_hidpi_2x", "16_bernoulli", "2560x1440", 2.0f, true}),
-    [](const ::testing::TestParamInfo<Case>& info) { return info.param.name; });
+    [](const ::testing::TestParamInfo<Case>& tested) { return tested.param.name; });
 
 }  // namespace

@@ -1,0 +1,101 @@
+// The browser's entry points, called from index.html (Module.ccall). They run the same
+// code as `spheres simulate`: the preset or scene named as on the command line, the
+// settings as --set takes them, then `steps` solver steps with the scene's emitters.
+// Each returns JSON text (valid until the next call).
+#include <cstdint>
+#include <cstdio>
+#include <exception>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <emscripten/emscripten.h>
+#include <nlohmann/json.hpp>
+
+#include "physics/diagnostics.h"
+#include "physics/step.h"
+#include "scenes/parameters.h"
+#include "scenes/presets.h"
+#include "scenes/scene.h"
+#include "scenes/scene_json.h"
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+constexpr std::int64_t kMostSteps = 1000000;  // a page asks for a run, not a day's
+
+std::string hexHash(std::uint64_t hash) {
+    char text[17];
+    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(hash));
+    return text;
+}
+
+// The scene `name` (a preset's name as --scene takes it) with `settings`, one
+// "name=value" per line; throws std::runtime_error saying what is wrong.
+scenes::Scene sceneWithSettings(const std::string& name, const std::string& settings) {
+    std::string why;
+    const std::string path = scenes::matchPreset(name, why);
+    if (path.empty()) {
+        throw std::runtime_error("scene " + name + ": " + (why.empty() ? "no such preset" : why));
+    }
+    scenes::Scene scene = scenes::loadScene(path);
+    std::istringstream lines(settings);
+    for (std::string setting; std::getline(lines, setting);) {
+        if (setting.empty()) continue;
+        if (const std::string error = scenes::applySetting(scene, setting); !error.empty()) {
+            throw std::runtime_error(setting + ": " + error);
+        }
+    }
+    return scene;
+}
+
+const char* answer(const Json& json) {
+    static std::string text;
+    text = json.dump();
+    return text.c_str();
+}
+
+}  // namespace
+
+extern "C" {
+
+// [{"name": "01_bounce_response_only", "title": "..."}, ...]
+EMSCRIPTEN_KEEPALIVE const char* spheres_presets() {
+    Json list = Json::array();
+    for (const std::string& name : scenes::listPresets()) {
+        const scenes::Scene scene = scenes::loadScene(scenes::presetPath(name));
+        list.push_back({{"name", name}, {"title", scenes::withCount(scene.title, scene)}});
+    }
+    return answer(list);
+}
+
+// {"scene", "steps", "time_s", "spheres", "hash", "kinetic_J", "potential_J", "total_J",
+//  "modified_J", "penetration_r"} after `steps` steps, or {"error": "..."}.
+EMSCRIPTEN_KEEPALIVE const char* spheres_simulate(const char* name, const char* settings, int steps) {
+    try {
+        if (steps < 0 || steps > kMostSteps) throw std::runtime_error("steps must be between 0 and 1000000");
+        const scenes::Scene scene = sceneWithSettings(name, settings);
+        physics::World world = scenes::buildWorld(scene);
+        world.measureImpacts = world.size() <= physics::kMostMirroredSpheres;  // as `spheres simulate`
+        for (int k = 0; k < steps; ++k) {
+            physics::step(world, scene.params);
+            scenes::emitDue(scene, world);
+        }
+        const physics::Diagnostics d = physics::measure(world, scene.params);
+        return answer({{"scene", scenes::withCount(scene.title, scene)},
+                       {"steps", steps},
+                       {"time_s", world.time},
+                       {"spheres", world.size()},
+                       {"hash", hexHash(d.hash)},
+                       {"kinetic_J", d.kinetic},
+                       {"potential_J", d.potential},
+                       {"total_J", d.total},
+                       {"modified_J", d.modified},
+                       {"penetration_r", d.maxPenetration}});
+    } catch (const std::exception& e) {
+        return answer({{"error", e.what()}});
+    }
+}
+
+}  // extern "C"
