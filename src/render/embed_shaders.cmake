@@ -2,7 +2,8 @@
 # program finds its shaders from any working directory. The file has two uses:
 #  - include()d by a CMakeLists.txt: defines spheres_embed_shaders(), which adds
 #    a custom command that regenerates the header whenever a shader changes;
-#  - run by that command in script mode (cmake -P): writes the header.
+#  - run by that command in script mode (cmake -P): writes the header; with
+#    -DGLSL_ES=ON each source is rewritten for GLSL ES 3.00 (the browser's WebGL 2).
 # A file named sphere.vert becomes `inline constexpr std::string_view kSphereVert`.
 
 if(CMAKE_SCRIPT_MODE_FILE)
@@ -21,6 +22,10 @@ if(CMAKE_SCRIPT_MODE_FILE)
       string(APPEND constant "${head}${tail}")
     endforeach()
     file(READ "${input}" source)
+    if(GLSL_ES)  # the browser build: GLSL ES 3.00 (WebGL 2) from the same file
+      string(REPLACE "#version 330 core" "#version 300 es\nprecision highp float;\nprecision highp int;" source "${source}")
+      string(REPLACE "noperspective " "" source "${source}")  # ES has none: interpolated with perspective
+    endif()
     string(APPEND text "\n// ${fileName}\ninline constexpr std::string_view ${constant} = R\"glsl(${source})glsl\";\n")
   endforeach()
   string(APPEND text "\n}  // namespace ${NAMESPACE}\n")
@@ -37,7 +42,7 @@ function(spheres_embed_shaders output namespace)
   add_custom_command(
     OUTPUT ${output}
     COMMAND ${CMAKE_COMMAND} -DOUTPUT=${output} -DNAMESPACE=${namespace} -DINPUTS=${inputs}
-            -P ${CMAKE_CURRENT_FUNCTION_LIST_FILE}
+            -DGLSL_ES=${EMSCRIPTEN} -P ${CMAKE_CURRENT_FUNCTION_LIST_FILE}
     DEPENDS ${ARG_FILES} ${CMAKE_CURRENT_FUNCTION_LIST_FILE}
     COMMENT "Embedding shaders into ${output}"
     VERBATIM)

@@ -180,7 +180,9 @@ void SpherePass::draw(const FrameSnapshot& snapshot, const FrameContext& frame,
     glEnable(GL_DEPTH_TEST);
     glDepthMask(GL_TRUE);
     glDisable(GL_BLEND);
+#ifndef __EMSCRIPTEN__  // WebGL 2: a vertex shader always sets the point size
     glEnable(GL_PROGRAM_POINT_SIZE);
+#endif
     if (coverageAlpha) {
         // Alpha becomes the sample mask; the target keeps the background's alpha of 1.
         glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
@@ -199,7 +201,9 @@ void SpherePass::draw(const FrameSnapshot& snapshot, const FrameContext& frame,
         glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(quads_.size()));
     }
     glBindVertexArray(0);
+#ifndef __EMSCRIPTEN__
     glDisable(GL_PROGRAM_POINT_SIZE);
+#endif
     glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }

@@ -4,7 +4,9 @@
 # local port, loads pages in headless Chromium and compares what each page exports
 # (its <pre id="state">) with `spheres simulate` on the same scene, settings and steps:
 # the same state hash, bit for bit, and the same energies. A link with a bad scene or
-# setting must say why. Exit 77 (ctest: skipped) without emscripten or chromium.
+# setting must say why. The live view takes a link's settings, and its screenshot
+# (SwiftShader's WebGL 2) shows the panel and the spheres. Exit 77 (ctest: skipped)
+# without emscripten or chromium.
 # Usage: test_page.sh SPHERES_EXECUTABLE SOURCE_DIR BUILD_DIR
 set -euo pipefail
 spheres=$1 source=$2 build=$3
@@ -73,4 +75,61 @@ scene=nosuch&steps=10 no such preset
 scene=cradle&steps=10&beta=7 out of range
 scene=cradle&steps=10&methd=velocity methd
 CASES
+# The live view (no steps in the link): the settings of the link took effect...
+parameters=$(timeout 180 chromium --headless=new --no-sandbox --use-angle=swiftshader --enable-unsafe-swiftshader \
+  --user-data-dir="$build/chromium-profile" --virtual-time-budget=3000 --dump-dom \
+  "http://127.0.0.1:$port/index.html?scene=cradle&beta=0.5&method=velocity" 2>/dev/null |
+  python3 -c 'import html, re, sys; m = re.search(r"<pre id=\"parameters\"[^>]*>([^<]*)</pre>", sys.stdin.read()); print(html.unescape(m.group(1)) if m else "")')
+verdict=$(PARAMETERS="$parameters" python3 -c '
+import json, os
+table = {p["name"]: p for p in json.loads(os.environ["PARAMETERS"] or "[]")}
+method = table.get("method", {})
+ok = table.get("beta", {}).get("value") == 0.5 and method.get("choices", [None])[int(method.get("value", -1))] == "velocity"
+print("took effect" if ok else "did not take effect: beta %s, method %s" % (table.get("beta", {}).get("value"), method.get("value")))')
+echo "live view, beta=0.5&method=velocity: $verdict"
+[ "$verdict" = "took effect" ] || failed=1
+
+# ...and its screenshot shows the panel (dark, on the left) and the spheres (coloured,
+# in the view): not a blank page. It is kept as BUILD/page.png (the README's picture).
+timeout 180 chromium --headless=new --no-sandbox --use-angle=swiftshader --enable-unsafe-swiftshader \
+  --user-data-dir="$build/chromium-profile" --virtual-time-budget=3000 --window-size=1280,720 \
+  --screenshot="$build/page.png" "http://127.0.0.1:$port/index.html?scene=cradle" >/dev/null 2>&1 || true
+verdict=$(python3 - "$build/page.png" <<'PY'
+import struct, sys, zlib
+data = open(sys.argv[1], "rb").read() if len(sys.argv) > 1 else b""
+if data[:8] != b"\x89PNG\r\n\x1a\n":
+    print("no screenshot"); raise SystemExit
+chunks, at = {}, 8
+while at < len(data):
+    length, kind = struct.unpack(">I4s", data[at:at + 8])
+    chunks.setdefault(kind, []).append(data[at + 8:at + 8 + length])
+    at += 12 + length
+width, height, depth, colour = struct.unpack(">IIBB", chunks[b"IHDR"][0][:10])
+channels = {2: 3, 6: 4}[colour]
+raw, stride, rows, previous = zlib.decompress(b"".join(chunks[b"IDAT"])), width * channels, [], bytearray(width * channels)
+for y in range(height):  # PNG's row filters
+    kind, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
+    for i in range(stride):
+        a = line[i - channels] if i >= channels else 0
+        b, c = previous[i], previous[i - channels] if i >= channels else 0
+        if kind == 1: line[i] = (line[i] + a) & 255
+        elif kind == 2: line[i] = (line[i] + b) & 255
+        elif kind == 3: line[i] = (line[i] + (a + b) // 2) & 255
+        elif kind == 4:
+            p = a + b - c; pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+            line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
+    rows.append(line); previous = line
+def share(x0, x1, test):
+    hits = total = 0
+    for y in range(0, height, 4):
+        for x in range(x0, x1, 4):
+            px = rows[y][x * channels:x * channels + 3]; total += 1; hits += test(px)
+    return hits / max(total, 1)
+panel = share(5, 300, lambda p: max(p) < 40)
+spheres = share(420, width, lambda p: max(p) - min(p) > 60)
+print("panel and spheres" if panel > 0.5 and spheres > 0.002 else "blank or broken: panel %.3f, spheres %.4f" % (panel, spheres))
+PY
+)
+echo "live view, screenshot: $verdict"
+[ "$verdict" = "panel and spheres" ] || failed=1
 exit $failed

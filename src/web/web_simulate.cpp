@@ -1,11 +1,10 @@
-// The browser's entry points, called from index.html (Module.ccall). They run the same
-// code as `spheres simulate`: the preset or scene named as on the command line, the
-// settings as --set takes them, then `steps` solver steps with the scene's emitters.
+// The page's runs without a view, called from index.html (Module.ccall): the same code
+// as `spheres simulate` (the preset named as on the command line, the settings as --set
+// takes them, then `steps` solver steps with the scene's emitters), and the presets.
 // Each returns JSON text (valid until the next call).
 #include <cstdint>
 #include <cstdio>
 #include <exception>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -18,6 +17,7 @@
 #include "scenes/presets.h"
 #include "scenes/scene.h"
 #include "scenes/scene_json.h"
+#include "web/web_scenes.h"
 
 namespace {
 
@@ -29,25 +29,6 @@ std::string hexHash(std::uint64_t hash) {
     char text[17];
     std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(hash));
     return text;
-}
-
-// The scene `name` (a preset's name as --scene takes it) with `settings`, one
-// "name=value" per line; throws std::runtime_error saying what is wrong.
-scenes::Scene sceneWithSettings(const std::string& name, const std::string& settings) {
-    std::string why;
-    const std::string path = scenes::matchPreset(name, why);
-    if (path.empty()) {
-        throw std::runtime_error("scene " + name + ": " + (why.empty() ? "no such preset" : why));
-    }
-    scenes::Scene scene = scenes::loadScene(path);
-    std::istringstream lines(settings);
-    for (std::string setting; std::getline(lines, setting);) {
-        if (setting.empty()) continue;
-        if (const std::string error = scenes::applySetting(scene, setting); !error.empty()) {
-            throw std::runtime_error(setting + ": " + error);
-        }
-    }
-    return scene;
 }
 
 const char* answer(const Json& json) {
@@ -75,7 +56,7 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_presets() {
 EMSCRIPTEN_KEEPALIVE const char* spheres_simulate(const char* name, const char* settings, int steps) {
     try {
         if (steps < 0 || steps > kMostSteps) throw std::runtime_error("steps must be between 0 and 1000000");
-        const scenes::Scene scene = sceneWithSettings(name, settings);
+        const scenes::Scene scene = web::sceneWithSettings(name, settings);
         physics::World world = scenes::buildWorld(scene);
         world.measureImpacts = world.size() <= physics::kMostMirroredSpheres;  // as `spheres simulate`
         for (int k = 0; k < steps; ++k) {

@@ -1,0 +1,180 @@
+// The live view of the page: one app::Simulation advanced by the page's animation
+// frames (the window's clock: a fixed step h and an accumulator), drawn with the
+// desktop's renderer into the page's canvas through WebGL 2, and edited through the
+// same checks as the window's panel (app::Session). The page makes its controls from
+// the parameter table (spheres_parameters) and calls these entry points.
+#include <memory>
+#include <string>
+
+#include <emscripten/emscripten.h>
+#include <emscripten/html5.h>
+#include <glad/gl.h>
+#include <nlohmann/json.hpp>
+
+#include "app/run/session.h"
+#include "app/run/simulation.h"
+#include "app/views/frame_builder.h"
+#include "physics/diagnostics.h"
+#include "render/camera.h"
+#include "render/frame_snapshot.h"
+#include "render/renderer.h"
+#include "scenes/parameters.h"
+#include "scenes/scene.h"
+#include "ui/control_panel.h"
+#include "ui/ui_font.h"
+#include "web/web_scenes.h"
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+struct LiveView {
+    std::unique_ptr<app::Simulation> simulation;
+    std::unique_ptr<app::Session> session;
+    render::Renderer renderer;
+    render::Camera camera;
+    render::FrameSnapshot snapshot;
+    ui::PanelState look;  // the window's colours and overlays (defaults)
+    bool rendererReady = false;
+};
+
+LiveView& live() {
+    static LiveView view;
+    return view;
+}
+
+const char* answer(const Json& json) {
+    static std::string text;
+    text = json.dump();
+    return text.c_str();
+}
+
+// A WebGL 2 context on the page's <canvas id="view">; "" or why not.
+std::string openContext() {
+    EmscriptenWebGLContextAttributes attributes;
+    emscripten_webgl_init_context_attributes(&attributes);
+    attributes.majorVersion = 2;
+    attributes.minorVersion = 0;
+    attributes.antialias = true;
+    attributes.depth = true;
+    const EMSCRIPTEN_WEBGL_CONTEXT_HANDLE context = emscripten_webgl_create_context("#view", &attributes);
+    if (context <= 0) return "this browser has no WebGL 2";
+    emscripten_webgl_make_context_current(context);
+    return "";
+}
+
+void fitCamera(int width, int height) {
+    LiveView& v = live();
+    glm::vec3 lo, hi;
+    app::sceneBounds(*v.simulation, lo, hi);
+    v.camera.reset(lo, hi, height > 0 ? float(width) / float(height) : 1.0f);
+}
+
+}  // namespace
+
+extern "C" {
+
+// Opens the scene (as --scene names it) with `settings` ("name=value" lines) in the
+// canvas of width x height px: {"title", "slide", "description"} or {"error"}.
+EMSCRIPTEN_KEEPALIVE const char* spheres_open(const char* name, const char* settings, int width, int height) {
+    LiveView& v = live();
+    try {
+        if (!v.rendererReady) {
+            if (const std::string error = openContext(); !error.empty()) return answer({{"error", error}});
+            if (const std::string error = v.renderer.init(); !error.empty()) return answer({{"error", error}});
+            v.rendererReady = true;
+        }
+        scenes::Scene scene = web::sceneWithSettings(name, settings);
+        v.session.reset();
+        v.simulation = std::make_unique<app::Simulation>(std::move(scene));
+        v.session = std::make_unique<app::Session>(*v.simulation);
+        fitCamera(width, height);
+        const scenes::Scene& s = v.simulation->scene();
+        return answer({{"title", scenes::withCount(s.title, s)},
+                       {"slide", s.slide},
+                       {"description", scenes::withCount(s.description, s)}});
+    } catch (const std::exception& e) {
+        return answer({{"error", e.what()}});
+    }
+}
+
+// Advances the run by `seconds` of real time and draws it into the whole canvas.
+EMSCRIPTEN_KEEPALIVE void spheres_frame(double seconds, int width, int height) {
+    LiveView& v = live();
+    if (!v.simulation || !v.rendererReady) return;
+    v.session->advance(seconds);
+    app::buildSnapshot(*v.simulation, v.look, v.snapshot);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, width, height);
+    glClearColor(ui::kBackdropColor[0], ui::kBackdropColor[1], ui::kBackdropColor[2], 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    v.renderer.draw(v.snapshot, v.camera, 0, 0, width, height);
+}
+
+// The mouse: drag to orbit (px), wheel to zoom (steps, positive closer).
+EMSCRIPTEN_KEEPALIVE void spheres_orbit(float dx, float dy) { live().camera.orbit(dx, dy); }
+EMSCRIPTEN_KEEPALIVE void spheres_zoom(float steps) { live().camera.zoom(steps); }
+
+// Pause or run; restart from the scene's initial state.
+EMSCRIPTEN_KEEPALIVE void spheres_pause(int paused) {
+    if (live().simulation) live().simulation->paused = paused != 0;
+}
+EMSCRIPTEN_KEEPALIVE void spheres_restart() {
+    if (live().session) live().session->restart();
+}
+
+// One parameter, as --set names it and through the panel's checks: "" or why refused
+// (the run keeps its value).
+EMSCRIPTEN_KEEPALIVE const char* spheres_set(const char* name, double value) {
+    LiveView& v = live();
+    static std::string refusal;
+    const scenes::Parameter* p = scenes::findParameter(name);
+    refusal = !v.session ? "no scene is open" : !p ? std::string("no parameter ") + name : v.session->setParameter(*p, value);
+    return refusal.c_str();
+}
+
+// The parameter table with the open scene's values: what the page's controls show.
+EMSCRIPTEN_KEEPALIVE const char* spheres_parameters() {
+    LiveView& v = live();
+    Json list = Json::array();
+    if (!v.simulation) return answer(list);
+    const scenes::Scene& scene = v.simulation->scene();
+    for (const scenes::Parameter& p : scenes::parameterTable()) {
+        if (!p.availableIn(scene)) continue;
+        Json choices = Json::array();
+        for (std::string_view choice : p.choices) choices.push_back(std::string(choice));
+        list.push_back({{"name", std::string(p.name)},
+                        {"label", std::string(p.label)},
+                        {"unit", std::string(p.unit)},
+                        {"tooltip", std::string(p.tooltip)},
+                        {"min", p.min},
+                        {"max", p.max},
+                        {"kind", p.kind == scenes::ParameterKind::Choice    ? "choice"
+                                 : p.kind == scenes::ParameterKind::Integer ? "integer"
+                                                                            : "real"},
+                        {"restarts", p.applies == scenes::Applies::Restart},
+                        {"choices", choices},
+                        {"value", p.get(scene)}});
+    }
+    return answer(list);
+}
+
+// The run now: {"time_s", "steps", "spheres", "hash", "kinetic_J", "potential_J",
+// "penetration_r"}.
+EMSCRIPTEN_KEEPALIVE const char* spheres_state() {
+    LiveView& v = live();
+    if (!v.simulation) return answer(Json::object());
+    const physics::World& world = v.simulation->world();
+    const physics::Diagnostics& d = v.session->diagnostics(0);
+    char hash[17];
+    std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(d.hash));
+    return answer({{"time_s", world.time},
+                   {"steps", world.stepCount},
+                   {"spheres", world.size()},
+                   {"hash", hash},
+                   {"kinetic_J", d.kinetic},
+                   {"potential_J", d.potential},
+                   {"penetration_r", d.maxPenetration}});
+}
+
+}  // extern "C"
