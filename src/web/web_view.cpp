@@ -28,6 +28,10 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
+// s of wall time a frame may spend stepping, as in the window: beyond it a heavy scene
+// runs in slow motion ("behind real time") and the page stays responsive.
+constexpr double kStepBudgetSeconds = 1.0 / 30.0;
+
 struct LiveView {
     std::unique_ptr<app::Simulation> simulation;
     std::unique_ptr<app::Session> session;
@@ -36,6 +40,7 @@ struct LiveView {
     render::FrameSnapshot snapshot;
     ui::PanelState look;  // the window's colours and overlays (defaults)
     bool rendererReady = false;
+    float aspect = 0.0f;  // the canvas's last width / height: a change keeps the box's fit
 };
 
 LiveView& live() {
@@ -67,7 +72,20 @@ void fitCamera(int width, int height) {
     LiveView& v = live();
     glm::vec3 lo, hi;
     app::sceneBounds(*v.simulation, lo, hi);
-    v.camera.reset(lo, hi, height > 0 ? float(width) / float(height) : 1.0f);
+    v.aspect = height > 0 ? float(width) / float(height) : 1.0f;
+    v.camera.reset(lo, hi, v.aspect);
+}
+
+// The canvas changed shape (the page was resized, a phone turned): the camera keeps its
+// angles and its zoom relative to the box, as the window's views do.
+void followCanvasShape(int width, int height) {
+    LiveView& v = live();
+    const float aspect = height > 0 ? float(width) / float(height) : 1.0f;
+    if (aspect == v.aspect) return;
+    glm::vec3 lo, hi;
+    app::sceneBounds(*v.simulation, lo, hi);
+    v.camera.distance *= v.camera.fitDistance(lo, hi, aspect) / v.camera.fitDistance(lo, hi, v.aspect);
+    v.aspect = aspect;
 }
 
 }  // namespace
@@ -87,6 +105,7 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_open(const char* name, const char* sett
         scenes::Scene scene = web::sceneWithSettings(name, settings);
         v.session.reset();
         v.simulation = std::make_unique<app::Simulation>(std::move(scene));
+        v.simulation->wallBudget = kStepBudgetSeconds;
         v.session = std::make_unique<app::Session>(*v.simulation);
         fitCamera(width, height);
         const scenes::Scene& s = v.simulation->scene();
@@ -103,6 +122,7 @@ EMSCRIPTEN_KEEPALIVE void spheres_frame(double seconds, int width, int height) {
     LiveView& v = live();
     if (!v.simulation || !v.rendererReady) return;
     v.session->advance(seconds);
+    followCanvasShape(width, height);
     app::buildSnapshot(*v.simulation, v.look, v.snapshot);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glViewport(0, 0, width, height);
@@ -160,7 +180,7 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_parameters() {
 }
 
 // The run now: {"time_s", "steps", "spheres", "hash", "kinetic_J", "potential_J",
-// "penetration_r"}.
+// "penetration_r", "behind_real_time"}.
 EMSCRIPTEN_KEEPALIVE const char* spheres_state() {
     LiveView& v = live();
     if (!v.simulation) return answer(Json::object());
@@ -174,7 +194,8 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_state() {
                    {"hash", hash},
                    {"kinetic_J", d.kinetic},
                    {"potential_J", d.potential},
-                   {"penetration_r", d.maxPenetration}});
+                   {"penetration_r", d.maxPenetration},
+                   {"behind_real_time", v.simulation->behindRealTime()}});
 }
 
 }  // extern "C"
