@@ -74,7 +74,15 @@ done <<'CASES'
 scene=nosuch&steps=10 no such preset
 scene=cradle&steps=10&beta=7 out of range
 scene=cradle&steps=10&methd=velocity methd
+scene=pile&steps=1&count=7483 holds only
 CASES
+# A browser without WebGL 2: the page says so in one line.
+said=$(timeout 180 chromium --headless=new --no-sandbox --disable-3d-apis --user-data-dir="$build/chromium-profile" \
+  --virtual-time-budget=3000 --dump-dom "http://127.0.0.1:$port/index.html?scene=cradle" 2>/dev/null |
+  grep -o 'class="error">Cannot run it: [^<]*' | sed 's/^class="error">//' || true)
+echo "no WebGL 2: ${said:-nothing said}"
+[ "$said" = "Cannot run it: this browser has no WebGL 2" ] || failed=1
+
 # The live view (no steps in the link): the settings of the link took effect...
 parameters=$(timeout 180 chromium --headless=new --no-sandbox --use-angle=swiftshader --enable-unsafe-swiftshader \
   --user-data-dir="$build/chromium-profile" --virtual-time-budget=3000 --dump-dom \
