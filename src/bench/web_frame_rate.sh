@@ -26,6 +26,6 @@ for query in "${queries[@]}"; do
   for _ in $(seq 60); do grep -aq "GET /report" "$log" && break; sleep 0.5; done
   kill $browser 2>/dev/null || true
   wait $browser 2>/dev/null || true
-  figures=$(grep -ao "GET /report?[^ ]*" "$log" | head -1 | sed 's/GET \/report?//; s/&/  /g')
+  figures=$(grep -ao "GET /report?[^ ]*" "$log" | head -1 | sed 's/GET \/report?//; s/&/  /g' || true)
   echo "$query: ${figures:-no report within 30 s}"
 done

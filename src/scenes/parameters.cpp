@@ -1,6 +1,7 @@
 #include "scenes/parameters.h"
 
 #include <charconv>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -313,11 +314,14 @@ bool parseNumber(std::string_view text, double& value) {
 #else
     // libc++ 14 (the browser build) has no from_chars for double: strtod reads the same
     // decimals as exactly, once what from_chars refuses (spaces, hexadecimal) is refused.
-    if (text.empty() || text.find_first_of(" \t\n\r\f\vxXpP") != std::string_view::npos) return false;
+    if (text.empty() || text.front() == '+' || text.find_first_of(" \t\n\r\f\vxXpP") != std::string_view::npos) {
+        return false;
+    }
     const std::string copy(text);
     char* end = nullptr;
+    errno = 0;
     value = std::strtod(copy.c_str(), &end);
-    return end == copy.c_str() + copy.size();
+    return end == copy.c_str() + copy.size() && errno != ERANGE;  // from_chars refuses what overflows, too
 #endif
 }
 

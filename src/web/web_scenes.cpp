@@ -1,5 +1,6 @@
 #include "web/web_scenes.h"
 
+#include <cstdio>
 #include <sstream>
 #include <stdexcept>
 
@@ -8,6 +9,18 @@
 #include "scenes/scene_json.h"
 
 namespace web {
+
+const char* answer(const Json& json) {
+    static std::string text;
+    text = json.dump();
+    return text.c_str();
+}
+
+std::string hexHash(std::uint64_t hash) {
+    char text[17];
+    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(hash));
+    return text;
+}
 
 scenes::Scene sceneWithSettings(const std::string& name, const std::string& settings) {
     std::string why;

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <exception>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -21,21 +22,10 @@
 
 namespace {
 
-using Json = nlohmann::ordered_json;
+using web::answer;
+using web::Json;
 
 constexpr std::int64_t kMostSteps = 1000000;  // a page asks for a run, not a day's
-
-std::string hexHash(std::uint64_t hash) {
-    char text[17];
-    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(hash));
-    return text;
-}
-
-const char* answer(const Json& json) {
-    static std::string text;
-    text = json.dump();
-    return text.c_str();
-}
 
 }  // namespace
 
@@ -68,7 +58,7 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_simulate(const char* name, const char* 
                        {"steps", steps},
                        {"time_s", world.time},
                        {"spheres", world.size()},
-                       {"hash", hexHash(d.hash)},
+                       {"hash", web::hexHash(d.hash)},
                        {"kinetic_J", d.kinetic},
                        {"potential_J", d.potential},
                        {"total_J", d.total},

@@ -3,14 +3,13 @@
 // desktop's renderer into the page's canvas through WebGL 2, and edited through the
 // same checks as the window's panel (app::Session). The page makes its controls from
 // the parameter table (spheres_parameters) and calls these entry points.
+#include <cstdio>
 #include <memory>
 #include <string>
 
 #include <emscripten/emscripten.h>
 #include <emscripten/html5.h>
 #include <glad/gl.h>
-#include <nlohmann/json.hpp>
-
 #include "app/run/session.h"
 #include "app/run/simulation.h"
 #include "app/views/frame_builder.h"
@@ -26,7 +25,8 @@
 
 namespace {
 
-using Json = nlohmann::ordered_json;
+using web::answer;
+using web::Json;
 
 // s of wall time a frame may spend stepping, as in the window: beyond it a heavy scene
 // runs in slow motion ("behind real time") and the page stays responsive.
@@ -46,12 +46,6 @@ struct LiveView {
 LiveView& live() {
     static LiveView view;
     return view;
-}
-
-const char* answer(const Json& json) {
-    static std::string text;
-    text = json.dump();
-    return text.c_str();
 }
 
 // A WebGL 2 context on the page's <canvas id="view">; "" or why not.
@@ -93,7 +87,8 @@ void followCanvasShape(int width, int height) {
 extern "C" {
 
 // Opens the scene (as --scene names it) with `settings` ("name=value" lines) in the
-// canvas of width x height px: {"title", "slide", "description"} or {"error"}.
+// canvas of width x height px: {"title", "slide", "description", "side_by_side" (the
+// desktop opens it side by side)} or {"error"}.
 EMSCRIPTEN_KEEPALIVE const char* spheres_open(const char* name, const char* settings, int width, int height) {
     LiveView& v = live();
     try {
@@ -102,16 +97,18 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_open(const char* name, const char* sett
             if (const std::string error = v.renderer.init(); !error.empty()) return answer({{"error", error}});
             v.rendererReady = true;
         }
-        scenes::Scene scene = web::sceneWithSettings(name, settings);
-        v.session.reset();
-        v.simulation = std::make_unique<app::Simulation>(std::move(scene));
-        v.simulation->wallBudget = kStepBudgetSeconds;
-        v.session = std::make_unique<app::Session>(*v.simulation);
+        // Made aside, then swapped in: a scene that cannot be built leaves the open one as it was.
+        auto simulation = std::make_unique<app::Simulation>(web::sceneWithSettings(name, settings));
+        simulation->wallBudget = kStepBudgetSeconds;
+        auto session = std::make_unique<app::Session>(*simulation);
+        v.session = std::move(session);
+        v.simulation = std::move(simulation);
         fitCamera(width, height);
         const scenes::Scene& s = v.simulation->scene();
         return answer({{"title", scenes::withCount(s.title, s)},
                        {"slide", s.slide},
-                       {"description", scenes::withCount(s.description, s)}});
+                       {"description", scenes::withCount(s.description, s)},
+                       {"side_by_side", !s.compare.empty()}});
     } catch (const std::exception& e) {
         return answer({{"error", e.what()}});
     }
@@ -120,7 +117,7 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_open(const char* name, const char* sett
 // Advances the run by `seconds` of real time and draws it into the whole canvas.
 EMSCRIPTEN_KEEPALIVE void spheres_frame(double seconds, int width, int height) {
     LiveView& v = live();
-    if (!v.simulation || !v.rendererReady) return;
+    if (!v.simulation || !v.session || !v.rendererReady) return;
     v.session->advance(seconds);
     followCanvasShape(width, height);
     app::buildSnapshot(*v.simulation, v.look, v.snapshot);
@@ -179,19 +176,19 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_parameters() {
     return answer(list);
 }
 
-// The run now: {"time_s", "steps", "spheres", "hash", "kinetic_J", "potential_J",
-// "penetration_r", "behind_real_time"}.
+// The run now: {"time_s", "steps", "spheres", "hash", "paused" (by the page, or by an
+// alarm: a value not finite), "kinetic_J", "potential_J", "penetration_r",
+// "behind_real_time"}.
 EMSCRIPTEN_KEEPALIVE const char* spheres_state() {
     LiveView& v = live();
-    if (!v.simulation) return answer(Json::object());
+    if (!v.simulation || !v.session) return answer(Json::object());
     const physics::World& world = v.simulation->world();
     const physics::Diagnostics& d = v.session->diagnostics(0);
-    char hash[17];
-    std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(d.hash));
     return answer({{"time_s", world.time},
                    {"steps", world.stepCount},
                    {"spheres", world.size()},
-                   {"hash", hash},
+                   {"hash", web::hexHash(d.hash)},
+                   {"paused", v.simulation->paused},
                    {"kinetic_J", d.kinetic},
                    {"potential_J", d.potential},
                    {"penetration_r", d.maxPenetration},

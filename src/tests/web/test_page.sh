@@ -15,20 +15,26 @@ if ! command -v emcmake >/dev/null || ! command -v chromium >/dev/null; then
   exit 77
 fi
 export NODE_PATH=/usr/share/nodejs  # emscripten's optimizer needs Debian's acorn
-cmake -S "$source" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
-  -DCMAKE_TOOLCHAIN_FILE=/usr/share/emscripten/cmake/Modules/Platform/Emscripten.cmake >/dev/null
-cmake --build "$build" >/dev/null
+log=$(mktemp)
+profile=$(mktemp -d)  # chromium's, for this run alone
+if ! { cmake -S "$source" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+         -DCMAKE_TOOLCHAIN_FILE=/usr/share/emscripten/cmake/Modules/Platform/Emscripten.cmake &&
+       cmake --build "$build"; } >"$log" 2>&1; then
+  tail -40 "$log"
+  echo "the browser build failed (above)"
+  exit 1
+fi
 
 port=$(python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
 python3 -m http.server "$port" --bind 127.0.0.1 --directory "$build/site" >/dev/null 2>&1 &
 server=$!
-trap 'kill $server 2>/dev/null' EXIT
+trap 'kill $server 2>/dev/null; rm -rf "$profile" "$log"' EXIT
 for _ in $(seq 50); do python3 -c "import urllib.request; urllib.request.urlopen('http://127.0.0.1:$port/')" 2>/dev/null && break; sleep 0.1; done
 
 # What the page at ?QUERY exports, as JSON text.
 page() {
-  timeout 180 chromium --headless=new --no-sandbox --disable-gpu --user-data-dir="$build/chromium-profile" \
-    --virtual-time-budget=120000 --dump-dom "http://127.0.0.1:$port/index.html?$1" 2>/dev/null |
+  { timeout 180 chromium --headless=new --no-sandbox --disable-gpu --user-data-dir="$profile" \
+    --virtual-time-budget=120000 --dump-dom "http://127.0.0.1:$port/index.html?$1" 2>/dev/null || true; } |
     python3 -c 'import html, re, sys; m = re.search(r"<pre id=\"state\"[^>]*>([^<]*)</pre>", sys.stdin.read()); print(html.unescape(m.group(1)) if m else "")'
 }
 
@@ -73,38 +79,48 @@ while read -r query expected; do
 done <<'CASES'
 scene=nosuch&steps=10 no such preset
 scene=cradle&steps=10&beta=7 out of range
-scene=cradle&steps=10&methd=velocity methd
+scene=cradle&steps=10&methd=velocity unknown parameter 'methd'
+scene=cradle&steps=abc give a whole number of steps
 scene=pile&steps=1&count=7483 holds only
 CASES
 # A browser without WebGL 2: the page says so in one line.
-said=$(timeout 180 chromium --headless=new --no-sandbox --disable-3d-apis --user-data-dir="$build/chromium-profile" \
+said=$(timeout 180 chromium --headless=new --no-sandbox --disable-3d-apis --user-data-dir="$profile" \
   --virtual-time-budget=3000 --dump-dom "http://127.0.0.1:$port/index.html?scene=cradle" 2>/dev/null |
   grep -o 'class="error">Cannot run it: [^<]*' | sed 's/^class="error">//' || true)
 echo "no WebGL 2: ${said:-nothing said}"
 [ "$said" = "Cannot run it: this browser has no WebGL 2" ] || failed=1
 
-# The live view (no steps in the link): the settings of the link took effect...
-parameters=$(timeout 180 chromium --headless=new --no-sandbox --use-angle=swiftshader --enable-unsafe-swiftshader \
-  --user-data-dir="$build/chromium-profile" --virtual-time-budget=3000 --dump-dom \
-  "http://127.0.0.1:$port/index.html?scene=cradle&beta=0.5&method=velocity" 2>/dev/null |
-  python3 -c 'import html, re, sys; m = re.search(r"<pre id=\"parameters\"[^>]*>([^<]*)</pre>", sys.stdin.read()); print(html.unescape(m.group(1)) if m else "")')
-verdict=$(PARAMETERS="$parameters" python3 -c '
-import json, os
-table = {p["name"]: p for p in json.loads(os.environ["PARAMETERS"] or "[]")}
+# The live view (no steps in the link): it runs (its clock advanced), and the settings
+# of the link took effect...
+dom=$(timeout 180 chromium --headless=new --no-sandbox --use-angle=swiftshader --enable-unsafe-swiftshader \
+  --user-data-dir="$profile" --virtual-time-budget=3000 --dump-dom \
+  "http://127.0.0.1:$port/index.html?scene=cradle&beta=0.5&method=velocity" 2>/dev/null || true)
+verdict=$(DOM="$dom" python3 -c '
+import html, json, os, re
+dom = os.environ["DOM"]
+def exported(name):
+    m = re.search(r"<pre id=\"%s\"[^>]*>([^<]*)</pre>" % name, dom)
+    return json.loads(html.unescape(m.group(1)) or "null") if m else None
+table = {p["name"]: p for p in exported("parameters") or []}
+run = exported("state") or {}
 method = table.get("method", {})
-ok = table.get("beta", {}).get("value") == 0.5 and method.get("choices", [None])[int(method.get("value", -1))] == "velocity"
-print("took effect" if ok else "did not take effect: beta %s, method %s" % (table.get("beta", {}).get("value"), method.get("value")))')
+took = table.get("beta", {}).get("value") == 0.5 and method.get("choices", [None])[int(method.get("value", -1))] == "velocity"
+live = re.search(r"<body[^>]*class=\"live\"", dom) is not None and run.get("time_s", 0) > 0
+print("runs, took effect" if took and live else "live %s, time %s, beta %s, method %s" %
+      (live, run.get("time_s"), table.get("beta", {}).get("value"), method.get("value")))')
 echo "live view, beta=0.5&method=velocity: $verdict"
-[ "$verdict" = "took effect" ] || failed=1
+[ "$verdict" = "runs, took effect" ] || failed=1
 
 # ...and its screenshot shows the panel (dark, on the left) and the spheres (coloured,
 # in the view): not a blank page. It is kept as BUILD/page.png (the README's picture).
+rm -f "$build/page.png"  # never an earlier run's
 timeout 180 chromium --headless=new --no-sandbox --use-angle=swiftshader --enable-unsafe-swiftshader \
-  --user-data-dir="$build/chromium-profile" --virtual-time-budget=3000 --window-size=1280,720 \
+  --user-data-dir="$profile" --virtual-time-budget=3000 --window-size=1280,720 \
   --screenshot="$build/page.png" "http://127.0.0.1:$port/index.html?scene=cradle" >/dev/null 2>&1 || true
 verdict=$(python3 - "$build/page.png" <<'PY'
 import struct, sys, zlib
-data = open(sys.argv[1], "rb").read() if len(sys.argv) > 1 else b""
+import os
+data = open(sys.argv[1], "rb").read() if os.path.exists(sys.argv[1]) else b""
 if data[:8] != b"\x89PNG\r\n\x1a\n":
     print("no screenshot"); raise SystemExit
 chunks, at = {}, 8
@@ -133,7 +149,7 @@ def share(x0, x1, test):
         for x in range(x0, x1, 4):
             px = rows[y][x * channels:x * channels + 3]; total += 1; hits += test(px)
     return hits / max(total, 1)
-panel = share(5, 300, lambda p: max(p) < 40)
+panel = share(5, 300, lambda p: max(p) < 21)  # the panel's #0f1013, darker than the page's #16181d
 spheres = share(420, width, lambda p: max(p) - min(p) > 60)
 print("panel and spheres" if panel > 0.5 and spheres > 0.002 else "blank or broken: panel %.3f, spheres %.4f" % (panel, spheres))
 PY
