@@ -31,6 +31,9 @@ using web::Json;
 // s of wall time a frame may spend stepping, as in the window: beyond it a heavy scene
 // runs in slow motion ("behind real time") and the page stays responsive.
 constexpr double kStepBudgetSeconds = 1.0 / 30.0;
+// The page has no step-back timeline yet: the session keeps a few frames, not the
+// desktop's 200 MiB (a phone's tab would not have them).
+constexpr std::size_t kTimelineBytes = std::size_t(8) << 20;
 
 struct LiveView {
     std::unique_ptr<app::Simulation> simulation;
@@ -100,7 +103,7 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_open(const char* name, const char* sett
         // Made aside, then swapped in: a scene that cannot be built leaves the open one as it was.
         auto simulation = std::make_unique<app::Simulation>(web::sceneWithSettings(name, settings));
         simulation->wallBudget = kStepBudgetSeconds;
-        auto session = std::make_unique<app::Session>(*simulation);
+        auto session = std::make_unique<app::Session>(*simulation, kTimelineBytes);
         v.session = std::move(session);
         v.simulation = std::move(simulation);
         fitCamera(width, height);

@@ -40,7 +40,7 @@ void addRing(render::FrameSnapshot& snapshot, const render::Camera& camera, cons
 
 }  // namespace
 
-Session::Session(Simulation& primary) : primary_(primary) {
+Session::Session(Simulation& primary, std::size_t timelineBytes) : primary_(primary), timelineBytes_(timelineBytes) {
     resizeRuns();
     keep();
 }
@@ -48,7 +48,7 @@ Session::Session(Simulation& primary) : primary_(primary) {
 void Session::resizeRuns() {
     // Two runs keep 10 s each as one did; more share twice one run's memory.
     const std::size_t runs = std::size_t(runCount());
-    const std::size_t bytes = runs <= 2 ? RewindBuffer::kDefaultBytes : 2 * RewindBuffer::kDefaultBytes / runs;
+    const std::size_t bytes = runs <= 2 ? timelineBytes_ : 2 * timelineBytes_ / runs;
     rewind_.assign(runs, RewindBuffer(RewindBuffer::kDefaultFrames, bytes));
     stale_.assign(runs, 0);
 }

@@ -20,7 +20,9 @@ namespace app {
 
 class Session {
 public:
-    explicit Session(Simulation& primary);
+    // `timelineBytes`: the memory the step-back timeline may keep (the browser, which
+    // has no timeline yet, keeps little).
+    explicit Session(Simulation& primary, std::size_t timelineBytes = RewindBuffer::kDefaultBytes);
 
     // ---- the runs: 1, or 2 to kMostViews side by side ----
     int runCount() const { return comparison_ ? 1 + comparison_->count() : 1; }
@@ -117,6 +119,7 @@ private:
     std::unique_ptr<Comparison> comparison_;
     bool comparisonFromScene_ = false;  // started by the scene's "compare" key
     std::vector<RewindBuffer> rewind_;  // one per run
+    std::size_t timelineBytes_;         // for one or two runs; more share twice as much
     int selected_ = -1;
     SphereDrag drag_;
     Contacts latest_;
