@@ -156,9 +156,4 @@ void sceneBounds(const Simulation& simulation, glm::vec3& lo, glm::vec3& hi) {
     }
 }
 
-glm::ivec4 viewportRightOf(glm::ivec2 size, float panelPixels) {
-    const int x = std::clamp(static_cast<int>(panelPixels + 0.5f), 0, std::max(size.x - 1, 0));
-    return {x, 0, std::max(size.x - x, 1), std::max(size.y, 1)};
-}
-
 }  // namespace app

@@ -32,8 +32,4 @@ ui::Readouts makeReadouts(const Simulation& simulation, const ui::FrameTimes& ti
 // Axis-aligned bounds of the box (or of the spheres when there is none), m, for the camera.
 void sceneBounds(const Simulation& simulation, glm::vec3& lo, glm::vec3& hi);
 
-// The scene's viewport (x, y, width, height; GL's lower-left origin) in a framebuffer
-// of `size` pixels whose left `panelPixels` belong to the panel.
-glm::ivec4 viewportRightOf(glm::ivec2 size, float panelPixels);
-
 }  // namespace app

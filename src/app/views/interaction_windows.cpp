@@ -163,8 +163,6 @@ void drawMessage(const glm::vec4& scene, const ToolWindowsState& state) {
     ImGui::End();
 }
 
-float inspectorWidth() { return ImGui::GetFontSize() * 20.0f; }
-
 float drawInspector(const Placement& placement, const physics::World& world, int selected, bool paused,
                     int graphLevel, ToolWindowsState& state, ToolActions& actions) {
     if (selected < 0 || static_cast<std::size_t>(selected) >= world.size()) return 0.0f;
@@ -357,7 +355,8 @@ Placement docked(const Rect& rect, bool fitHeight) {
 
 }  // namespace
 
-ToolActions drawInteractionWindows(const Session& session, const WindowLayout& layout, ToolWindowsState& state) {
+ToolActions drawInteractionWindows(const Session& session, const WindowLayout& layout, std::vector<ViewLabel> labels,
+                                   ToolWindowsState& state) {
     ToolActions actions;
     const Simulation& simulation = session.run(0);
     const physics::World& world = simulation.world();
@@ -392,14 +391,11 @@ ToolActions drawInteractionWindows(const Session& session, const WindowLayout& l
                        &simulation.params(), simulation.paused, world.recordContacts, &contacts.solvedTogether},
                       state, actions);
     }
-    if (comparison) {
-        std::vector<ViewLabel> labels = comparisonLabels(simulation, *comparison, state.present);
-        for (std::size_t k = 0; k < labels.size() && k < std::size_t(kMostViews); ++k) {
-            labels[k].topLeft = layout.labels[k].min;
-            labels[k].room = layout.labels[k].size;
-        }
-        drawViewLabels(labels);
+    for (std::size_t k = 0; k < labels.size() && k < std::size_t(kMostViews); ++k) {
+        labels[k].topLeft = layout.labels[k].min;
+        labels[k].room = layout.labels[k].size;
     }
+    drawViewLabels(labels);
     drawMessage(asVec4(Rect{layout.scene.min, layout.scene.size}), state);
     return actions;
 }

@@ -33,7 +33,6 @@ struct ToolWindowsState {
     std::string inspectorRefusal;       // why the inspector's last edit was refused, shown under its fields
     int refusedSphere = -1;             // the sphere it was about
     float inspectorHeight = 0.0f;       // ImGui units, as last drawn (the layout keeps room for it)
-    bool present = false;               // the presentation layout: the views' labels show their titles only
 };
 
 struct ToolActions {
@@ -78,9 +77,6 @@ struct Placement {
     float height = 0.0f;     // ImGui units; 0: as tall as its content (up to maxHeight)
 };
 
-// The inspector's width (ImGui units).
-float inspectorWidth();
-
 // The selected sphere's p, v, r, m, editable while paused, and its level in slide 14's
 // contact graph (`graphLevel`: -1 reaches no plane; kLevelNotShown: not shown). Returns
 // the height its content needs (ImGui units), 0 when nothing was drawn.
@@ -110,10 +106,6 @@ int explainedPartner(const Session& session, const ToolWindowsState& state);
 void drawExplainer(const Placement& placement, const ExplainerInput& input, ToolWindowsState& state,
                    ToolActions& actions);
 
-// All of the above for the session's state, where `layout` puts them: the timeline
-// bar, the inspector and the explainer of the selected sphere in the dock, the views'
-// labels side by side, and the message.
-ToolActions drawInteractionWindows(const Session& session, const WindowLayout& layout, ToolWindowsState& state);
 
 // A view's label: its title and readouts, in the place the layout keeps for it.
 struct ViewLabel {
@@ -130,5 +122,11 @@ glm::vec2 viewLabelSize(const ViewLabel& label);
 float labelsWidth(const std::vector<ViewLabel>& labels);
 float labelsHeight(const std::vector<ViewLabel>& labels, float width);
 void drawViewLabels(const std::vector<ViewLabel>& labels);
+
+// All of the above for the session's state, where `layout` puts them: the timeline
+// bar, the inspector and the explainer of the selected sphere in the dock, the views'
+// `labels` side by side (comparisonLabels; empty for one view), and the message.
+ToolActions drawInteractionWindows(const Session& session, const WindowLayout& layout, std::vector<ViewLabel> labels,
+                                   ToolWindowsState& state);
 
 }  // namespace app

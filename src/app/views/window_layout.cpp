@@ -141,7 +141,7 @@ float arrangeViews(glm::ivec4 area, int count, int gap, int labelWidth, const La
         glm::ivec4 cell{x, top - h, std::max(w, 1), std::max(h, 1)};
         labels[k] = {cell.x, cell.y, 0, 0};
         if (labelled && bestAbove) {
-            const int label = std::min(above(cell.z), cell.w - 1);
+            const int label = std::min(above(width), cell.w - 1);  // one height for every view: they stay alike
             labels[k] = {cell.x, cell.y + cell.w - label, cell.z, label};
             cell.w -= label;
         } else if (labelled) {

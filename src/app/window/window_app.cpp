@@ -52,7 +52,8 @@ private:
     void handleKey(int key);
     void handleMouse();
     void frame(double dt);
-    void drawScene();
+    void makeLabels();
+    void drawScene(const ViewLayout& views);
     void apply(const ui::PanelActions& actions);
     void loadPreset(int index);
     void loadFile(const std::string& path);
@@ -347,7 +348,15 @@ void WindowApp::apply(const ui::PanelActions& a) {
     }
 }
 
-void WindowApp::drawScene() {
+// The views side by side: their labels with this step's numbers (none for one view).
+void WindowApp::makeLabels() {
+    labels_.clear();
+    if (const Comparison* comparison = session_.comparison()) {
+        labels_ = comparisonLabels(simulation_, *comparison, panel_.present);
+    }
+}
+
+void WindowApp::drawScene(const ViewLayout& views) {
     const auto start = std::chrono::steady_clock::now();
     renderer_.style.showBox = panel_.showBox;
     renderer_.style.showGrid = panel_.showGrid;
@@ -359,7 +368,6 @@ void WindowApp::drawScene() {
     glViewport(0, 0, size.x, size.y);
     glClearColor(ui::kBackdropColor[0], ui::kBackdropColor[1], ui::kBackdropColor[2], 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
-    const ViewLayout views = layout().views;
     for (int k = 0; k < views.count; ++k) {
         const glm::ivec4& view = views.views[k];
         buildSnapshot(session_.run(k), panel_, snapshots_[k]);
@@ -377,12 +385,10 @@ void WindowApp::frame(double dt) {
     imguiRenderer_.newFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
-    input_.tools().present = panel_.present;
-    labels_.clear();
-    if (const Comparison* comparison = session_.comparison()) {
-        labels_ = comparisonLabels(simulation_, *comparison, panel_.present);
+    if (!cameraFitted_) {  // fitted to the views the labels leave
+        makeLabels();
+        resetCamera();
     }
-    if (!cameraFitted_) resetCamera();
     cameraFitted_ = true;
     input_.expireMessage(window_->time());
     handleMouse();
@@ -396,16 +402,17 @@ void WindowApp::frame(double dt) {
     timing_.steppingMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - stepping).count();
     profile_.lap(FrameProfile::Stepping);
     if (input_.takeFoldReadouts()) panel_.readoutsOpen = false;  // the views' labels carry them
+    makeLabels();  // once a frame: the layout measures them, the windows draw them
     const WindowLayout placed = layout();
     followViewShape(placed.views);
-    drawScene();
+    drawScene(placed.views);
     profile_.lap(FrameProfile::Draw);
     ui::Readouts readouts = makeReadouts(simulation_, timing_);
     readouts.diagnostics = session_.diagnostics(0);  // measured again after an edit or a step back
     ui::PanelActions actions = ui::drawControlPanel(simulation_.scene(), simulation_.timeScale, readouts, panel_, presets_);
     const auto box = [](const Rect& r) { return glm::vec4(r.min, r.size); };
     if (!panel_.present) ui::drawReadouts(readouts, panel_, actions, box(placed.readoutsLine), box(placed.readouts));
-    const ToolActions tools = drawInteractionWindows(session_, placed, input_.tools());
+    const ToolActions tools = drawInteractionWindows(session_, placed, labels_, input_.tools());
     ImGui::Render();
     profile_.lap(FrameProfile::Layout);
     imguiRenderer_.render(ImGui::GetDrawData());
