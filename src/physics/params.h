@@ -65,7 +65,11 @@ enum class ResponseModel {
 enum class PositionSplit { HalfHalf, MassWeighted };
 
 // The order in which sphere pairs are visited in each pass (slide 14: order matters).
-enum class PairOrder { Index, Reversed, Shuffled };
+// Index, reversed and shuffled are the lecture's. Colored is not: the pairs are coloured so
+// that no two of one colour share a sphere, and visited colour by colour (colored_order.cpp).
+// It is a different, fixed order of correction, chosen because a colour's pairs can be
+// answered in any order, so threads share them without waiting.
+enum class PairOrder { Index, Reversed, Shuffled, Colored };
 
 // Where candidate pairs come from: a uniform grid, or the lecture's O(N^2) loop.
 enum class BroadPhase { Grid, AllPairs };

@@ -39,8 +39,8 @@ constexpr std::uint32_t kParallelLevelSpheres = 512;
 // touching. A pair the passes left a hair apart is an edge too, so the sweep's moves, which
 // may close it, still reach the spheres above it (a column at K = 4 kept a gap under its
 // top sphere, which no level then lifted: 0.47 % of r). Each sphere's neighbours by
-// number, whatever the pair order (index, reversed, shuffled): pairs taken in index
-// order (i, then j) give them so, and shuffled ones are sorted.
+// number, whatever the pair order: pairs taken in index order (i, then j) give them so,
+// and shuffled or coloured ones are sorted.
 void findEdges(const World& world, PairOrder order, ContactGraph& graph) {
     const std::vector<SpherePair>& pairs = world.workspace.visitOrder;
     const std::size_t n = world.size();
@@ -68,7 +68,7 @@ void findEdges(const World& world, PairOrder order, ContactGraph& graph) {
     } else {
         std::for_each(pairs.begin(), pairs.end(), add);
     }
-    if (order != PairOrder::Shuffled) return;
+    if (order != PairOrder::Shuffled && order != PairOrder::Colored) return;
     for (std::size_t i = 0; i < n; ++i) {
         std::sort(graph.neighbour.begin() + graph.edgeStart[i], graph.neighbour.begin() + graph.edgeStart[i + 1]);
     }

@@ -171,13 +171,59 @@ private:
     std::vector<Share> shares_;
 };
 
+// Pair order `colored` (colored_order.cpp): 64 colours in which no two pairs share a
+// sphere, then the overflow colour, whose pairs may (a sphere with very many neighbours).
+constexpr unsigned kOverflowColor = 64;
+constexpr unsigned kPairColors = kOverflowColor + 1;
+
+// Sorts visitOrder (in index order) colour by colour into Workspace::colorStart's ranges.
+void colorPairs(World& world);
+
+// A colour with fewer pairs than this is visited on one thread: handing it out would
+// cost more than it saves (a run of the team costs a few microseconds).
+constexpr std::uint32_t kColorShareMin = 2048;
+// Tasks per thread of a colour, taken as they come, so that a thread slowed by another
+// process leaves its part to the others.
+constexpr int kColorTasksPerThread = 4;
+
+// The colored order's pass: colour after colour, each colour's pairs cut into ranges
+// that threads take as they come (no waits: its pairs share no sphere), the overflow
+// colour on one thread. The same result on any thread count.
+template <class Visit>
+void forEachColor(World& world, const Params& params, StepStats& stats, const Visit& visit) {
+    const Workspace& ws = world.workspace;
+    const int threads = threadsFor(world, params);
+    const SpherePair* pairs = ws.visitOrder.data();
+    std::vector<StepStats> taskStats;
+    for (unsigned c = 0; c < kPairColors; ++c) {
+        const std::uint32_t first = ws.colorStart[c], size = ws.colorStart[c + 1] - first;
+        if (threads == 1 || c == kOverflowColor || size < kColorShareMin) {
+            visit(pairs, first, first + size, stats);
+            continue;
+        }
+        const int tasks = kColorTasksPerThread * threads;
+        taskStats.assign(std::size_t(tasks), StepStats{});
+        runTasks(threads, tasks, [&](int t) {
+            StepStats local;  // neighbours in taskStats share cache lines: count apart
+            const Range range = rangeOf(size, t, tasks);
+            visit(pairs, first + range.begin, first + range.end, local);
+            taskStats[std::size_t(t)] = local;
+        });
+        for (const StepStats& s : taskStats) stats += s;
+    }
+}
+
 // visit(pairs, first, last, stats) on ranges [first, last) of pairs = pairsAsVisited()
 // that together give the result of visiting them in pass order: on one thread the pass
-// order itself; on several, SharedPass.
+// order itself; on several, SharedPass (or, in the colored order, forEachColor).
 template <class Visit>
 void forEachPairInPassOrder(World& world, const Params& params, StepStats& stats, const Visit& visit) {
     const Workspace& ws = world.workspace;
     const int threads = threadsFor(world, params);
+    if (params.order == PairOrder::Colored) {
+        forEachColor(world, params, stats, visit);
+        return;
+    }
     if (!pairsSharedOut(world, params)) {
         visit(ws.visitOrder.data(), 0u, std::uint32_t(ws.visitOrder.size()), stats);
         return;

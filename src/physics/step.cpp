@@ -95,11 +95,12 @@ void keepPairsWithinReach(World& world, double margin, int threads) {
     for (const TaskScratch& task : ws.tasks) ws.visitOrder.insert(ws.visitOrder.end(), task.pairs.begin(), task.pairs.end());
 }
 
-void reorder(std::vector<SpherePair>& pairs, PairOrder order, std::uint64_t seed,
-             std::uint64_t stepCount) {
+void reorder(World& world, PairOrder order) {
+    std::vector<SpherePair>& pairs = world.workspace.visitOrder;
+    if (order == PairOrder::Colored) colorPairs(world);
     if (order == PairOrder::Reversed) std::reverse(pairs.begin(), pairs.end());
     if (order != PairOrder::Shuffled) return;
-    Random random(seed ^ (stepCount * 0x9E3779B97F4A7C15ull));
+    Random random(world.seed ^ (world.stepCount * 0x9E3779B97F4A7C15ull));
     for (std::size_t k = pairs.size(); k > 1; --k) std::swap(pairs[k - 1], pairs[random.below(k)]);
 }
 
@@ -305,10 +306,11 @@ void findOrderedPairs(World& world, const Params& params, StepStats& stats) {
         }
     }
     stats.candidatePairs += ws.visitOrder.size();
-    reorder(ws.visitOrder, params.order, world.seed, world.stepCount);
+    reorder(world, params.order);
     const int passThreads = threadsFor(world, params);
     ws.shareThreads = 1;
-    if (passThreads > 1) sharePairsOut(world, passThreads);
+    // The colored order shares out each colour as it goes (forEachColor).
+    if (passThreads > 1 && params.order != PairOrder::Colored) sharePairsOut(world, passThreads);
 }
 
 namespace {

@@ -46,38 +46,40 @@ constexpr Access param() {
 
 // --- the entries, grouped by kind so that each reads as one line of the table ---
 
+// The fields every entry has; the kind's builders below set the rest.
+Parameter entry(std::string_view name, std::string_view label, std::string_view unit, ParameterKind kind,
+                double min, double max, double defaultValue, std::string_view tooltip, Access access) {
+    Parameter p;
+    p.name = name;
+    p.label = label;
+    p.unit = unit;
+    p.kind = kind;
+    p.min = min;
+    p.max = max;
+    p.defaultValue = defaultValue;
+    p.tooltip = tooltip;
+    p.get = access.get;
+    p.set = access.set;
+    return p;
+}
+
 Parameter real(std::string_view name, std::string_view label, std::string_view unit, double min,
                double max, double defaultValue, std::string_view tooltip, Access access) {
-    return {name,    label,         unit,
-            min,     max,           defaultValue,
-            tooltip, Applies::Live, ParameterKind::Real,
-            {},      access.get,    access.set};
+    return entry(name, label, unit, ParameterKind::Real, min, max, defaultValue, tooltip, access);
 }
 
 Parameter integer(std::string_view name, std::string_view label, double min, double max,
                   double defaultValue, std::string_view tooltip, Access access) {
-    return {name,    label,         "",
-            min,     max,           defaultValue,
-            tooltip, Applies::Live, ParameterKind::Integer,
-            {},      access.get,    access.set};
+    return entry(name, label, "", ParameterKind::Integer, min, max, defaultValue, tooltip, access);
 }
 
 Parameter choice(std::string_view name, std::string_view label,
                  std::vector<std::string_view> choices, double defaultValue,
                  std::string_view tooltip, Access access) {
     const double last = static_cast<double>(choices.size()) - 1.0;
-    return {name,
-            label,
-            "",
-            0.0,
-            last,
-            defaultValue,
-            tooltip,
-            Applies::Live,
-            ParameterKind::Choice,
-            std::move(choices),
-            access.get,
-            access.set};
+    Parameter p = entry(name, label, "", ParameterKind::Choice, 0.0, last, defaultValue, tooltip, access);
+    p.choices = std::move(choices);
+    return p;
 }
 
 Parameter restart(Parameter p) {
@@ -87,6 +89,12 @@ Parameter restart(Parameter p) {
 
 Parameter zeroMeaning(std::string_view meaning, Parameter p) {
     p.zeroMeans = meaning;
+    return p;
+}
+
+// `notes`: one per choice, "" for none.
+Parameter withChoiceNotes(std::vector<std::string_view> notes, Parameter p) {
+    p.choiceNotes = std::move(notes);
     return p;
 }
 
@@ -249,11 +257,17 @@ std::vector<Parameter> makeTable() {
                "Slide 13: correct position p = p \u00b1 d/2 u, half of the collision depth d "
                "each. mass: the lighter sphere moves more (by d m2/(m1 + m2) and d m1/(m1 + m2)).",
                param<&Params::split>()),
-        choice("order", "pair order", {"index", "reversed", "shuffled"},
-               static_cast<double>(kDefaults.order),
-               "Slide 14: the order of correction does matter. Sphere pairs are visited in "
-               "index order, reversed, or shuffled with the scene's seed.",
-               param<&Params::order>()),
+        withChoiceNotes({"", "", "", "not the lecture's"},
+                        choice("order", "pair order", {"index", "reversed", "shuffled", "colored"},
+                               static_cast<double>(kDefaults.order),
+                               "Slide 14: the order of correction does matter. Sphere pairs are "
+                               "visited in index order, reversed, or shuffled with the scene's seed. "
+                               "colored is not the lecture's: the pairs are coloured so that no two "
+                               "of a colour share a sphere, and visited colour by colour. It is "
+                               "another fixed order of correction (compare it with index: the order "
+                               "still matters), chosen for speed: threads share a colour's pairs "
+                               "without waiting.",
+                               param<&Params::order>())),
         zeroMeaning("auto",
                     integer("threads", "solver threads", 0, physics::kMostSolverThreads,
                             kDefaults.threads,
@@ -344,6 +358,12 @@ std::string parseValue(const Parameter& p, std::string_view text, double& value)
 const std::vector<Parameter>& parameterTable() {
     static const std::vector<Parameter> table = makeTable();
     return table;
+}
+
+std::string Parameter::choiceShown(std::size_t k) const {
+    std::string shown(choices.at(k));
+    if (k < choiceNotes.size() && !choiceNotes[k].empty()) shown += " (" + std::string(choiceNotes[k]) + ")";
+    return shown;
 }
 
 const Parameter* findParameter(std::string_view name) {

@@ -43,8 +43,13 @@ struct Parameter {
     // Integer: what the slider shows for 0 when 0 means something else than none
     // (threads = 0: one per core); "": the number. A literal, shown as an ImGui format.
     std::string_view zeroMeans = {};
+    // Choice: what the UI shows beside each name ("" nothing; empty: none at all), such as
+    // an order that is not the lecture's.
+    std::vector<std::string_view> choiceNotes;
 
     bool availableIn(const Scene& scene) const { return !available || available(scene); }
+    // Choice k's name with its note: "colored (not the lecture's)".
+    std::string choiceShown(std::size_t k) const;
 };
 
 // Every parameter, in the order the UI shows them: the Live ones, then the Restart ones.

@@ -49,4 +49,12 @@ inline void addRandomSpheres(physics::World& world, std::size_t n, double rMin, 
     }
 }
 
+// Newton's cradle: five touching spheres of radius 0.125 m and 1 kg on the x axis
+// (exactly representable centres, so they touch exactly); sphere 0 strikes at v0 (m/s).
+inline physics::World cradle(double v0) {
+    physics::World world;
+    for (int k = 0; k < 5; ++k) world.addSphere({0.25 * k, 0, 0}, {k == 0 ? v0 : 0.0, 0, 0}, 0.125, 1.0);
+    return world;
+}
+
 }  // namespace fixtures

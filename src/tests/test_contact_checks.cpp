@@ -22,14 +22,6 @@ void run(physics::World& world, const physics::Params& params, int steps) {
     for (int k = 0; k < steps; ++k) physics::step(world, params);
 }
 
-// Five touching spheres of radius 0.125 m on the x axis (exactly representable
-// centres, so they touch exactly); sphere 0 strikes at v0.
-physics::World cradle(double v0) {
-    physics::World world;
-    for (int k = 0; k < 5; ++k) world.addSphere({0.25 * k, 0, 0}, {k == 0 ? v0 : 0.0, 0, 0}, 0.125, 1.0);
-    return world;
-}
-
 // n spheres of radii in [0.01, 0.04] m placed anywhere in a cube, overlaps allowed.
 physics::World scattered(std::size_t n, double extent, std::uint64_t seed) {
     physics::Random random(seed);
@@ -83,7 +75,7 @@ TEST(ContactChecks, NewtonsCradleInIndexOrderTakesOnePass) {
         physics::Params params = fixtures::exactParams(1.0 / 240.0, dvec3(0.0));
         params.method = method;
         params.passes = 1;
-        physics::World world = cradle(v0);
+        physics::World world = fixtures::cradle(v0);
         physics::step(world, params);
         for (int k = 0; k < 4; ++k) EXPECT_NEAR(world.velocity[k].x, 0.0, 1e-6 * v0) << k;
         EXPECT_NEAR(world.velocity[4].x, v0, 1e-6 * v0);
@@ -101,7 +93,7 @@ TEST(ContactChecks, NewtonsCradleInReversedOrderNeedsOnePassPerContact) {
     params.order = physics::PairOrder::Reversed;
     for (int passes = 1; passes <= 4; ++passes) {
         params.passes = passes;
-        physics::World world = cradle(v0);
+        physics::World world = fixtures::cradle(v0);
         physics::step(world, params);
         for (int k = 0; k < 5; ++k) {
             EXPECT_NEAR(world.velocity[k].x, k == passes ? v0 : 0.0, 1e-6 * v0) << passes << " " << k;

@@ -53,13 +53,6 @@ double kinetic(const physics::World& world) {
     return sum;
 }
 
-// Five touching spheres of radius 0.125 m on the x axis; sphere 0 strikes at v0.
-physics::World cradle(double v0) {
-    physics::World world;
-    for (int k = 0; k < 5; ++k) world.addSphere({0.25 * k, 0, 0}, {k == 0 ? v0 : 0.0, 0, 0}, 0.125, 1.0);
-    return world;
-}
-
 }  // namespace
 
 // Sequential, pairs (0,1), (0,2), (1,2) in index order, elastic (equal masses swap their
@@ -110,13 +103,13 @@ TEST(MultipleCollisions, UntilConvergedTakesThePassesTheCradleNeedsAndReportsThe
     physics::Params params = exact(Solver::UntilConverged);
     params.order = physics::PairOrder::Reversed;
     params.passes = 100;
-    physics::World world = cradle(2.0);
+    physics::World world = fixtures::cradle(2.0);
     physics::StepStats stats = physics::step(world, params);
     EXPECT_EQ(stats.passesUsed, 4u);
     EXPECT_EQ(stats.passCapHits, 0u);
     for (int k = 0; k < 5; ++k) EXPECT_NEAR(world.velocity[k].x, k == 4 ? 2.0 : 0.0, 1e-12) << k;
     params.passes = 2;
-    world = cradle(2.0);
+    world = fixtures::cradle(2.0);
     stats = physics::step(world, params);
     EXPECT_EQ(stats.passesUsed, 2u);
     EXPECT_EQ(stats.passCapHits, 1u);
@@ -130,7 +123,7 @@ TEST(MultipleCollisions, UntilConvergedSavesTheVelocityMethodsCradle) {
     physics::Params params = exact(Solver::UntilConverged, Method::VelocityBased);
     params.order = physics::PairOrder::Reversed;
     params.passes = 10;
-    physics::World world = cradle(2.0);
+    physics::World world = fixtures::cradle(2.0);
     for (int k = 0; k < 60; ++k) physics::step(world, params);
     EXPECT_NEAR(kinetic(world), 2.0, 1e-12);
     EXPECT_NEAR(world.velocity[4].x, 2.0, 1e-12);
@@ -164,7 +157,7 @@ TEST(MultipleCollisions, TheGlobalSolveAnswersBernoulliExactly) {
 // sphere 0 bounces back at -0.6 v0, the row moves off at 0.4 v0 (energy 0.36 + 4 x 0.16 = 1).
 // A real cradle sends the last ball alone: the flaw Smith et al. name, asserted here.
 TEST(MultipleCollisions, TheGlobalSolveMovesTheWholeCradleTogether) {
-    physics::World world = cradle(2.0);
+    physics::World world = fixtures::cradle(2.0);
     physics::step(world, exact(Solver::Lcp, Method::VelocityBased));
     EXPECT_NEAR(world.velocity[0].x, -0.6 * 2.0, 1e-9);
     for (int k = 1; k < 5; ++k) EXPECT_NEAR(world.velocity[k].x, 0.4 * 2.0, 1e-9) << k;
@@ -197,7 +190,7 @@ TEST(MultipleCollisions, GeneralizedReflectionsAnswerBernoulliAsTheGlobalSolve) 
 // others at rest, and round 5 finds nothing approaching. Break-away, where the global
 // solve moved the whole row at 0.4 v0.
 TEST(MultipleCollisions, GeneralizedReflectionsSendTheCradlesLastBallAlone) {
-    physics::World world = cradle(2.0);
+    physics::World world = fixtures::cradle(2.0);
     physics::Params params = exact(Solver::GeneralizedReflections, Method::VelocityBased);
     params.passes = 1;
     const physics::StepStats stats = physics::step(world, params);
@@ -212,7 +205,7 @@ TEST(MultipleCollisions, GeneralizedReflectionsSendTheCradlesLastBallAlone) {
 // Round 2: (1, 2) approaches at 3v/4: 1 keeps 3v/16, 2 takes 9v/16. Then (0, 1) approaches
 // (v/4 > 3v/16), and so on: the rounds run until the row is ordered by speed.
 TEST(MultipleCollisions, GeneralizedRestitutionBlendsTheInelasticAndElasticAnswers) {
-    physics::World world = cradle(2.0);
+    physics::World world = fixtures::cradle(2.0);
     physics::Params params = exact(Solver::GeneralizedReflections, Method::VelocityBased);
     params.beta = 0.5;
     params.passes = 1;

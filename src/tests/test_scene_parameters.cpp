@@ -168,7 +168,7 @@ TEST(ApplySetting, RefusesValuesThatAreNotNumbersOrChoices) {
     EXPECT_EQ(applySetting(scene, "method=fast"),
               "method = 'fast' is not a choice; choices: position, velocity, response-only, reflection, continuous");
     EXPECT_EQ(applySetting(scene, "order=2"),
-              "order = '2' is not a choice; choices: index, reversed, shuffled");
+              "order = '2' is not a choice; choices: index, reversed, shuffled, colored");
     EXPECT_EQ(scene.params.alpha, physics::Params{}.alpha);
 }
 

@@ -230,8 +230,8 @@ TEST(AutomaticThreads, OneSlowStepDoesNotDecide) {
 }
 
 TEST(SolverThreads, EveryMethodAndOrderReachesTheSameStateOnAnyThreadCount) {
-    for (const char* method : {"position", "velocity", "response-only"}) {
-        for (const char* order : {"index", "reversed", "shuffled"}) {
+    for (const char* method : {"position", "velocity", "response-only", "reflection"}) {
+        for (const char* order : {"index", "reversed", "shuffled", "colored"}) {
             std::set<std::uint64_t> hashes;
             std::uint64_t contacts = 0;
             for (const char* threads : {"1", "2", "3"}) {
@@ -243,7 +243,7 @@ TEST(SolverThreads, EveryMethodAndOrderReachesTheSameStateOnAnyThreadCount) {
                 contacts = physics::measure(world, scene.params).sphereContacts;
             }
             EXPECT_EQ(hashes.size(), 1u) << method << ", " << order;
-            EXPECT_GT(contacts, 2500u) << "the pile has landed";
+            EXPECT_GT(contacts, 2000u) << "the pile has landed";
         }
     }
 }

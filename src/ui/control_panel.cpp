@@ -49,10 +49,10 @@ void parameterWidget(const scenes::Parameter& p, const scenes::Scene& scene, Pan
     const std::string label = labelOf(p);
     if (p.kind == scenes::ParameterKind::Choice) {
         int index = static_cast<int>(value);
-        const std::string current(p.choices[static_cast<std::size_t>(index)]);
+        const std::string current = p.choiceShown(static_cast<std::size_t>(index));
         if (ImGui::BeginCombo(label.c_str(), current.c_str())) {
             for (std::size_t k = 0; k < p.choices.size(); ++k) {
-                const std::string name(p.choices[k]);
+                const std::string name = p.choiceShown(k);
                 if (ImGui::Selectable(name.c_str(), static_cast<int>(k) == index)) {
                     value = static_cast<double>(k);
                     changed = true;

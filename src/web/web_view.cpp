@@ -162,7 +162,11 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_parameters() {
     for (const scenes::Parameter& p : scenes::parameterTable()) {
         if (!p.availableIn(scene)) continue;
         Json choices = Json::array();
-        for (std::string_view choice : p.choices) choices.push_back(std::string(choice));
+        Json shown = Json::array();
+        for (std::size_t k = 0; k < p.choices.size(); ++k) {
+            choices.push_back(std::string(p.choices[k]));
+            shown.push_back(p.choiceShown(k));
+        }
         list.push_back({{"name", std::string(p.name)},
                         {"label", std::string(p.label)},
                         {"unit", std::string(p.unit)},
@@ -174,6 +178,7 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_parameters() {
                                                                             : "real"},
                         {"restarts", p.applies == scenes::Applies::Restart},
                         {"choices", choices},
+                        {"choices_shown", shown},
                         {"value", p.get(scene)}});
     }
     return answer(list);

@@ -1,0 +1,179 @@
+// The pair order `colored` (not the lecture's, colored_order.cpp): its colouring, and the
+// physics guide's checks that do not depend on the order, run in it (energy, momentum and
+// the elastic gas in test_canonical_checks.cpp, the same state on any thread count in
+// test_solver_threads.cpp).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "physics/diagnostics.h"
+#include "physics/solver_stages.h"
+#include "physics/step.h"
+#include "physics_fixtures.h"
+#include "scenes/parameters.h"
+#include "scenes/presets.h"
+#include "scenes/scene.h"
+#include "scenes/scene_json.h"
+
+using glm::dvec3;
+using physics::Method;
+using physics::PairOrder;
+
+namespace {
+
+const Method kMethods[] = {Method::PositionBased, Method::VelocityBased};
+
+void run(physics::World& world, const physics::Params& params, int steps) {
+    for (int k = 0; k < steps; ++k) physics::step(world, params);
+}
+
+// The pile preset with `count` spheres of `radius` m, after "name=value" settings.
+scenes::Scene pile(int count, double radius, std::initializer_list<std::string> settings) {
+    scenes::Scene scene = scenes::loadScene(scenes::presetPath("11_pile"));
+    EXPECT_EQ(scenes::applySetting(scene, "count=" + std::to_string(count)), "");
+    EXPECT_EQ(scenes::applySetting(scene, "radius=" + std::to_string(radius)), "");
+    for (const std::string& setting : settings) EXPECT_EQ(scenes::applySetting(scene, setting), "");
+    return scene;
+}
+
+// The colours of the last solver step: each colour's pairs share no sphere (but the
+// overflow's), and the pairs are those of the index order, each once.
+struct Colouring {
+    unsigned colours = 0;         // colours that hold a pair, the overflow not counted
+    unsigned mostPairs = 0;       // the most pairs one sphere has
+    std::size_t overflow = 0;     // pairs in the overflow colour
+    bool disjoint = true;         // no two pairs of a colour (but the overflow) share a sphere
+    bool eachPairOnce = true;     // the same pairs as the index order's
+};
+
+Colouring colouringOf(const physics::World& world, const physics::Params& params) {
+    const physics::Workspace& ws = world.workspace;
+    Colouring c;
+    for (unsigned colour = 0; colour < physics::kPairColors; ++colour) {
+        const std::uint32_t first = ws.colorStart[colour], last = ws.colorStart[colour + 1];
+        if (colour == physics::kOverflowColor) {
+            c.overflow = last - first;
+            continue;
+        }
+        c.colours += last > first;
+        std::set<std::uint32_t> spheres;
+        for (std::uint32_t k = first; k < last; ++k) {
+            c.disjoint = c.disjoint && spheres.insert(ws.visitOrder[k].i).second;
+            c.disjoint = c.disjoint && spheres.insert(ws.visitOrder[k].j).second;
+        }
+    }
+    std::vector<unsigned> pairsOf(world.size(), 0);
+    for (const auto& p : ws.visitOrder) c.mostPairs = std::max({c.mostPairs, ++pairsOf[p.i], ++pairsOf[p.j]});
+    physics::World indexed = world;
+    physics::Params index = params;
+    index.order = PairOrder::Index;
+    physics::StepStats none;
+    physics::findOrderedPairs(indexed, index, none);
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> a, b;
+    for (const auto& p : ws.visitOrder) a.emplace_back(p.i, p.j);
+    for (const auto& p : indexed.workspace.visitOrder) b.emplace_back(p.i, p.j);
+    std::sort(a.begin(), a.end());
+    c.eachPairOnce = a == b;
+    return c;
+}
+
+}  // namespace
+
+// The landed pile of 5000: a sphere with D pairs needs D colours, and greedy colouring
+// takes at most 2 D - 1 (a pair meets at most 2 (D - 1) others); never the overflow.
+TEST(ColoredOrder, NoTwoPairsOfAColourShareASphere) {
+    const scenes::Scene scene = pile(5000, 0.025, {"order=colored"});
+    physics::World world = scenes::buildWorld(scene);
+    run(world, scene.params, 60);  // 1 s: landed
+    physics::StepStats none;
+    physics::findOrderedPairs(world, scene.params, none);
+    ASSERT_GT(world.workspace.visitOrder.size(), 8000u);
+    const Colouring c = colouringOf(world, scene.params);
+    EXPECT_TRUE(c.disjoint);
+    EXPECT_TRUE(c.eachPairOnce);
+    EXPECT_EQ(c.overflow, 0u);
+    EXPECT_GE(c.colours, c.mostPairs);
+    EXPECT_LE(c.colours, 2 * c.mostPairs - 1);
+    EXPECT_GE(c.mostPairs, 6u) << "a pile, not a gas";
+}
+
+// A sphere touching 100 small ones has more pairs than there are colours: the pairs past
+// the 64th go to the overflow, visited in index order, and the run is the same on any
+// thread count.
+TEST(ColoredOrder, ASphereWithMorePairsThanColoursFillsTheOverflow) {
+    physics::Params params = fixtures::exactParams(1.0 / 240.0, dvec3(0.0));
+    params.order = PairOrder::Colored;
+    physics::World world;
+    world.addSphere({0, 0, 0}, {0, 0, 0}, 1.0, 100.0);
+    for (int k = 0; k < 100; ++k) {  // on a spiral over the big sphere's surface, pressed in
+        const double z = 1.0 - (2.0 * k + 1.0) / 100.0, ring = std::sqrt(1.0 - z * z), turn = 2.399963 * k;
+        world.addSphere(1.04 * dvec3(ring * std::cos(turn), ring * std::sin(turn), z), {0, 0, 0}, 0.05, 0.01);
+    }
+    physics::StepStats none;
+    physics::findOrderedPairs(world, params, none);
+    const Colouring c = colouringOf(world, params);
+    EXPECT_EQ(c.overflow, 36u) << "100 pairs with the big sphere, 64 coloured";
+    EXPECT_TRUE(c.disjoint);
+    EXPECT_TRUE(c.eachPairOnce);
+}
+
+// Slide 14's lesson still shows: in the cradle, the colored order visits (0,1), (2,3),
+// then (1,2), (3,4): with the position method one pass carries the strike two spheres on,
+// and two reach the last (index order needs one pass, reversed four).
+TEST(ColoredOrder, NewtonsCradleNeedsTwoPasses) {
+    const double v0 = 2.0;
+    physics::Params params = fixtures::exactParams(1.0 / 240.0, dvec3(0.0));
+    params.order = PairOrder::Colored;
+    for (int passes = 1; passes <= 2; ++passes) {
+        params.passes = passes;
+        physics::World world = fixtures::cradle(v0);
+        physics::step(world, params);
+        for (int k = 0; k < 5; ++k) {
+            EXPECT_NEAR(world.velocity[k].x, k == 2 * passes ? v0 : 0.0, 1e-6 * v0) << passes << " " << k;
+        }
+    }
+}
+
+// The guide's resting sphere, three times side by side, touching: sliding on the floor,
+// they stop without sinking, into the floor or into each other.
+TEST(ColoredOrder, RestingSpheresStopWithoutSinking) {
+    for (Method method : kMethods) {
+        physics::Params params = fixtures::exactParams(1.0 / 60.0);
+        params.method = method;
+        params.order = PairOrder::Colored;
+        params.epsilon = 2 * 9.81 * params.solverStep();
+        params.mu = 0.9;
+        physics::World world;
+        fixtures::addBox(world, {2, 2, 2});
+        for (int k = 0; k < 3; ++k) world.addSphere({0.2 * k, 0, 0.1}, {0.3, 0.2, 0}, 0.1, 1.0);
+        run(world, params, 300);  // 5 s
+        const physics::Diagnostics d = physics::measure(world, params);
+        for (int k = 0; k < 3; ++k) {
+            EXPECT_LE(glm::length(world.velocity[k]), 1e-3) << k;
+            EXPECT_EQ(world.contactState[k], physics::ContactState::Static) << k;
+        }
+        EXPECT_LE(d.maxPenetration, 0.01);
+        EXPECT_EQ(physics::step(world, params).candidatePairs, 2u) << "still side by side";
+    }
+}
+
+// The grid and the lecture's all-pairs loop find the same pairs in index order; coloured
+// alike, they give the same state.
+TEST(ColoredOrder, GridAndAllPairsReachTheSameState) {
+    for (Method method : kMethods) {
+        std::set<std::uint64_t> hashes;
+        for (const char* broadPhase : {"broadphase=grid", "broadphase=allpairs"}) {
+            const scenes::Scene scene = pile(600, 0.05, {"order=colored", broadPhase});
+            physics::Params params = scene.params;
+            params.method = method;
+            physics::World world = scenes::buildWorld(scene);
+            run(world, params, 90);
+            hashes.insert(physics::stateHash(world));
+        }
+        EXPECT_EQ(hashes.size(), 1u);
+    }
+}
