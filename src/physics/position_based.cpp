@@ -19,9 +19,15 @@ namespace {
 void particlesVelocityAndPosition(World& world, const Params& params, StepStats& stats,
                                   int pass, PositionResponse response, bool respond) {
     std::vector<double>& clearance = world.workspace.wallClearance;  // m
+    const bool inLanes = params.order == PairOrder::Colored && !world.recordContacts;
     forEachPairInPassOrder(world, params, stats, [&](const SpherePair* pairs, std::uint32_t first,
                                                      std::uint32_t last, StepStats& s) {
-        for (std::uint32_t k = first; k < last; ++k) {
+        std::uint32_t k = first;
+        if (inLanes) {  // a colour's pairs, several side by side (colored_lanes.cpp)
+            k = separateColorInLanes(world, params, pairs, first, last, s, pass,
+                                     positionResponseDistance(response, 1.0, params), respond);
+        }
+        for (; k < last; ++k) {
             const SpherePair& pair = pairs[k];
             SphereContact contact;
             if (!touching(world, pair, contact)) continue;

@@ -179,6 +179,19 @@ constexpr unsigned kPairColors = kOverflowColor + 1;
 // Sorts visitOrder (in index order) colour by colour into Workspace::colorStart's ranges.
 void colorPairs(World& world);
 
+// The position based pair stage (B: velocity, if `respond`, and position) over pairs
+// [first, last) of one colour, several side by side (colored_lanes.cpp), giving what the
+// one-pair code gives, bit for bit; positionFactor is 1 (projection) or 1 + beta
+// (reflection). Returns where it stopped: the caller does the rest (fewer pairs than
+// lanes, or the overflow colour) one pair at a time. `width`: pairs side by side, one of
+// laneWidths(), 0 the widest. Not while contacts are logged (World::recordContacts).
+std::uint32_t separateColorInLanes(World& world, const Params& params, const SpherePair* pairs, std::uint32_t first,
+                                   std::uint32_t last, StepStats& stats, int pass, double positionFactor,
+                                   bool respond, int width = 0);
+
+// The lane widths this CPU runs, ascending: 2, and 4 with AVX2, 8 with AVX-512.
+std::vector<int> laneWidths();
+
 // A colour with fewer pairs than this is visited on one thread: handing it out would
 // cost more than it saves (a run of the team costs a few microseconds).
 constexpr std::uint32_t kColorShareMin = 2048;

@@ -177,3 +177,71 @@ TEST(ColoredOrder, GridAndAllPairsReachTheSameState) {
         EXPECT_EQ(hashes.size(), 1u);
     }
 }
+
+// The position based pair stage of one pass, one pair at a time in the colored order, as
+// position_based.cpp does it: the reference for the lanes.
+void separateOnePairAtATime(physics::World& world, const physics::Params& params, std::uint32_t first,
+                            std::uint32_t last, physics::StepStats& stats, double factor) {
+    for (std::uint32_t k = first; k < last; ++k) {
+        const physics::SpherePair pair = world.workspace.visitOrder[k];
+        physics::SphereContact contact;
+        if (!physics::touching(world, pair, contact)) continue;
+        physics::respondToContact(world, pair, contact, params, stats, 0);
+        const physics::Separation moved =
+            physics::separateSpheres(world.position[pair.i], world.position[pair.j], world.mass[pair.i],
+                                     world.mass[pair.j], contact.u, factor * contact.depth, params.split);
+        world.workspace.wallClearance[pair.i] -= moved.first;
+        world.workspace.wallClearance[pair.j] -= moved.second;
+    }
+}
+
+// Each lane width the CPU runs (2; 4 with AVX2; 8 with AVX-512) answers a pass of the
+// landed pile with the one-pair code's numbers, bit for bit: velocities, positions,
+// contact states, wall clearances and counts, for the lecture's response with the
+// projection and for the momentum response, mass split and reflection.
+TEST(ColoredOrder, EveryLaneWidthGivesTheOnePairNumbersBitForBit) {
+    for (const bool lecture : {true, false}) {
+        const scenes::Scene scene =
+            lecture ? pile(5000, 0.025, {"order=colored"})
+                    : pile(5000, 0.025, {"order=colored", "method=reflection", "response=momentum", "split=mass", "mu=0.7"});
+        const physics::Params& params = scene.params;
+        physics::World world = scenes::buildWorld(scene);
+        if (!lecture) {  // masses of 1, 1.5 and 2 times the preset's: the mass split differs
+            for (std::size_t i = 0; i < world.size(); ++i) world.mass[i] *= 1.0 + 0.5 * double(i % 3);
+        }
+        run(world, params, 60);
+        // A solver step up to its passes (position_based.cpp), with a smaller epsilon so
+        // that some contacts bounce.
+        physics::Params sharper = params;
+        sharper.epsilon = 0.002;
+        physics::integrateVelocity(world, params, params.solverStep());
+        physics::integratePosition(world, params, params.solverStep());
+        physics::StepStats none;
+        physics::findOrderedPairs(world, params, none);
+        physics::findWallClearances(world, params);
+        const double factor = params.method == Method::Reflection ? 1.0 + params.beta : 1.0;
+        const physics::Workspace& ws = world.workspace;
+        physics::World reference = world;
+        physics::StepStats expected;
+        separateOnePairAtATime(reference, sharper, 0, std::uint32_t(ws.visitOrder.size()), expected, factor);
+        ASSERT_GT(expected.collisions, 0u);
+        ASSERT_GT(expected.staticContacts, 0u);
+        for (int width : physics::laneWidths()) {
+            physics::World lanes = world;
+            physics::StepStats stats;
+            for (unsigned c = 0; c < physics::kPairColors; ++c) {
+                const std::uint32_t first = ws.colorStart[c], last = ws.colorStart[c + 1];
+                const std::uint32_t rest = physics::separateColorInLanes(lanes, sharper, ws.visitOrder.data(), first,
+                                                                         last, stats, 0, factor, true, width);
+                EXPECT_LT(last - rest, std::uint32_t(width)) << "colour " << c;
+                separateOnePairAtATime(lanes, sharper, rest, last, stats, factor);
+            }
+            EXPECT_EQ(physics::stateHash(lanes), physics::stateHash(reference)) << width << " lanes";
+            EXPECT_EQ(lanes.workspace.wallClearance, reference.workspace.wallClearance) << width << " lanes";
+            EXPECT_TRUE(lanes.contactState == reference.contactState) << width << " lanes";
+            EXPECT_EQ(stats.collisions, expected.collisions);
+            EXPECT_EQ(stats.staticContacts, expected.staticContacts);
+            EXPECT_EQ(stats.sphereContacts, expected.sphereContacts);
+        }
+    }
+}
