@@ -236,7 +236,7 @@ std::uint32_t separateColorInLanes(World& world, const Params& params, const Sph
                                    std::uint32_t last, StepStats& stats, int pass, double positionFactor,
                                    bool respond, int width) {
     // The overflow colour's pairs may share a sphere: one at a time, by the caller.
-    if (first >= world.workspace.colorStart[kOverflowColor]) return first;
+    if (first >= overflowRange(world.workspace).begin) return first;
     static const int widest = laneWidths().back();
     switch (width == 0 ? widest : width) {
 #ifdef SPHERES_WIDE_LANES

@@ -171,13 +171,32 @@ private:
     std::vector<Share> shares_;
 };
 
-// Pair order `colored` (colored_order.cpp): 64 colours in which no two pairs share a
-// sphere, then the overflow colour, whose pairs may (a sphere with very many neighbours).
-constexpr unsigned kOverflowColor = 64;
-constexpr unsigned kPairColors = kOverflowColor + 1;
+// Pair order `colored` (colored_order.cpp). The pairs fall into groups: the pairs
+// inside each block of kBlockSpheres sphere numbers (blocks share no sphere), then the
+// border group, the pairs between blocks. Each group takes up to kGroupColors colours in
+// which no two pairs share a sphere; a pair that finds none free joins the overflow,
+// visited last, in index order, on one thread.
+constexpr unsigned kGroupColors = 64;
+// A block's spheres' data (about 75 bytes each in a pass) stays in a core's cache while
+// its colours are visited, however many spheres the world holds.
+constexpr std::uint32_t kBlockSpheres = 4096;
 
-// Sorts visitOrder (in index order) colour by colour into Workspace::colorStart's ranges.
+// Sorts visitOrder (in index order) group by group, colour by colour (Workspace::colorStart).
 void colorPairs(World& world);
+
+// The groups of the colouring: the blocks, then the border (the last).
+inline std::uint32_t colorGroups(const Workspace& ws) {
+    return std::uint32_t((ws.colorStart.size() - 2) / kGroupColors);
+}
+// Where group g's colour c lies in visitOrder.
+inline Range colorRange(const Workspace& ws, std::uint32_t g, unsigned c) {
+    const std::size_t key = std::size_t(g) * kGroupColors + c;
+    return {ws.colorStart[key], ws.colorStart[key + 1]};
+}
+// Where the overflow lies in visitOrder: its pairs may share a sphere.
+inline Range overflowRange(const Workspace& ws) {
+    return {ws.colorStart[ws.colorStart.size() - 2], ws.colorStart.back()};
+}
 
 // The position based pair stage (B: velocity, if `respond`, and position) over pairs
 // [first, last) of one colour, several side by side (colored_lanes.cpp), giving what the
@@ -199,31 +218,52 @@ constexpr std::uint32_t kColorShareMin = 2048;
 // process leaves its part to the others.
 constexpr int kColorTasksPerThread = 4;
 
-// The colored order's pass: colour after colour, each colour's pairs cut into ranges
-// that threads take as they come (no waits: its pairs share no sphere), the overflow
-// colour on one thread. The same result on any thread count.
+// The colored order's pass: the blocks (threads take whole blocks as they come; inside
+// one, colour after colour), then the border colour after colour (each colour's pairs cut
+// into ranges that threads take as they come), then the overflow on one thread. No
+// thread waits for another's pair: the same result on any thread count.
 template <class Visit>
 void forEachColor(World& world, const Params& params, StepStats& stats, const Visit& visit) {
     const Workspace& ws = world.workspace;
     const int threads = threadsFor(world, params);
     const SpherePair* pairs = ws.visitOrder.data();
-    std::vector<StepStats> taskStats;
-    for (unsigned c = 0; c < kPairColors; ++c) {
-        const std::uint32_t first = ws.colorStart[c], size = ws.colorStart[c + 1] - first;
-        if (threads == 1 || c == kOverflowColor || size < kColorShareMin) {
-            visit(pairs, first, first + size, stats);
-            continue;
+    const std::uint32_t blocks = colorGroups(ws) - 1;
+    const auto visitBlock = [&](std::uint32_t g, StepStats& s) {
+        for (unsigned c = 0; c < kGroupColors; ++c) {
+            const Range r = colorRange(ws, g, c);
+            if (r.end > r.begin) visit(pairs, r.begin, r.end, s);
         }
-        const int tasks = kColorTasksPerThread * threads;
+    };
+    std::vector<StepStats> taskStats;
+    const auto shared = [&](int tasks, const auto& task) {  // task(t, stats) on the team, counted apart
         taskStats.assign(std::size_t(tasks), StepStats{});
         runTasks(threads, tasks, [&](int t) {
             StepStats local;  // neighbours in taskStats share cache lines: count apart
-            const Range range = rangeOf(size, t, tasks);
-            visit(pairs, first + range.begin, first + range.end, local);
+            task(t, local);
             taskStats[std::size_t(t)] = local;
         });
         for (const StepStats& s : taskStats) stats += s;
+    };
+    if (threads == 1 || blocks < 2) {
+        for (std::uint32_t g = 0; g < blocks; ++g) visitBlock(g, stats);
+    } else {
+        shared(int(blocks), [&](int g, StepStats& s) { visitBlock(std::uint32_t(g), s); });
     }
+    for (unsigned c = 0; c < kGroupColors; ++c) {
+        const Range r = colorRange(ws, blocks, c);
+        const std::uint32_t size = r.end - r.begin;
+        if (threads == 1 || size < kColorShareMin) {
+            if (size > 0) visit(pairs, r.begin, r.end, stats);
+            continue;
+        }
+        const int tasks = kColorTasksPerThread * threads;
+        shared(tasks, [&](int t, StepStats& s) {
+            const Range part = rangeOf(size, t, tasks);
+            visit(pairs, r.begin + part.begin, r.begin + part.end, s);
+        });
+    }
+    const Range overflow = overflowRange(ws);
+    if (overflow.end > overflow.begin) visit(pairs, overflow.begin, overflow.end, stats);
 }
 
 // visit(pairs, first, last, stats) on ranges [first, last) of pairs = pairsAsVisited()

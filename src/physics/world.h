@@ -199,14 +199,16 @@ struct Workspace {
     // wallClearance()), lowered by each move of the pair stage, found anew by the wall
     // stage for the spheres it visits.
     std::vector<double> wallClearance;
-    // Pair order `colored` (colored_order.cpp): visitOrder holds the pairs colour by
-    // colour, colour c at [colorStart[c], colorStart[c + 1]); no two pairs of a colour share
-    // a sphere, except in the last colour (the overflow: pairs of a sphere that has used
-    // every other colour), which is visited in index order on one thread.
+    // Pair order `colored` (colored_order.cpp): visitOrder holds the pairs group by group,
+    // colour by colour: group g's colour c at [colorStart[g * 64 + c], colorStart[g * 64 + c + 1]).
+    // The groups are the blocks of sphere numbers (the pairs inside each), then the border
+    // (the pairs between blocks); after them, at [colorStart[groups * 64], the end), the
+    // overflow. No two pairs of a group's colour share a sphere.
     std::vector<std::uint32_t> colorStart;
     std::vector<std::uint64_t> colorsOfSphere;  // scratch: per sphere, the colours its pairs took
-    std::vector<std::uint8_t> colorOfPair;      // scratch: per pair in index order
+    std::vector<std::uint32_t> colorOfPair;     // scratch: per pair in index order, g * 64 + c
     std::vector<SpherePair> colorSorted;        // scratch: the pairs placed colour by colour
+    std::vector<std::uint32_t> colorNext;       // scratch: where each colour's next pair goes
     std::vector<double> slabSample;  // m: scratch of the share-out, coordinates that place its slabs
     std::vector<double> taskMove;  // m^2: the largest squared displacement each task saw
     // The contacts of a step whose positions stay put while its passes run (velocity

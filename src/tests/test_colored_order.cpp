@@ -41,31 +41,42 @@ scenes::Scene pile(int count, double radius, std::initializer_list<std::string> 
 }
 
 // The colours of the last solver step: each colour's pairs share no sphere (but the
-// overflow's), and the pairs are those of the index order, each once.
+// overflow's), a block's pairs lie inside it and the border's between blocks, and the
+// pairs are those of the index order, each once.
 struct Colouring {
-    unsigned colours = 0;         // colours that hold a pair, the overflow not counted
+    unsigned colours = 0;         // the most colours a group holds, the overflow not counted
     unsigned mostPairs = 0;       // the most pairs one sphere has
-    std::size_t overflow = 0;     // pairs in the overflow colour
-    bool disjoint = true;         // no two pairs of a colour (but the overflow) share a sphere
+    std::size_t border = 0;       // pairs between blocks
+    std::size_t overflow = 0;     // pairs in the overflow
+    bool disjoint = true;         // no two pairs of a colour share a sphere
+    bool inTheirGroup = true;     // a block's pairs inside it, the border's between blocks
     bool eachPairOnce = true;     // the same pairs as the index order's
 };
 
 Colouring colouringOf(const physics::World& world, const physics::Params& params) {
     const physics::Workspace& ws = world.workspace;
     Colouring c;
-    for (unsigned colour = 0; colour < physics::kPairColors; ++colour) {
-        const std::uint32_t first = ws.colorStart[colour], last = ws.colorStart[colour + 1];
-        if (colour == physics::kOverflowColor) {
-            c.overflow = last - first;
-            continue;
+    const std::uint32_t groups = physics::colorGroups(ws);
+    for (std::uint32_t g = 0; g < groups; ++g) {
+        const bool border = g + 1 == groups;
+        unsigned colours = 0;
+        for (unsigned colour = 0; colour < physics::kGroupColors; ++colour) {
+            const physics::Range r = physics::colorRange(ws, g, colour);
+            colours += r.end > r.begin;
+            if (border) c.border += r.end - r.begin;
+            std::set<std::uint32_t> spheres;
+            for (std::uint32_t k = r.begin; k < r.end; ++k) {
+                const physics::SpherePair pair = ws.visitOrder[k];
+                c.disjoint = c.disjoint && spheres.insert(pair.i).second && spheres.insert(pair.j).second;
+                const std::uint32_t bi = pair.i / physics::kBlockSpheres, bj = pair.j / physics::kBlockSpheres;
+                c.inTheirGroup = c.inTheirGroup && (border ? bi != bj : bi == g && bj == g);
+            }
         }
-        c.colours += last > first;
-        std::set<std::uint32_t> spheres;
-        for (std::uint32_t k = first; k < last; ++k) {
-            c.disjoint = c.disjoint && spheres.insert(ws.visitOrder[k].i).second;
-            c.disjoint = c.disjoint && spheres.insert(ws.visitOrder[k].j).second;
-        }
+        c.colours = std::max(c.colours, colours);
     }
+    const physics::Range overflow = physics::overflowRange(ws);
+    c.overflow = overflow.end - overflow.begin;
+    EXPECT_EQ(overflow.end, ws.visitOrder.size());
     std::vector<unsigned> pairsOf(world.size(), 0);
     for (const auto& p : ws.visitOrder) c.mostPairs = std::max({c.mostPairs, ++pairsOf[p.i], ++pairsOf[p.j]});
     physics::World indexed = world;
@@ -94,8 +105,11 @@ TEST(ColoredOrder, NoTwoPairsOfAColourShareASphere) {
     ASSERT_GT(world.workspace.visitOrder.size(), 8000u);
     const Colouring c = colouringOf(world, scene.params);
     EXPECT_TRUE(c.disjoint);
+    EXPECT_TRUE(c.inTheirGroup);
     EXPECT_TRUE(c.eachPairOnce);
     EXPECT_EQ(c.overflow, 0u);
+    EXPECT_EQ(physics::colorGroups(world.workspace), 3u) << "two blocks (4096 + 904 spheres), the border";
+    EXPECT_GT(c.border, 0u);
     EXPECT_GE(c.colours, c.mostPairs);
     EXPECT_LE(c.colours, 2 * c.mostPairs - 1);
     EXPECT_GE(c.mostPairs, 6u) << "a pile, not a gas";
@@ -229,13 +243,18 @@ TEST(ColoredOrder, EveryLaneWidthGivesTheOnePairNumbersBitForBit) {
         for (int width : physics::laneWidths()) {
             physics::World lanes = world;
             physics::StepStats stats;
-            for (unsigned c = 0; c < physics::kPairColors; ++c) {
-                const std::uint32_t first = ws.colorStart[c], last = ws.colorStart[c + 1];
-                const std::uint32_t rest = physics::separateColorInLanes(lanes, sharper, ws.visitOrder.data(), first,
-                                                                         last, stats, 0, factor, true, width);
-                EXPECT_LT(last - rest, std::uint32_t(width)) << "colour " << c;
-                separateOnePairAtATime(lanes, sharper, rest, last, stats, factor);
+            const auto visit = [&](physics::Range r) {
+                const std::uint32_t rest = physics::separateColorInLanes(lanes, sharper, ws.visitOrder.data(), r.begin,
+                                                                         r.end, stats, 0, factor, true, width);
+                separateOnePairAtATime(lanes, sharper, rest, r.end, stats, factor);
+                return r.end - rest;
+            };
+            for (std::uint32_t g = 0; g < physics::colorGroups(ws); ++g) {
+                for (unsigned c = 0; c < physics::kGroupColors; ++c) {
+                    EXPECT_LT(visit(physics::colorRange(ws, g, c)), std::uint32_t(width)) << "colour " << c;
+                }
             }
+            visit(physics::overflowRange(ws));
             EXPECT_EQ(physics::stateHash(lanes), physics::stateHash(reference)) << width << " lanes";
             EXPECT_EQ(lanes.workspace.wallClearance, reference.workspace.wallClearance) << width << " lanes";
             EXPECT_TRUE(lanes.contactState == reference.contactState) << width << " lanes";
