@@ -63,7 +63,7 @@ struct Options {
     std::vector<int> counts{1000, 4000, 16000, 64000, 256000};
     int maxCount = 0;  // 0: no cap
     std::vector<int> passes{4};
-    std::vector<std::string> engines{"position", "shock", "velocity", "allpairs", "bullet", "ode"};
+    std::vector<std::string> engines{"position", "colored", "shock", "velocity", "allpairs", "bullet", "ode"};
     int repetitions = 5;
     double settle = 2.0;     // s our position method runs first (pile, mixed; not the gas)
     double warmUp = 0.5;     // s every engine runs on its own before timing
@@ -85,8 +85,9 @@ const bench::Usage kUsage{"spheres_bench_peers",
     "  --n LIST           sphere counts (default 1k,4k,16k,64k,256k)\n"
     "  --max-n N          leave out larger counts\n"
     "  --k LIST           passes K = solver iterations of the peers (default 4; e.g. 4,10)\n"
-    "  --engines LIST     position,shock,velocity,allpairs,bullet,ode (default all; shock:\n"
-    "                     ours, position, with slide 14's shock propagation)\n"
+    "  --engines LIST     position,colored,shock,velocity,allpairs,bullet,ode (default all;\n"
+    "                     colored: ours, position, in the colored pair order, not the\n"
+    "                     lecture's; shock: ours, position, with slide 14's shock propagation)\n"
     "  --reps R           timed repetitions, interleaved between engines (default 5)\n"
     "  --settle S         simulated seconds our position method runs on the pile and the\n"
     "                     mixed pile to make the start every engine shares (default 2;\n"
@@ -200,10 +201,10 @@ Options parseOptions(int argc, char** argv) {
         } else if (option == "--engines") {
             o.engines = splitList(value);
             for (const std::string& e : o.engines) {
-                if (e != "position" && e != "shock" && e != "velocity" && e != "allpairs" && e != "bullet" &&
+                if (e != "position" && e != "colored" && e != "shock" && e != "velocity" && e != "allpairs" && e != "bullet" &&
                     e != "ode")
                     usageError("--engines: unknown engine '" + e +
-                               "' (position, shock, velocity, allpairs, bullet, ode)");
+                               "' (position, colored, shock, velocity, allpairs, bullet, ode)");
             }
         } else if (option == "--reps") {
             o.repetitions = int(parsePositive(option, value));
@@ -555,6 +556,7 @@ struct Slot {
 
 const char* displayName(const std::string& engine) {
     if (engine == "position") return "ours, position";
+    if (engine == "colored") return "ours, position, colored order (not the lecture's)";
     if (engine == "shock") return "ours, position, shock propagation";
     if (engine == "velocity") return "ours, velocity";
     if (engine == "allpairs") return "ours, position, O(N²) loop";
@@ -567,10 +569,11 @@ std::unique_ptr<Engine> makeEngine(const Options& o, const std::string& engine, 
                                    int passes) {
     physics::Params params = setup.scene.params;
     params.passes = passes;
-    if (engine == "position" || engine == "shock" || engine == "velocity") {
+    if (engine == "position" || engine == "colored" || engine == "shock" || engine == "velocity") {
         params.method =
             engine == "velocity" ? physics::Method::VelocityBased : physics::Method::PositionBased;
         params.shock = engine == "shock" ? physics::ShockPropagation::On : physics::ShockPropagation::Off;
+        if (engine == "colored") params.order = physics::PairOrder::Colored;
         params.broadPhase = physics::BroadPhase::Grid;
         return std::make_unique<Ours>(setup.world, params);
     }
@@ -684,7 +687,7 @@ std::vector<Result> runOne(const Options& o, const std::string& scene, int count
         if (!dropped.count(engine)) dropped[engine] = why + " at N = " + bench::grouped(count);
         std::fprintf(stderr, "  %-9s %s\n", engine.c_str(), why.c_str());
     };
-    for (const char* engine : {"position", "shock", "velocity", "bullet", "ode"}) {
+    for (const char* engine : {"position", "colored", "shock", "velocity", "bullet", "ode"}) {
         if (!wanted(o, engine)) continue;
         if (dropped.count(engine)) {
             drop(engine, dropped[engine]);
@@ -773,7 +776,7 @@ std::vector<Result> runOne(const Options& o, const std::string& scene, int count
                      1e3 * seconds, o.repetitions, slot.blockSteps);
     }
     const auto order = [](const std::string& engine) {
-        const char* const engines[] = {"position", "shock", "velocity", "allpairs", "bullet", "ode"};
+        const char* const engines[] = {"position", "colored", "shock", "velocity", "allpairs", "bullet", "ode"};
         return int(std::find(std::begin(engines), std::end(engines), engine) - std::begin(engines));
     };
     std::stable_sort(results.begin(), results.end(), [&](const Result& a, const Result& b) {

@@ -42,7 +42,7 @@ struct Options {
     std::vector<int> counts{1000, 4000, 16000, 64000, 100000, 256000, 1000000};
     std::vector<int> threads{1, 2};
     int passes = 4;
-    std::string order = "index";
+    std::vector<std::string> orders{"index", "colored"};  // pair orders, timed side by side
     std::string solver = "sequential";  // slide 14's solvers; the warm-up is always sequential
     std::string shock = "off";          // slide 14's shock propagation, warm-up included
     double warmUp = 1.5;  // s simulated before timing: the pile has landed
@@ -64,7 +64,8 @@ const bench::Usage kUsage{"spheres_bench_solver",
     "  --n LIST       sphere counts (default 1k,4k,16k,64k,100k,256k,1M)\n"
     "  --threads LIST thread counts (default 1,2)\n"
     "  --k K          passes (default 4)\n"
-    "  --order NAME   pair order: index, reversed or shuffled (default index)\n"
+    "  --order LIST   pair orders: index, reversed, shuffled, colored (default index,colored;\n"
+    "                 colored is not the lecture's); the warm-up runs in the first\n"
     "  --solver NAME  multiple collisions: sequential, until-converged, simultaneous, lcp or\n"
     "                 generalized-reflections (default sequential; the warm-up is sequential)\n"
     "  --shock on|off slide 14's shock propagation, in the warm-up too (default off)\n"
@@ -96,6 +97,17 @@ std::vector<int> threadsFrom(const std::string& option, const std::string& text)
         start = comma + 1;
     }
     return threads;
+}
+
+// "index,colored" -> {"index", "colored"}.
+std::vector<std::string> namesFrom(const std::string& list) {
+    std::vector<std::string> names;
+    std::size_t start = 0;
+    for (std::size_t comma; (comma = list.find(',', start)) != std::string::npos; start = comma + 1) {
+        names.push_back(list.substr(start, comma - start));
+    }
+    names.push_back(list.substr(start));
+    return names;
 }
 
 Options parseOptions(int argc, char** argv) {
@@ -130,7 +142,7 @@ Options parseOptions(int argc, char** argv) {
             if (o.busy > 64) usageError(option + " " + value + ": at most 64 busy processes");
         }
         else if (option == "--k") o.passes = countsFrom(option, value).front();
-        else if (option == "--order") o.order = value;
+        else if (option == "--order") o.orders = namesFrom(value);
         else if (option == "--solver") o.solver = value;
         else if (option == "--shock") o.shock = value;
         else if (option == "--warm-up") {
@@ -143,11 +155,12 @@ Options parseOptions(int argc, char** argv) {
     return o;
 }
 
-// The timed scene; with `warmUp` the lecture's sequential solver whatever --solver says.
-scenes::Scene pileOf(int count, const Options& options, int threads, bool warmUp = false) {
+// The timed scene in order number `order` of --order; with `warmUp` the lecture's
+// sequential solver whatever --solver says.
+scenes::Scene pileOf(int count, const Options& options, int threads, bool warmUp = false, std::size_t order = 0) {
     scenes::Scene scene = bench::pileOf(count);
     bench::set(scene, "passes=" + std::to_string(options.passes));
-    bench::set(scene, "order=" + options.order);
+    bench::set(scene, "order=" + options.orders[order]);
     bench::set(scene, "threads=" + std::to_string(threads));
     bench::set(scene, "solver=" + (warmUp ? std::string("sequential") : options.solver));
     bench::set(scene, "shock=" + options.shock);
@@ -219,7 +232,7 @@ struct Run {
 struct Row {
     int count = 0;
     double solverSteps = 0.0;
-    std::map<int, Run> byThreads;
+    std::map<std::pair<std::size_t, int>, Run> byRun;  // by order (its number in --order), threads
     std::string chains;  // --chains: a row of that table
 };
 
@@ -250,18 +263,20 @@ Row measure(int count, const Options& options) {
     }
     row.solverSteps = double(steps) * scene.params.substeps;
     for (int rep = 0; rep < options.repetitions; ++rep) {
-        for (int threads : options.threads) {
-            const scenes::Scene timed = pileOf(count, options, threads);
+        for (std::size_t order = 0; order < options.orders.size(); ++order) {
+          for (int threads : options.threads) {
+            const scenes::Scene timed = pileOf(count, options, threads, false, order);
             physics::World world = start;
             physics::StepStats stats;
             const auto begin = std::chrono::steady_clock::now();
             for (int k = 0; k < steps; ++k) stats += physics::step(world, timed.params);
-            Run& run = row.byThreads[threads];
+            Run& run = row.byRun[{order, threads}];
             run.seconds.push_back(bench::secondsSince(begin));
             run.broadPhase.push_back(stats.broadPhaseSeconds);
             run.passes.push_back(stats.passesSeconds);
             run.builds = stats.broadPhaseBuilds;
             if (rep == 0) run.hash = physics::stateHash(world);
+          }
         }
     }
     return row;
@@ -371,42 +386,51 @@ int compareUnderLoad(Options options) {
 
 int main(int argc, char** argv) {
     const Options options = parseOptions(argc, argv);
-    pileOf(1000, options, 1);  // a refused --solver or --order says so before anything is printed
+    for (std::size_t order = 0; order < options.orders.size(); ++order) {
+        pileOf(1000, options, 1, false, order);  // a refused --solver or --order says so before anything is printed
+    }
     if (options.busy > 0) return compareUnderLoad(options);
-    std::printf("Pile (%s), K = %d, order %s, solver %s, shock %s%s, %s; load average %s at the start\n\n",
-                bench::presetContaining("pile").c_str(), options.passes, options.order.c_str(), options.solver.c_str(),
+    std::string orders;
+    for (const std::string& order : options.orders) orders += (orders.empty() ? "" : ", ") + order;
+    std::printf("Pile (%s), K = %d, orders %s, solver %s, shock %s%s, %s; load average %s at the start\n\n",
+                bench::presetContaining("pile").c_str(), options.passes, orders.c_str(), options.solver.c_str(),
                 options.shock.c_str(),
                 options.mixNumbers ? ", numbers shuffled after the warm-up" : "",
                 bench::cpuModel().c_str(), bench::loadAverage().c_str());
-    std::printf("| N | threads | ms per solver step | ns per sphere-step | × one thread | broad phase ms | passes ms | rebuilds | hash |\n");
-    std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|---|\n");
-    std::map<int, std::vector<double>> counts, times;  // by threads
+    std::printf("| N | order | threads | ms per solver step | ns per sphere-step | × one thread | × %s | broad phase ms "
+                "| passes ms | rebuilds | hash |\n",
+                options.orders.front().c_str());
+    std::printf("|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---|\n");
+    std::map<std::pair<std::size_t, int>, std::vector<double>> counts, times;  // by order, threads
     std::vector<std::string> chains;
     bool same = true;
     for (int count : options.counts) {
         const Row row = measure(count, options);
         chains.push_back(row.chains);
-        const double baseline = bench::median(row.byThreads.begin()->second.seconds);
-        const std::uint64_t firstHash = row.byThreads.begin()->second.hash;
-        for (const auto& [threads, run] : row.byThreads) {
+        for (const auto& [key, run] : row.byRun) {
+            const auto& [order, threads] = key;
+            const Run& oneThread = row.byRun.at({order, options.threads.front()});
+            const Run& firstOrder = row.byRun.at({0, threads});
             const double seconds = bench::median(run.seconds);
-            const bool equal = run.hash == firstHash;
+            const bool equal = run.hash == oneThread.hash;
             same = same && equal;
-            std::printf("| %s | %d | %.3f | %.0f | %.2f | %.3f | %.3f | %.0f %% | %016llx%s |\n",
-                        bench::grouped(count).c_str(), threads, 1e3 * seconds / row.solverSteps,
-                        1e9 * seconds / (row.solverSteps * count), baseline / seconds,
+            std::printf("| %s | %s | %d | %.3f | %.0f | %.2f | %.2f | %.3f | %.3f | %.0f %% | %016llx%s |\n",
+                        bench::grouped(count).c_str(), options.orders[order].c_str(), threads,
+                        1e3 * seconds / row.solverSteps, 1e9 * seconds / (row.solverSteps * count),
+                        bench::median(oneThread.seconds) / seconds, bench::median(firstOrder.seconds) / seconds,
                         1e3 * bench::median(run.broadPhase) / row.solverSteps,
                         1e3 * bench::median(run.passes) / row.solverSteps, 100.0 * double(run.builds) / row.solverSteps,
                         static_cast<unsigned long long>(run.hash), equal ? "" : " DIFFERENT");
-            counts[threads].push_back(count);
-            times[threads].push_back(seconds / row.solverSteps);
+            counts[key].push_back(count);
+            times[key].push_back(seconds / row.solverSteps);
         }
         std::fflush(stdout);
     }
     if (options.counts.size() > 1) {
         std::printf("\nlog-log slope of time per step against N:");
-        for (const auto& [threads, t] : times) {
-            std::printf(" %.3f (%d thread%s)", bench::logLogSlope(counts[threads], t), threads, threads > 1 ? "s" : "");
+        for (const auto& [key, t] : times) {
+            std::printf(" %.3f (%s, %d thread%s)", bench::logLogSlope(counts[key], t), options.orders[key.first].c_str(),
+                        key.second, key.second > 1 ? "s" : "");
         }
         std::printf("\n");
     }
