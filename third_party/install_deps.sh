@@ -5,6 +5,8 @@
 #           src/tests/run_sanitized.sh (the test command asks for them)
 #   --web   also emscripten (C++ to WebAssembly) and chromium (headless, to test the
 #           page), for the browser build (src/web/)
+#   --peers also Bullet and ODE, for the benchmark against them (spheres_bench_peers;
+#           configure the build again afterwards so that CMake finds them)
 set -euo pipefail
 
 packages=(
@@ -18,7 +20,8 @@ for option in "$@"; do
   case "$option" in
     --fuzz) packages+=(clang libclang-rt-14-dev) ;;
     --web) packages+=(emscripten chromium) ;;
-    *) echo "install_deps.sh: unknown option $option (known: --fuzz, --web)" >&2; exit 2 ;;
+    --peers) packages+=(libbullet-dev libode-dev) ;;
+    *) echo "install_deps.sh: unknown option $option (known: --fuzz, --web, --peers)" >&2; exit 2 ;;
   esac
 done
 

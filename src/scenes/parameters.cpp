@@ -278,7 +278,8 @@ std::vector<Parameter> makeTable() {
                             "The result is the same, bit for bit, for any count and pair order: "
                             "each thread takes the pairs of its slab of the box, and waits where "
                             "a sphere met another thread's pair last, so each sphere still meets "
-                            "its partners in the pair order. Scenes under 4096 spheres use one "
+                            "its partners in the pair order (in the colored order, threads share "
+                            "each colour's pairs and never wait). Scenes under 4096 spheres use one "
                             "thread whatever the count.",
                             param<&Params::threads>())),
         choice("broadphase", "broad phase", {"grid", "allpairs"},
