@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The guards a trusted project runs on itself, in a build of their own (build-sanitized/,
-# clang): the solver's and the scene loader's tests under AddressSanitizer and UBSan,
+# clang): the solver's, the scene loader's and capture's tests under AddressSanitizer and UBSan,
 # then the fuzzers of the scene loader and of --set for a bounded time each, seeded
 # with the shipped presets. Fails on any test failure, sanitizer report, crash,
 # uncaught exception or timeout. Needs clang (third_party/install_deps.sh --fuzz).
