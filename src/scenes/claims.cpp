@@ -65,13 +65,23 @@ std::string expected(const Claim& c) {
     return out.str();
 }
 
-std::string range(const std::vector<double>& s) {
+// " m", " J", or "" for a ratio or a count: the unit of the claim's meter.
+std::string unitOf(const Claim& c) {
+    if (c.take == "count") return "";
+    for (const ClaimMeter& m : claimMeters()) {
+        if (m.name == c.measure) return m.unit.empty() ? "" : " " + std::string(m.unit);
+    }
+    return "";
+}
+
+std::string range(const std::vector<double>& s, const std::string& unit) {
     const auto [lo, hi] = std::minmax_element(s.begin(), s.end());
     std::ostringstream out;
     out.precision(4);
     out << *lo;
     if (*hi != *lo) out << " to " << *hi;
-    out << " (" << s.size() << " samples)";
+    out << unit;
+    if (s.size() > 1) out << " (" << s.size() << " samples)";
     return out.str();
 }
 
@@ -121,10 +131,10 @@ void judge(ClaimCheck& check, const std::vector<double>* ratioSamples) {
     if (c.take == "each" && c.nth == 0 && !ratioSamples) {
         check.holds = !check.samples.empty() &&
                       std::all_of(check.samples.begin(), check.samples.end(), [&](double x) { return meets(c, x); });
-        out << (check.samples.empty() ? std::string("nothing measured") : range(check.samples));
+        out << (check.samples.empty() ? std::string("nothing measured") : range(check.samples, unitOf(c)));
     } else {
         check.holds = check.value && meets(c, *check.value);
-        if (check.value) out << *check.value;
+        if (check.value) out << *check.value << (ratioSamples ? std::string() : unitOf(c));
         else out << "nothing measured";
     }
     if (!check.holds) out << ", expected " << expected(c);
@@ -183,6 +193,59 @@ std::vector<ClaimCheck> checkClaims(const Scene& preset) {
     for (std::size_t k = 0; k < checks.size(); ++k) {
         if (meters[k]) checks[k].samples = meters[k]->samples();
         judge(checks[k], ratioMeters[k] ? &ratioMeters[k]->samples() : nullptr);
+    }
+    return checks;
+}
+
+std::vector<double> tableValues(const Scene& scene) {
+    std::vector<double> values;
+    for (const Parameter& p : parameterTable()) values.push_back(p.availableIn(scene) ? p.get(scene) : -INFINITY);
+    return values;
+}
+
+void stampClaimVariants(Scene& scene) {
+    for (Claim& claim : scene.claims) {
+        Scene variant = scene;
+        variant.claims.clear();
+        applyAll(variant, claim.settings);
+        claim.variant = tableValues(variant);
+    }
+}
+
+LiveClaims::LiveClaims() = default;
+LiveClaims::~LiveClaims() = default;
+LiveClaims::LiveClaims(LiveClaims&&) noexcept = default;
+LiveClaims& LiveClaims::operator=(LiveClaims&&) noexcept = default;
+LiveClaims::LiveClaims(const LiveClaims&) : LiveClaims() {}
+LiveClaims& LiveClaims::operator=(const LiveClaims& other) {
+    if (this != &other) *this = LiveClaims();
+    return *this;
+}
+
+LiveClaims::LiveClaims(const Scene& scene) : halfStep_(0.5 * scene.params.timeStep) {
+    const std::vector<double> now = tableValues(scene);
+    for (const Claim& claim : scene.claims) {
+        if (claim.in != ClaimSource::Description || claim.ratioTo || claim.variant != now) continue;
+        std::unique_ptr<detail::Meter> meter = detail::makeMeter(claim, scene);
+        if (!meter) continue;
+        claims_.push_back(claim);
+        meters_.push_back(std::move(meter));
+    }
+}
+
+void LiveClaims::observe(const physics::World& world) {
+    for (const auto& meter : meters_) meter->observe(world);
+}
+
+std::vector<ClaimCheck> LiveClaims::judged(double time) const {
+    std::vector<ClaimCheck> checks;
+    for (std::size_t k = 0; k < claims_.size(); ++k) {
+        if (time < claims_[k].to - halfStep_) continue;
+        ClaimCheck check;
+        check.claim = &claims_[k];
+        check.samples = meters_[k]->samples();
+        judge(check, nullptr);
+        checks.push_back(std::move(check));
     }
     return checks;
 }

@@ -29,10 +29,15 @@
 //                                                        the preset with these settings
 //               "near": 0.94, "within": 0.02,            the value, or a bound:
 //               "min": 0.9, "max": 1.0}]                 inclusive; at least one of these
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
+
+namespace physics {
+struct World;
+}
 
 namespace scenes {
 
@@ -58,6 +63,9 @@ struct Claim {
     int nth = 0;  // > 0: the nth sample instead of `take`
     std::optional<std::vector<std::string>> ratioTo;
     std::optional<double> near, within, min, max;
+    // The parameters (tableValues) of the preset with `settings`, stamped when the
+    // preset is loaded: a run whose parameters are these is the claim's run.
+    std::vector<double> variant;
 };
 
 // A meter: a readout the demo has, sampled at every step of a claim's stretch
@@ -81,6 +89,43 @@ struct ClaimCheck {
     std::optional<double> value;  // after take / nth / ratio_to; none: nothing measured
     bool holds = false;
     std::string measured;  // one line: the value (or the samples' range) and, if not held, why
+};
+
+// Every parameter's value in `scene`, in the table's order (-inf for one it has not).
+std::vector<double> tableValues(const Scene& scene);
+
+// Stamps each claim of a scene as loaded with its variant's parameters (Claim::variant).
+void stampClaimVariants(Scene& scene);
+
+namespace detail {
+class Meter;
+}
+
+// The claims of the scene's text that a run checks as it goes, for the panel: those
+// quoting the description, with no ratio_to, whose variant is the scene as it runs
+// (Claim::variant equals its parameters at the start). Feed it the world as built and
+// after every time step (the app's emitters included), from the same run, untouched.
+class LiveClaims {
+  public:
+    LiveClaims();
+    explicit LiveClaims(const Scene& scene);
+    ~LiveClaims();
+    LiveClaims(LiveClaims&&) noexcept;
+    LiveClaims& operator=(LiveClaims&&) noexcept;
+    // A copy measures nothing: its meters would have to have seen the run from its start.
+    LiveClaims(const LiveClaims&);
+    LiveClaims& operator=(const LiveClaims&);
+
+    bool empty() const { return claims_.empty(); }
+    std::size_t size() const { return claims_.size(); }
+    void observe(const physics::World& world);
+    // The claims whose stretch has passed at `time` (s), judged, in the scene's order.
+    std::vector<ClaimCheck> judged(double time) const;
+
+  private:
+    std::vector<Claim> claims_;
+    std::vector<std::unique_ptr<detail::Meter>> meters_;
+    double halfStep_ = 0.0;  // s: a sample counts for its stretch within half a step
 };
 
 // Runs `preset` once per distinct variant of its claims and checks each claim.

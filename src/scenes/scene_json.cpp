@@ -636,6 +636,7 @@ Scene parseScene(std::string_view text, const std::string& filename) {
     try {
         scene = reader.read(root);
         buildWorld(scene);  // overlaps, spheres outside the box, regions that cannot hold count
+        stampClaimVariants(scene);
     } catch (const SceneError& e) {
         if (e.path().empty()) throw;  // already "file:line:col: ..."
         reader.fail(e.path(), e.what());

@@ -1,7 +1,10 @@
 // The app's fixed-step clock: accumulator, clamp, wall-time budget.
 #include <gtest/gtest.h>
 
+#include <vector>
+
 #include "app/run/simulation.h"
+#include "scenes/claims.h"
 #include "scenes/presets.h"
 #include "scenes/scene_json.h"
 
@@ -35,4 +38,48 @@ TEST(Simulation, AWallBudgetStopsAfterTheFirstStepItExceeds) {
     EXPECT_TRUE(sim.behindRealTime());
     sim.paused = true;
     EXPECT_EQ(sim.advance(10 * sim.params().timeStep), 0);
+}
+
+// The panel's "the text, measured": the claims of the text whose settings the run has are
+// measured as it goes, give the lab sheet's values (the same run, bit for bit), and stop
+// when the run is changed by hand.
+TEST(Simulation, TheTextsClaimsAreMeasuredAsTheRunGoes) {
+    const scenes::Scene preset = scenes::loadScene(scenes::presetPath("02_bounce_projection"));
+    app::Simulation sim(preset);
+    EXPECT_EQ(sim.claimsWatched(), 7u) << "02's claims on the description with no settings";
+    EXPECT_EQ(sim.measuredClaims().size(), 4u) << "the drop, its fall, beta and the substeps, at t = 0";
+    while (sim.world().time < 3.0 + 0.5 * sim.params().timeStep) sim.singleStep();
+    const std::vector<scenes::ClaimCheck> live = sim.measuredClaims();
+    const std::vector<scenes::ClaimCheck> sheet = scenes::checkClaims(preset);
+    std::size_t compared = 0;
+    for (const scenes::ClaimCheck& check : live) {
+        EXPECT_TRUE(check.holds) << check.claim->says << ": " << check.measured;
+        for (const scenes::ClaimCheck& other : sheet) {
+            if (other.claim->says != check.claim->says || other.claim->measure != check.claim->measure ||
+                other.claim->to != check.claim->to) {
+                continue;
+            }
+            EXPECT_EQ(check.samples, other.samples) << check.claim->says;
+            ++compared;
+        }
+    }
+    EXPECT_EQ(live.size(), 6u) << "all but the 30 s one have passed";
+    EXPECT_GE(compared, live.size());
+    EXPECT_FALSE(sim.claimsInterrupted());
+
+    sim.editableScene().params.beta = 1.0;  // a slider moved
+    sim.singleStep();
+    EXPECT_TRUE(sim.claimsInterrupted());
+    EXPECT_TRUE(sim.measuredClaims().empty());
+    sim.restart();  // with beta = 1: the text's "1 bounces for ever"
+    EXPECT_FALSE(sim.claimsInterrupted());
+    ASSERT_EQ(sim.claimsWatched(), 1u);
+
+    sim.editableScene().params.beta = 0.8;
+    sim.restart();
+    sim.singleStep();
+    sim.editableWorld().velocity[0].x += 1.0;  // a sphere thrown by hand
+    sim.singleStep();
+    EXPECT_TRUE(sim.claimsInterrupted());
+    EXPECT_EQ(sim.claimsWatched(), 0u);
 }

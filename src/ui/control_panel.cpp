@@ -390,6 +390,30 @@ void sceneText(const scenes::Scene& scene) {
     if (!scene.description.empty()) textWrappedAtSpaces(scenes::withCount(scene.description, scene));
 }
 
+// Under the text: its claims as this run measured them (scenes/claims.h), folded under a
+// line that counts them, so that the sliders stay where they are.
+void measuredClaims(const Readouts& r) {
+    if (r.claimsWatched == 0 && !r.claimsInterrupted) return;
+    int held = 0;
+    for (const Readouts::ClaimLine& c : r.claims) held += c.holds;
+    char header[160];
+    if (r.claimsInterrupted) {
+        std::snprintf(header, sizeof header, "The text, measured: stopped (changed by hand)###claims");
+    } else {
+        std::snprintf(header, sizeof header, "The text, measured: %d \u2713  %d \u2717  of %zu###claims", held,
+                      int(r.claims.size()) - held, r.claimsWatched);
+    }
+    const bool open = ImGui::CollapsingHeader(header);
+    tooltip("What the text above says, measured in this run since its start: each claim once its moment has "
+            "passed (the lab sheet checks the same claims). A change by hand (a slider, a sphere, the timeline) "
+            "stops the measurement until the next restart (R).");
+    if (!open) return;
+    for (const Readouts::ClaimLine& c : r.claims) {
+        wrappedColored(c.holds ? ImVec4(0.45f, 0.9f, 0.45f, 1.0f) : kAlarmLit,
+                       std::string(c.holds ? "\u2713 " : "\u2717 ") + "\u201c" + c.says + "\u201d: " + c.measured);
+    }
+}
+
 // The presentation layout: only the sliders the scene's text names, and the keys.
 void presentedSliders(const scenes::Scene& scene, PanelState& state, PanelActions& actions) {
     for (const std::string& name : scenes::slidersToMove(scene)) {
@@ -425,6 +449,7 @@ PanelActions drawControlPanel(const scenes::Scene& scene, double& timeScale, con
     }
     ImGui::PushItemWidth(ImGui::GetFontSize() * 9.5f);
     sceneText(scene);
+    measuredClaims(readouts);
     ImGui::Separator();
     if (state.present) {
         presentedSliders(scene, state, actions);

@@ -117,6 +117,16 @@ struct Readouts {
         float color[4] = {1.0f, 1.0f, 1.0f, 1.0f};
     };
     std::vector<LegendLine> legend;
+    // The claims of the scene's text this run has measured (app::Simulation::measuredClaims),
+    // shown under the text, of claimsWatched in all; claimsInterrupted: the run was changed
+    // by hand, so they stopped.
+    struct ClaimLine {
+        std::string says, measured;
+        bool holds = false;
+    };
+    std::vector<ClaimLine> claims;
+    std::size_t claimsWatched = 0;
+    bool claimsInterrupted = false;
 };
 
 struct PanelActions {

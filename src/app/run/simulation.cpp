@@ -31,8 +31,21 @@ void Simulation::startFrom(physics::World world) {
     bounces_ = 0;
     skipEnergyCheck_ = false;
     lastStepTime_ = world_.time;
+    claims_ = scenes::LiveClaims(scene_);
+    claimsInterrupted_ = false;
+    claimsParameters_ = scenes::tableValues(scene_);
+    claims_.observe(world_);
+    claimsState_ = physics::stateHash(world_);
     updateRecording();
     measureNow();
+}
+
+void Simulation::watchClaims() {
+    if (claims_.empty()) return;
+    if (physics::stateHash(world_) != claimsState_ || scenes::tableValues(scene_) != claimsParameters_) {
+        claims_ = {};
+        claimsInterrupted_ = true;
+    }
 }
 
 const physics::ContactGraph& Simulation::contactGraph() const {
@@ -127,10 +140,15 @@ bool Simulation::beforeStep() {
     }
     energyBefore_ = physics::modifiedEnergy(world_, scene_.params);
     sizeBefore_ = world_.size();
+    watchClaims();
     return true;
 }
 
 void Simulation::afterStep() {
+    if (!claims_.empty()) {
+        claims_.observe(world_);
+        claimsState_ = physics::stateHash(world_);
+    }
     bounces_ += lastStats_.collisions;
     impacts_.add(lastStats_.impacts);
     const double energyAfter = physics::modifiedEnergy(world_, scene_.params);

@@ -4,6 +4,7 @@
 // both advance it through advance(), so they step exactly alike.
 #include <cstdint>
 #include <limits>
+#include <vector>
 
 #include "app/teaching/alarms.h"
 #include "app/teaching/contact_ghost.h"
@@ -13,6 +14,7 @@
 #include "app/teaching/restitution.h"
 #include "physics/diagnostics.h"
 #include "physics/step.h"
+#include "scenes/claims.h"
 #include "scenes/scene.h"
 
 namespace app {
@@ -68,6 +70,13 @@ public:
     // the inspector's level.
     const physics::ContactGraph& contactGraph() const;
 
+    // The claims of the scene's text this run has measured so far (scenes::LiveClaims):
+    // judged once their stretch of time has passed. None once the run was changed by
+    // hand (a parameter, a sphere, the timeline): claimsInterrupted() says so.
+    std::vector<scenes::ClaimCheck> measuredClaims() const { return claims_.judged(world_.time); }
+    std::size_t claimsWatched() const { return claims_.size(); }  // judged or not yet
+    bool claimsInterrupted() const { return claimsInterrupted_; }
+
     const Alarms& alarms() const { return alarms_; }
     const RestitutionMeter& restitution() const { return restitution_; }
     // Slide 7's ghosts of the selected sphere's last continuous contact.
@@ -118,6 +127,13 @@ private:
     std::size_t sizeBefore_ = 0;  // spheres before the running step
     double lastStepTime_ = 0.0;   // s, world time after the last step
     bool skipEnergyCheck_ = false;
+    // The claims measured as the run goes: the state and parameters they last saw, so that
+    // a change by hand between steps stops them.
+    scenes::LiveClaims claims_;
+    std::uint64_t claimsState_ = 0;
+    std::vector<double> claimsParameters_;
+    bool claimsInterrupted_ = false;
+    void watchClaims();  // before a step: stop the claims if the run was changed by hand
     mutable physics::ContactGraph graph_;  // contactGraph(), for the state whose hash is graphOf_
     mutable std::uint64_t graphOf_ = 0;
     mutable bool graphFound_ = false;

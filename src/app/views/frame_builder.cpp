@@ -118,6 +118,11 @@ ui::Readouts makeReadouts(const Simulation& simulation, const ui::FrameTimes& ti
             r.properties.push_back({v.name, v.value, v.meaning, static_cast<int>(v.verdict)});
         }
     }
+    for (const scenes::ClaimCheck& check : simulation.measuredClaims()) {
+        r.claims.push_back({check.claim->says, check.measured, check.holds});
+    }
+    r.claimsWatched = simulation.claimsWatched();
+    r.claimsInterrupted = simulation.claimsInterrupted();
     for (const AlarmLine& line : simulation.alarms().lines(simulation.world().time)) {
         r.alarms.push_back({line.text, line.hint, line.lit});
     }
