@@ -294,6 +294,82 @@ class LeftTheBoxMeter : public detail::Meter {
     std::vector<bool> left_;
 };
 
+// The time (s) a watched sphere first touches a plane, once per sphere: it ends a step
+// within its radius of one, or its free flight from the previous step's state, one
+// solver step after another, reached one in between (a bounce within a step, undone
+// by the projection before the step ends).
+class WallContactMeter : public detail::Meter {
+  public:
+    WallContactMeter(const Claim& claim, const Scene& variant)
+        : claim_(claim), stretch_(stretchOf(claim, variant)), params_(variant.params) {}
+    void observe(const World& world) override {
+        touched_.resize(world.size(), false);
+        for (std::size_t i : watched(claim_, world)) {
+            if (touched_[i]) continue;
+            bool touches = planeDepth(world, i) >= 0.0;
+            if (!touches && i < previous_.size()) {
+                glm::dvec3 p = previous_[i].first, v = previous_[i].second;
+                const double h = params_.solverStep();
+                for (int k = 0; k < params_.substeps && !touches; ++k) {
+                    v += h * params_.gravity;
+                    p += h * v;
+                    touches = depthAt(world, p, world.radius[i]) >= 0.0;
+                }
+            }
+            if (!touches) continue;
+            touched_[i] = true;
+            if (stretch_.contains(world.time)) samples_.push_back(world.time);
+        }
+        previous_.resize(world.size());
+        for (std::size_t i = 0; i < world.size(); ++i) previous_[i] = {world.position[i], world.velocity[i]};
+    }
+
+  private:
+    // The deepest penetration of a sphere of radius r centred at p into a plane, / r.
+    static double depthAt(const World& world, const glm::dvec3& p, double r) {
+        double deepest = -INFINITY;
+        for (const physics::Plane& plane : world.planes) {
+            const physics::Plane face = physics::faceFor(plane, p);
+            deepest = std::max(deepest, (r - glm::dot(p - face.point, face.normal)) / r);
+        }
+        return deepest;
+    }
+    const Claim& claim_;
+    Stretch stretch_;
+    const physics::Params& params_;
+    std::vector<bool> touched_;
+    std::vector<std::pair<glm::dvec3, glm::dvec3>> previous_;  // m, m/s
+};
+
+// Each step in which a watched sphere's E~ (its own: m (-g.p + 1/2 |v + (h/2) g|^2), h the
+// solver step) falls, by more than 1e-9 m |g| r: the fall / (m |g| h |v|), v its velocity
+// after the step. A velocity flip at speed V loses exactly m |g| h V: 1.
+class BounceLossMeter : public detail::Meter {
+  public:
+    BounceLossMeter(const Claim& claim, const Scene& variant)
+        : claim_(claim), stretch_(stretchOf(claim, variant)), params_(variant.params) {}
+    void observe(const World& world) override {
+        const double h = params_.solverStep(), g = glm::length(params_.gravity);
+        const std::size_t known = energy_.size();
+        energy_.resize(world.size(), NAN);
+        for (std::size_t i : watched(claim_, world)) {
+            const glm::dvec3 v = world.velocity[i] + (0.5 * h) * params_.gravity;
+            const double now = world.mass[i] * (-glm::dot(params_.gravity, world.position[i]) + 0.5 * glm::dot(v, v));
+            const double fall = energy_[i] - now;  // NaN for a sphere not seen before
+            if (i < known && fall > 1e-9 * world.mass[i] * g * world.radius[i] && stretch_.contains(world.time)) {
+                samples_.push_back(fall / (world.mass[i] * g * h * glm::length(world.velocity[i])));
+            }
+            energy_[i] = now;
+        }
+    }
+
+  private:
+    const Claim& claim_;
+    Stretch stretch_;
+    const physics::Params& params_;
+    std::vector<double> energy_;  // J, each sphere's E~ at the last step
+};
+
 // --- the table ---
 
 using Factory = std::function<std::unique_ptr<detail::Meter>(const Claim&, const Scene&)>;
@@ -359,6 +435,8 @@ const std::vector<MeterEntry>& meterTable() {
          make<ChangeMeter>(true, +[](const World& w, const physics::Params& p) {
              return glm::dvec3(physics::modifiedEnergy(w, p), 0.0, 0.0);
          })},
+        {{"momentum", "kg m/s", "|P|, the length of the momentum readout"},
+         world([](const World& w, const Scene& s) { return glm::length(physics::measure(w, s.params).momentum); })},
         {{"momentum_change", "", "|P - P at t = 0| / |P at t = 0|, the momentum readout"},
          make<ChangeMeter>(false, +[](const World& w, const physics::Params& p) {
              return physics::measure(w, p).momentum;
@@ -432,6 +510,26 @@ const std::vector<MeterEntry>& meterTable() {
          make<ImpactDepthMeter>(false)},
         {{"impact_end", "s", "the time each impact (as impact_depth counts them) ends"}, make<ImpactDepthMeter>(true)},
         {{"left_box_at", "s", "the time a sphere's centre first leaves the box"}, make<LeftTheBoxMeter>()},
+        {{"wall_contact_at", "s", "the time a sphere first touches a plane (within a step's substeps too)"},
+         make<WallContactMeter>()},
+        {{"moving", "", "how many of the watched spheres move faster than 1 cm/s"},
+         [](const Claim& c, const Scene& s) {
+             return std::make_unique<WorldMeter>(c, s, [&c](const World& w) {
+                 double count = 0.0;
+                 for (std::size_t i : watched(c, w)) count += glm::length(w.velocity[i]) > 0.01 ? 1.0 : 0.0;
+                 return count;
+             });
+         }},
+        {{"contact_state", "", "a sphere's state in the last step: 0 free, 1 bounced (orange), 2 static (green)"},
+         sphere([](const World& w, std::size_t i) {
+             switch (w.contactState[i]) {
+                 case physics::ContactState::Colliding: return 1.0;
+                 case physics::ContactState::Static: return 2.0;
+                 default: return 0.0;
+             }
+         })},
+        {{"bounce_loss", "", "each step a sphere's E~ falls: the fall / (m |g| h |v|), v its velocity after"},
+         make<BounceLossMeter>()},
     };
     return table;
 }

@@ -212,38 +212,54 @@ void stampClaimVariants(Scene& scene) {
     }
 }
 
+struct LiveClaims::Watch {
+    Scene scene;
+    std::vector<Claim> claims;
+    std::vector<std::unique_ptr<detail::Meter>> meters;
+    double halfStep = 0.0;  // s: a sample counts for its stretch within half a step
+};
+
 LiveClaims::LiveClaims() = default;
 LiveClaims::~LiveClaims() = default;
 LiveClaims::LiveClaims(LiveClaims&&) noexcept = default;
 LiveClaims& LiveClaims::operator=(LiveClaims&&) noexcept = default;
 LiveClaims::LiveClaims(const LiveClaims&) : LiveClaims() {}
 LiveClaims& LiveClaims::operator=(const LiveClaims& other) {
-    if (this != &other) *this = LiveClaims();
+    if (this != &other) watch_.reset();
     return *this;
 }
 
-LiveClaims::LiveClaims(const Scene& scene) : halfStep_(0.5 * scene.params.timeStep) {
+LiveClaims::LiveClaims(const Scene& scene) : watch_(std::make_unique<Watch>()) {
+    Watch& w = *watch_;
+    w.scene = scene;
+    w.scene.claims.clear();
+    w.halfStep = 0.5 * scene.params.timeStep;
     const std::vector<double> now = tableValues(scene);
     for (const Claim& claim : scene.claims) {
-        if (claim.in != ClaimSource::Description || claim.ratioTo || claim.variant != now) continue;
-        std::unique_ptr<detail::Meter> meter = detail::makeMeter(claim, scene);
-        if (!meter) continue;
-        claims_.push_back(claim);
-        meters_.push_back(std::move(meter));
+        if (claim.in == ClaimSource::Description && !claim.ratioTo && claim.variant == now) w.claims.push_back(claim);
     }
+    // The claims stay where they are now: each meter keeps a reference to its own.
+    for (const Claim& claim : w.claims) w.meters.push_back(detail::makeMeter(claim, w.scene));
 }
 
+std::size_t LiveClaims::size() const { return watch_ ? watch_->claims.size() : 0; }
+
 void LiveClaims::observe(const physics::World& world) {
-    for (const auto& meter : meters_) meter->observe(world);
+    if (!watch_) return;
+    for (const auto& meter : watch_->meters) {
+        if (meter) meter->observe(world);
+    }
 }
 
 std::vector<ClaimCheck> LiveClaims::judged(double time) const {
     std::vector<ClaimCheck> checks;
-    for (std::size_t k = 0; k < claims_.size(); ++k) {
-        if (time < claims_[k].to - halfStep_) continue;
+    if (!watch_) return checks;
+    const Watch& w = *watch_;
+    for (std::size_t k = 0; k < w.claims.size(); ++k) {
+        if (time < w.claims[k].to - w.halfStep) continue;
         ClaimCheck check;
-        check.claim = &claims_[k];
-        check.samples = meters_[k]->samples();
+        check.claim = &w.claims[k];
+        if (w.meters[k]) check.samples = w.meters[k]->samples();
         judge(check, nullptr);
         checks.push_back(std::move(check));
     }

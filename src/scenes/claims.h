@@ -116,16 +116,17 @@ class LiveClaims {
     LiveClaims(const LiveClaims&);
     LiveClaims& operator=(const LiveClaims&);
 
-    bool empty() const { return claims_.empty(); }
-    std::size_t size() const { return claims_.size(); }
+    bool empty() const { return size() == 0; }
+    std::size_t size() const;
     void observe(const physics::World& world);
     // The claims whose stretch has passed at `time` (s), judged, in the scene's order.
     std::vector<ClaimCheck> judged(double time) const;
 
   private:
-    std::vector<Claim> claims_;
-    std::vector<std::unique_ptr<detail::Meter>> meters_;
-    double halfStep_ = 0.0;  // s: a sample counts for its stretch within half a step
+    // The scene and the claims the meters watch for (they keep references to both: kept
+    // in one place, whatever moves the LiveClaims).
+    struct Watch;
+    std::unique_ptr<Watch> watch_;
 };
 
 // Runs `preset` once per distinct variant of its claims and checks each claim.
