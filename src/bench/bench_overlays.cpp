@@ -30,16 +30,17 @@ constexpr double kRestSeconds = 10.0;                     // s simulated before 
 struct Row {
     const char* name;
     ui::PanelState view;
+    bool everyMark = false;  // the hidden marks sent to the GL too (Renderer::cullHiddenMarks off)
 };
 
 std::vector<Row> rows() {
     std::vector<Row> list;
     ui::PanelState none;
-    list.push_back({"none", none});
+    list.push_back({"none", none, false});
     const auto with = [&](const char* name, bool ui::PanelState::*flag) {
         ui::PanelState view;
         view.*flag = true;
-        list.push_back({name, view});
+        list.push_back({name, view, false});
     };
     with("velocity", &ui::PanelState::showVelocity);
     with("contacts", &ui::PanelState::showContacts);
@@ -48,7 +49,9 @@ std::vector<Row> rows() {
     with("trails", &ui::PanelState::showTrails);
     ui::PanelState all;
     all.showVelocity = all.showContacts = all.showImpulses = all.showPenetration = all.showTrails = true;
-    list.push_back({"all", all});
+    list.push_back({"all", all, false});
+    list.push_back({"contacts, hidden marks too", list[2].view, true});
+    list.push_back({"all, hidden marks too", all, true});
     return list;
 }
 
@@ -91,8 +94,8 @@ int main(int argc, char** argv) {
     std::printf("%s after %.0f s, %dx%d px, %dx MSAA, %s backend, %s; load average %s\n\n", preset.c_str(),
                 kRestSeconds, kWidth, kHeight, kSamples, context->name(), bench::cpuModel().c_str(),
                 bench::loadAverage().c_str());
-    std::printf("| overlays | lines + dots | step ms (%s) | snapshot ms | draw ms | frame ms |\n", "h, recorded");
-    std::printf("|---|---:|---:|---:|---:|---:|\n");
+    std::printf("| overlays | lines + dots | drawn | step ms (%s) | snapshot ms | draw ms | frame ms |\n", "h, recorded");
+    std::printf("|---|---:|---:|---:|---:|---:|---:|\n");
     app::Simulation rested(bench::loadPreset(preset));
     rested.singleStep();
     while (rested.world().time < kRestSeconds) rested.singleStep();
@@ -102,6 +105,7 @@ int main(int argc, char** argv) {
     camera.reset(lo, hi, float(kWidth) / float(kHeight));
     for (const Row& row : rows()) {
         app::Simulation simulation = rested;
+        renderer.cullHiddenMarks = !row.everyMark;
         renderer.style.overlayOnTop = app::overlaysOnTop(row.view, simulation.world().size());
         render::FrameSnapshot snapshot;
         std::vector<double> step, build, draw;
@@ -122,8 +126,9 @@ int main(int argc, char** argv) {
             draw.push_back(bench::secondsSince(start));
         }
         const double s = bench::median(step), b = bench::median(build), d = bench::median(draw);
-        std::printf("| %s | %zu | %.2f | %.2f | %.1f | %.1f |\n", row.name, snapshot.lines.size() + snapshot.points.size(),
-                    1e3 * s, 1e3 * b, 1e3 * d, 1e3 * (s + b + d));
+        std::printf("| %s | %zu | %zu | %.2f | %.2f | %.1f | %.1f |\n", row.name,
+                    snapshot.lines.size() + snapshot.points.size(), renderer.drawnMarks(), 1e3 * s, 1e3 * b, 1e3 * d,
+                    1e3 * (s + b + d));
         std::fflush(stdout);
     }
     return 0;

@@ -168,6 +168,10 @@ bool HiddenSphereFinder::behindCover(const ViewSphere& sphere, float edgeMarginP
     nearest -= 4.0f * nearest * nearest * depthQuantum;  // two depth-buffer steps, and rounding
     const Disc disc = discOf(c, outer, pixelSize);
     if (!(disc.outside > 0.0f)) return false;
+    return discBehindCover(disc, nearest);
+}
+
+bool HiddenSphereFinder::discBehindCover(const Disc& disc, float nearest) const {
     if (tilesBehindCover(disc, nearest)) return true;
     const Span rows = pixelsBetween(disc.center.y - disc.outside, disc.center.y + disc.outside, height_);
     for (int y = rows.first; y < rows.end; ++y) {
@@ -247,6 +251,7 @@ std::size_t HiddenSphereFinder::findCovers(const std::vector<ViewSphere>& sphere
 void HiddenSphereFinder::find(std::vector<ViewSphere>& spheres, const FrameContext& frame,
                               bool multisampled, int depthBits, int threadsAsked) {
     for (ViewSphere& sphere : spheres) sphere.hidden = false;
+    covered_ = false;
     width_ = int(frame.viewportSize.x);
     height_ = int(frame.viewportSize.y);
     if (width_ <= 0 || height_ <= 0 || depthBits <= 0) return;
@@ -277,12 +282,37 @@ void HiddenSphereFinder::find(std::vector<ViewSphere>& spheres, const FrameConte
     });
     // A depth d is stored as about 1 - near / d in steps of 2^-depthBits: d^2 times this, m.
     const float depthQuantum = std::ldexp(1.0f, -depthBits) / frame.nearPlane;  // 1/m
+    covered_ = true;
+    pixelSize_ = frame.pixelSize;
+    nearPlane_ = frame.nearPlane;
+    depthQuantum_ = depthQuantum;
     forEachRange(threads, spheres.size(), [&](int, std::size_t begin, std::size_t end) {
         for (std::size_t k = begin; k < end; ++k) {
             ViewSphere& sphere = spheres[k];
             sphere.hidden = sphere.pointSprite && behindCover(sphere, margin, frame.pixelSize, depthQuantum);
         }
     });
+}
+
+// The mark's pixels lie within reach of the segment between its ends' projections: in the
+// disc around their midpoint. Its fragments' depths lie between its ends' (line.vert
+// interpolates them across the quad), less the bias: 1/d' = 1/d + bias / (2 near) is nearer
+// than what the depth buffer holds (the far plane's share only moves it away). A cover's
+// distance along a pixel's ray is at least its view depth there, so a cover nearer than d'
+// along the ray is in front of every fragment of the mark at that pixel.
+bool HiddenSphereFinder::hidesMark(const glm::vec3& a, const glm::vec3& b, float reachPixels, float depthBias) const {
+    if (!covered_) return false;
+    const float depth = std::min(-a.z, -b.z);  // m, view depth of the nearer end
+    if (!(depth > nearPlane_)) return false;
+    const glm::vec2 half = 0.5f * glm::vec2(float(width_), float(height_));
+    const glm::vec2 pa = glm::vec2(a) / -a.z / pixelSize_ + half, pb = glm::vec2(b) / -b.z / pixelSize_ + half;  // px
+    Disc disc;
+    disc.center = 0.5f * (pa + pb);
+    disc.outside = 0.5f * glm::length(pa - pb) + reachPixels + kSpanSlackPixels;
+    float nearest = 1.0f / (1.0f / depth + 0.5f * depthBias / nearPlane_);  // m
+    nearest -= kShaderDepthNoise * nearest;
+    nearest -= 4.0f * nearest * nearest * depthQuantum_;  // two depth-buffer steps, and rounding
+    return discBehindCover(disc, nearest);
 }
 
 }  // namespace render

@@ -43,6 +43,13 @@ class HiddenSphereFinder {
     void find(std::vector<ViewSphere>& spheres, const FrameContext& frame, bool multisampled,
               int depthBits, int threads = 0);
 
+    // After find(), for the same frame: whether an overlay mark no pixel can show is hidden
+    // too. The mark is a segment from a to b (view space, m; a dot when a = b) that line.vert
+    // draws reachPixels wide around it, its depth pulled towards the eye by depthBias (NDC).
+    // It is hidden when every pixel within reach holds a cover surely in front of its
+    // nearest end; false whenever find() found no covers.
+    bool hidesMark(const glm::vec3& a, const glm::vec3& b, float reachPixels, float depthBias) const;
+
   private:
     // Circles on the screen around the projection of a centre (px, from the viewport's
     // lower left): inside one, every pixel centre's ray passes within a distance of the
@@ -66,10 +73,16 @@ class HiddenSphereFinder {
     void coverRows(int firstRow, int endRow);
     bool behindCover(const ViewSphere& sphere, float edgeMarginPixels, float pixelSize,
                      float depthQuantum) const;
+    // Every pixel within disc.outside of disc.center covered nearer than `nearest` (m).
+    bool discBehindCover(const Disc& disc, float nearest) const;
     void findFarthestCoverOfTiles(int firstTileRow, int endTileRow);
     bool tilesBehindCover(const Disc& disc, float nearest) const;
 
     int width_ = 0, height_ = 0;  // px, the viewport
+    // The last find()'s frame, for hidesMark: whether it found covers, the size of a pixel
+    // at 1 m (m), the near plane (m) and a depth-buffer step (1/m, times d^2: m).
+    bool covered_ = false;
+    float pixelSize_ = 0.0f, nearPlane_ = 0.0f, depthQuantum_ = 0.0f;
     // Pixels [x0, x1) x [y0, y1) that some cover reaches: outside, nearestCover_ is not
     // written and stands for +infinity (a few spheres cost as few pixels).
     struct Box {

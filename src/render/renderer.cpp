@@ -112,6 +112,7 @@ struct Renderer::Passes {
     PlanePass planes;
     SpherePass spheres;
     LinePass lines;
+    std::vector<OverlayLine> overlay;  // the last draw's overlay marks, those not hidden
 };
 
 Renderer::Renderer() = default;
@@ -132,6 +133,7 @@ std::string Renderer::init() {
 }
 
 std::size_t Renderer::drawnSpheres() const { return passes_ ? passes_->spheres.drawnSpheres() : 0; }
+std::size_t Renderer::drawnMarks() const { return passes_ ? passes_->overlay.size() : 0; }
 
 void Renderer::shutdown() {
     if (!passes_) return;
@@ -246,9 +248,17 @@ void Renderer::draw(const FrameSnapshot& snapshot, const Camera& camera, int x, 
     passes_->planes.draw(planes.extraFaces, frame, false);
     passes_->lines.draw(planes.edges, frame, true, kLineDepthBias);
 
-    std::vector<OverlayLine> overlay(snapshot.lines.begin(), snapshot.lines.end());
-    for (const OverlayPoint& point : snapshot.points) overlay.push_back(pointAsLine(point));
-    passes_->lines.draw(overlay, frame, !style.overlayOnTop, kLineDepthBias);
+    // Depth-tested marks that no pixel can show (contacts deep in a pile) are left out,
+    // as the hidden spheres are: the same image, fewer quads for a software rasteriser.
+    const bool depthTested = !style.overlayOnTop, cullMarks = depthTested && cullHiddenMarks;
+    std::vector<OverlayLine>& overlay = passes_->overlay;
+    overlay.clear();
+    const auto keep = [&](const OverlayLine& line) {
+        if (!cullMarks || !passes_->spheres.hidesMark(line, frame, kLineDepthBias)) overlay.push_back(line);
+    };
+    for (const OverlayLine& line : snapshot.lines) keep(line);
+    for (const OverlayPoint& point : snapshot.points) keep(pointAsLine(point));
+    passes_->lines.draw(overlay, frame, depthTested, kLineDepthBias);
 
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);

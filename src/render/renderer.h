@@ -64,12 +64,16 @@ class Renderer {
 
     RenderStyle style;
 
-    // Leave out the spheres no pixel can show: the same image, drawn faster by a
-    // software rasteriser, for a little CPU time per frame. init() turns it on when
-    // the GL is one (llvmpipe, softpipe, SwiftShader), where it pays.
+    // Leave out the spheres (and the depth-tested overlay marks) no pixel can show: the
+    // same image, drawn faster by a software rasteriser, for a little CPU time per frame.
+    // init() turns it on when the GL is one (llvmpipe, softpipe, SwiftShader), where it pays.
     bool cullHiddenSpheres = false;
+    // With it, leave out the hidden overlay marks too (off: every mark is sent, to compare).
+    bool cullHiddenMarks = true;
     // Spheres the last draw() sent to the GL.
     std::size_t drawnSpheres() const;
+    // Overlay lines and dots the last draw() sent to the GL (the others were hidden).
+    std::size_t drawnMarks() const;
 
   private:
     struct Passes;

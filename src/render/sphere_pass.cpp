@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "render/renderer.h"
 #include "render/shader_sources.h"
 
 namespace render {
@@ -155,6 +156,13 @@ void SpherePass::partition(const FrameSnapshot& snapshot, const FrameContext& fr
         const std::uint32_t i = sphere.index;
         (sphere.pointSprite ? points_ : quads_).push_back({snapshot.centers[i], snapshot.radii[i], snapshot.colors[i]});
     }
+}
+
+bool SpherePass::hidesMark(const OverlayLine& line, const FrameContext& frame, float depthBias) const {
+    if (!cullHidden) return false;
+    const glm::vec3 a(frame.view * glm::vec4(line.a, 1.0f)), b(frame.view * glm::vec4(line.b, 1.0f));  // m
+    const float reach = 0.5f * line.width * frame.style->lineScale + 1.0f;  // px, as line.vert's
+    return hiddenSpheres_.hidesMark(a, b, reach, depthBias);
 }
 
 void SpherePass::setUniforms(const Program& p, const FrameContext& frame, float marginPixels,

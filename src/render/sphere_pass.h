@@ -33,6 +33,9 @@ class SpherePass {
     // Leaves out the spheres no pixel can show (HiddenSphereFinder): the same image,
     // less work for a software rasteriser, a little CPU time per frame.
     bool cullHidden = false;
+    // After draw(), with cullHidden: whether an overlay line or dot (world space), drawn
+    // depth-tested with `depthBias` as the line pass draws it, is hidden behind the spheres.
+    bool hidesMark(const OverlayLine& line, const FrameContext& frame, float depthBias) const;
 
   private:
     struct Program {

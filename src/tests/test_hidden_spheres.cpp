@@ -192,15 +192,17 @@ class HiddenSpheresDrawn : public ::testing::Test {
     struct Drawn {
         render::Image image;
         std::size_t spheres = 0;  // sent to the GL
+        std::size_t marks = 0;    // overlay lines and dots sent to the GL
     };
     Drawn draw(const render::FrameSnapshot& snapshot, const render::Camera& camera, glm::ivec2 size,
-               int samples, bool cull) {
+               int samples, bool cull, bool cullMarks = true) {
         EXPECT_EQ(target_.resize(size.x, size.y, samples), "");
         target_.bind();
         renderer_.cullHiddenSpheres = cull;
+        renderer_.cullHiddenMarks = cullMarks;
         renderer_.draw(snapshot, camera, 0, 0, size.x, size.y);
         EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
-        return {target_.read(), renderer_.drawnSpheres()};
+        return {target_.read(), renderer_.drawnSpheres(), renderer_.drawnMarks()};
     }
 
     std::unique_ptr<platform::HeadlessContext> context_;
@@ -250,6 +252,44 @@ TEST_F(HiddenSpheresDrawn, LeavingOutTheHiddenSpheresKeepsEveryPixel) {
     }
     // From above only the top layer or two show: most of the pile is left out.
     EXPECT_GT(mostHidden, snapshot.sphereCount() / 2);
+}
+
+// The contacts overlay on a pile, depth-tested as the window draws it above 50 spheres:
+// on each sphere a dot where it would touch its neighbour below and a normal 0.9 r long
+// into it, and dots floating in front of the pile. Leaving out the marks no pixel can show
+// keeps every pixel, in every view of the test above and with or without samples; from
+// above most marks are left out.
+TEST_F(HiddenSpheresDrawn, LeavingOutTheHiddenOverlayMarksKeepsEveryPixel) {
+    render::FrameSnapshot snapshot = pile();
+    const std::size_t spheres = snapshot.sphereCount();
+    for (std::size_t i = 0; i < spheres; ++i) {
+        const glm::vec3 c = snapshot.centers[i];
+        const float r = snapshot.radii[i];
+        const glm::vec3 point = c - glm::vec3(0.0f, 0.0f, r), tip = point + glm::vec3(0.0f, 0.0f, 0.9f * r);
+        snapshot.addLine(point, tip, {80, 220, 255, 255}, 2.0f);
+        snapshot.addPoint(point, {255, 230, 60, 255}, i % 2 ? 4.0f : 8.0f);
+        if (i % 50 == 0) snapshot.addPoint(c + glm::vec3(0.3f, -0.4f, 0.6f), {255, 255, 255, 255}, 6.0f);
+    }
+    renderer_.style.overlayOnTop = false;
+    render::Camera camera;
+    camera.reset({-0.5f, -0.5f, 0}, {0.5f, 0.5f, 1}, 16.0f / 9.0f);
+    std::vector<render::Camera> cameras(4, camera);
+    cameras[1].elevation = 1.5f;
+    cameras[2].distance = 0.9f;
+    cameras[3].distance = 6.0f;
+    std::size_t leftOutFromAbove = 0;
+    const std::size_t marks = snapshot.lines.size() + snapshot.points.size();
+    for (std::size_t v = 0; v < cameras.size(); ++v) {
+        for (int samples : {0, 4}) {
+            const Drawn every = draw(snapshot, cameras[v], {480, 270}, samples, true, false);
+            const Drawn seen = draw(snapshot, cameras[v], {480, 270}, samples, true, true);
+            EXPECT_EQ(differingPixels(every.image, seen.image), 0) << "view " << v << ", " << samples << " samples";
+            EXPECT_EQ(every.marks, marks);
+            EXPECT_LE(seen.marks, every.marks);
+            if (v == 1 && samples == 0) leftOutFromAbove = every.marks - seen.marks;
+        }
+    }
+    EXPECT_GT(leftOutFromAbove, marks / 2);
 }
 
 // From 8 192 spheres on the finder runs on the hardware's threads (the thread team):

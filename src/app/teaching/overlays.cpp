@@ -38,8 +38,10 @@ void perpendiculars(const glm::dvec3& d, glm::dvec3& a, glm::dvec3& b) {
 
 bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
-void appendDot(render::FrameSnapshot& snapshot, const glm::dvec3& p, glm::u8vec4 color, float size) {
-    snapshot.addPoint(glm::vec3(p), withOpacity(kOutlineColor, color.w / 255.0), size + kOutlineExtra);
+// A dot with its dark outline, or without (`outlined` false: a crowded scene).
+void appendDot(render::FrameSnapshot& snapshot, const glm::dvec3& p, glm::u8vec4 color, float size,
+               bool outlined = true) {
+    if (outlined) snapshot.addPoint(glm::vec3(p), withOpacity(kOutlineColor, color.w / 255.0), size + kOutlineExtra);
     snapshot.addPoint(glm::vec3(p), color, size);
 }
 
@@ -215,7 +217,7 @@ void appendContacts(const physics::World& world, render::FrameSnapshot& snapshot
             snapshot.addLine(glm::vec3(e->point), glm::vec3(tip), kOutlineColor, scale * kArrowWidth + kOutlineExtra);
         }
         snapshot.addLine(glm::vec3(e->point), glm::vec3(tip), kNormalColor, scale * kArrowWidth);
-        appendDot(snapshot, e->point, kContactPointColor, scale * (e->bounce ? kPointSize : 0.7f * kPointSize));
+        appendDot(snapshot, e->point, kContactPointColor, scale * (e->bounce ? kPointSize : 0.7f * kPointSize), !crowded);
     }
 }
 
