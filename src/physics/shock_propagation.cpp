@@ -74,15 +74,23 @@ void findEdges(const World& world, PairOrder order, ContactGraph& graph) {
     }
 }
 
+// Whether sphere i is within the margin of a plane (level 0). `clearance`, when the
+// position based passes kept it (solver_stages.h's wallClearance), passes by the spheres
+// surely farther: most of them.
+bool levelZero(const World& world, std::uint32_t i, const std::vector<double>* clearance) {
+    if (clearance && (*clearance)[i] > world.workspace.margin) return false;
+    return nearAPlane(world, i, world.workspace.margin);
+}
+
 // graph.level by a breadth-first search from the spheres that touch a plane, then
 // graph.byLevel and levelStart: the spheres with a level, by level, then by number.
-void findLevels(const World& world, ContactGraph& graph) {
+void findLevels(const World& world, ContactGraph& graph, const std::vector<double>* clearance) {
     const std::size_t n = world.size();
     std::vector<std::uint32_t>& queue = graph.queue;  // breadth-first order
     queue.clear();
     graph.level.assign(n, -1);
     for (std::uint32_t i = 0; i < n; ++i) {
-        if (!nearAPlane(world, i, world.workspace.margin)) continue;
+        if (!levelZero(world, i, clearance)) continue;
         graph.level[i] = 0;
         queue.push_back(i);
     }
@@ -138,7 +146,8 @@ bool isStatic(double normalSpeed, const Params& params) { return std::abs(normal
 class Sweep {
   public:
     Sweep(World& world, const Params& params, StepStats& stats, bool moves)
-        : world_(world), graph_(world.workspace.contactGraph), params_(params), stats_(stats), moves_(moves) {}
+        : world_(world), graph_(world.workspace.contactGraph), params_(params), stats_(stats), moves_(moves),
+          planeScale_(planeScale(world)) {}
 
     // Level k: its contacts inside, then each sphere's on the frozen level below and on the
     // planes, velocities (static contacts) and overlaps; then the contacts those pushes
@@ -223,8 +232,19 @@ class Sweep {
             respondToContact(world_, pair, contact, params_, stats_, params_.passes);
         }
         if (!moves_) return;
-        separateSpheres(world_.position[i], world_.position[j], world_.mass[i], world_.mass[j], contact.u,
-                        contact.depth, params_.split);
+        const Separation moved = separateSpheres(world_.position[i], world_.position[j], world_.mass[i],
+                                                 world_.mass[j], contact.u, contact.depth, params_.split);
+        lowerClearance(i, moved.first);
+        lowerClearance(j, moved.second);
+    }
+
+    // The position based methods keep each sphere's wall clearance (solver_stages.h's
+    // wallClearance: a lower bound on its gap to every plane) through the passes; the
+    // sweep lowers it by each move and visits the planes of a sphere only at or below 0,
+    // as their wall stage does. The velocity method keeps none: every sphere is visited.
+    bool clearanceKept() const { return moves_ && world_.workspace.wallClearance.size() == world_.size(); }
+    void lowerClearance(std::uint32_t i, double moved) {
+        if (clearanceKept()) world_.workspace.wallClearance[i] -= moved;
     }
 
     // byLevel's s-th sphere off the frozen spheres below it, then off the planes (walls
@@ -252,17 +272,23 @@ class Sweep {
         if (velocities && isStatic(glm::dot(world_.velocity[frozen] - world_.velocity[i], contact.u), params_)) {
             respondToFrozenContact(world_, i, frozen, contact, params_, stats);
         }
-        if (moves_) moveOffFrozenSphere(world_.position[i], contact.u, contact.depth);
+        if (moves_) {
+            moveOffFrozenSphere(world_.position[i], contact.u, contact.depth);
+            lowerClearance(i, contact.depth);
+        }
         return contact.depth;
     }
 
     void onPlanes(std::uint32_t i, bool velocities, StepStats& stats) {
+        const bool kept = clearanceKept();
+        if (kept && world_.workspace.wallClearance[i] > 0.0) return;  // touches no plane
         forEachTouchedPlane(world_, i, [&](std::size_t k, const Plane& face) {
             if (velocities && isStatic(glm::dot(world_.velocity[i], face.normal), params_)) {
                 respondToContact(world_, i, k, face, params_, stats, params_.passes);
             }
             if (moves_) projectOnPlane(world_.position[i], world_.radius[i], face);
         });
+        if (kept) world_.workspace.wallClearance[i] = wallClearance(world_, i, planeScale_);
     }
 
     World& world_;
@@ -270,13 +296,14 @@ class Sweep {
     const Params& params_;
     StepStats& stats_;
     const bool moves_;
+    const double planeScale_;  // m: wallClearance's rounding scale
 };
 
 }  // namespace
 
 void findContactGraph(const World& world, PairOrder order, ContactGraph& graph) {
     findEdges(world, order, graph);
-    findLevels(world, graph);
+    findLevels(world, graph, nullptr);
 }
 
 namespace {
@@ -284,14 +311,14 @@ namespace {
 // Whether the graph the last sweep found is this step's too: the same candidate pairs in
 // the same order (a resting pile keeps them for many steps), and the same spheres near a
 // plane. Then its levels and sweep order are this step's, found again for nothing.
-bool graphStillHolds(const World& world, const ContactGraph& graph) {
+bool graphStillHolds(const World& world, const ContactGraph& graph, const std::vector<double>* clearance) {
     const std::vector<SpherePair>& pairs = world.workspace.visitOrder;
     if (graph.levelStart.empty()) return false;  // never found
     if (graph.level.size() != world.size() || graph.builtFrom.size() != pairs.size()) return false;
     const auto same = [](const SpherePair& a, const SpherePair& b) { return a.i == b.i && a.j == b.j; };
     if (!std::equal(pairs.begin(), pairs.end(), graph.builtFrom.begin(), same)) return false;
     for (std::uint32_t i = 0; i < world.size(); ++i) {
-        if (nearAPlane(world, i, world.workspace.margin) != (graph.level[i] == 0)) return false;
+        if (levelZero(world, i, clearance) != (graph.level[i] == 0)) return false;
     }
     return true;
 }
@@ -300,9 +327,14 @@ bool graphStillHolds(const World& world, const ContactGraph& graph) {
 
 void propagateShock(World& world, const Params& params, StepStats& stats, bool moves) {
     if (params.shock != ShockPropagation::On) return;
+    // The position based passes kept the wall clearances of this step (the velocity
+    // method keeps none: its vector may hold another step's).
+    const std::vector<double>* clearance =
+        moves && world.workspace.wallClearance.size() == world.size() ? &world.workspace.wallClearance : nullptr;
     ContactGraph& graph = world.workspace.contactGraph;
-    if (!graphStillHolds(world, graph)) {
-        findContactGraph(world, params.order, graph);
+    if (!graphStillHolds(world, graph, clearance)) {
+        findEdges(world, params.order, graph);
+        findLevels(world, graph, clearance);
         findSweepOrder(graph);
         graph.builtFrom = world.workspace.visitOrder;
     }
