@@ -164,8 +164,9 @@ std::vector<Parameter> makeTable() {
         real("epsilon", "\u03b5  static-contact speed", "m/s", 0.0, 10.0, kDefaults.epsilon,
              "Slide 13: a contact whose relative speed is at or below \u03b5 is static: no "
              "bounce, friction v \u2190 \u03bc v instead, which avoids jittering. An \u03b5 below "
-             "the speed gravity adds in one solver step, |g| h / substeps, cannot catch a "
-             "resting contact.",
+             "(1 \u2212 \u03b2) |g| h / substeps (a solver step's gravity, less the rebound) cannot "
+             "catch a resting sphere: it keeps bouncing in place; up to |g| h / substeps it is "
+             "caught every other step.",
              param<&Params::epsilon>()),
         real("mu", "\u03bc  static-contact friction", "", 0.0, 1.0, kDefaults.mu,
              "Slide 13: friction v \u2190 \u03bc v on both spheres of a static contact. A damping "

@@ -147,7 +147,7 @@ TEST(SimultaneousImpactPresets, TwoStrikers) {
 // (3/4, 0, s3/4), L (1/4, 0, -s3/4); (L,B): v_L.u' = -s3/4: B (3/8, 0, -s3/8), L (-1/8, 0,
 // -s3/8); (T,B) parts; (T,R): c = -3 s3/4: T (-3/8, 0, 5 s3/8), R (1/8, 0, -3 s3/8); (B,R):
 // c = -s3/4: B (0, 0, -s3/4), R (1/2, 0, -s3/4). Pass 2: all part. Energy (4+84+12+28)/64
-// = 2 and momentum 0 kept; T leaves at 1.08 m/s, B at 0.43.
+// = 2 and momentum 0 kept; T leaves at 1.15 m/s (up at 1.08, left at 0.375), B at 0.43.
 // simultaneous, lcp, generalized reflections: L and R each give T and B their normal part
 // from the start; by symmetry lambda on all four, c+ = (4 lambda - s3)/2 = s3/2: lambda =
 // s3/2: L -1/2, R +1/2, T (0, 0, s3/2), B (0, 0, -s3/2). (Jacobi sums the same four changes.)

@@ -113,7 +113,7 @@ std::string penetrationHint(const physics::Params& params) {
     switch (params.method) {
         case physics::Method::ResponseOnly:
             return "response-only has no position correction (slides 5–6): the contact is found inside "
-                   "the floor and a resting sphere sinks by h² g every step; switch method to position";
+                   "the floor and a resting sphere sinks by h² g every second step; switch method to position";
         case physics::Method::VelocityBased:
             return "velocity based only cancels the approach, never pushes apart: an existing overlap "
                    "persists or grows; switch method to position to project it out";
