@@ -203,18 +203,65 @@ void sortBySecondSphere(SpherePair* first, SpherePair* last) {
     }
 }
 
-// pairs <- unsorted, in index order: grouped by first sphere (a counting sort), then
-// each group sorted by second sphere (in parallel).
-void sortByFirstSphere(std::size_t n, const std::vector<SpherePair>& unsorted,
-                       std::vector<std::uint32_t>& start, std::vector<SpherePair>& pairs,
-                       int threads) {
-    pairs.resize(unsorted.size());
-    countingSort(unsorted.size(), n, [&](std::size_t k) { return unsorted[k].i; }, start,
-                 [&](std::size_t k, std::uint32_t slot) { pairs[slot] = unsorted[k]; });
+// The most groups sortByFirstSphere counts apart: each keeps a count per sphere.
+constexpr int kMostSortGroups = 8;
+
+// pairs <- the tasks' pairs (task after task), in index order: a counting sort by first
+// sphere, then each sphere's pairs sorted by second sphere. On several threads each group
+// of consecutive tasks counts its own pairs per sphere and places them after those of the
+// groups before it: the order of one thread, stable, whatever the number of groups.
+void sortByFirstSphere(std::size_t n, const std::vector<TaskScratch>& parts, Workspace& ws, int threads) {
+    const int groups = std::max(1, std::min({threads, kMostSortGroups, int(parts.size())}));
+    const auto partsOf = [&](int g) { return rangeOf(parts.size(), g, groups); };
+    std::vector<std::uint32_t>& count = ws.pairCounts;  // count[g * n + i], then where g places i's next
+    count.assign(std::size_t(groups) * n, 0);
+    runTasks(threads, groups, [&](int g) {
+        std::uint32_t* mine = count.data() + std::size_t(g) * n;
+        const Range r = partsOf(g);
+        for (std::uint32_t t = r.begin; t < r.end; ++t) {
+            for (const SpherePair& pair : parts[t].pairs) ++mine[pair.i];
+        }
+    });
+    // start[i] and each group's first slot for sphere i, over ranges of spheres: each range's
+    // total first, then the ranges' offsets one after another, then the slots.
+    std::vector<std::uint32_t>& start = ws.pairStart;
+    start.assign(n + 1, 0);
+    std::vector<std::uint64_t> rangeTotal(std::size_t(groups) + 1, 0);
+    runTasks(threads, groups, [&](int r) {
+        const Range spheres = rangeOf(n, r, groups);
+        std::uint64_t total = 0;
+        for (std::uint32_t i = spheres.begin; i < spheres.end; ++i) {
+            for (int g = 0; g < groups; ++g) total += count[std::size_t(g) * n + i];
+        }
+        rangeTotal[std::size_t(r) + 1] = total;
+    });
+    for (int r = 0; r < groups; ++r) rangeTotal[std::size_t(r) + 1] += rangeTotal[std::size_t(r)];
+    runTasks(threads, groups, [&](int r) {
+        const Range spheres = rangeOf(n, r, groups);
+        auto next = std::uint32_t(rangeTotal[std::size_t(r)]);
+        for (std::uint32_t i = spheres.begin; i < spheres.end; ++i) {
+            start[i] = next;
+            for (int g = 0; g < groups; ++g) {
+                std::uint32_t& c = count[std::size_t(g) * n + i];
+                const std::uint32_t pairsOfGroup = c;
+                c = next;
+                next += pairsOfGroup;
+            }
+        }
+    });
+    start[n] = std::uint32_t(rangeTotal[std::size_t(groups)]);
+    ws.pairs.resize(start[n]);
+    runTasks(threads, groups, [&](int g) {
+        std::uint32_t* slot = count.data() + std::size_t(g) * n;
+        const Range r = partsOf(g);
+        for (std::uint32_t t = r.begin; t < r.end; ++t) {
+            for (const SpherePair& pair : parts[t].pairs) ws.pairs[slot[pair.i]++] = pair;
+        }
+    });
     runTasks(threads, threads, [&](int t) {
         const Range range = rangeOf(n, t, threads);
         for (std::uint32_t i = range.begin; i < range.end; ++i) {
-            sortBySecondSphere(pairs.data() + start[i], pairs.data() + start[i + 1]);
+            sortBySecondSphere(ws.pairs.data() + start[i], ws.pairs.data() + start[i + 1]);
         }
     });
 }
@@ -253,8 +300,8 @@ std::uint64_t findPairsGrid(const World& world, double margin, Workspace& worksp
     threads = std::max(threads, 1);
     const GridShape grid = chooseGrid(world, margin);
     sortByCell(world, grid, workspace, threads);
-    // Each task finds the pairs of one range of the cell order; put together and
-    // sorted, they are in index order whatever the number of tasks.
+    // Each task finds the pairs of one range of the cell order; sorted together, they
+    // are in index order whatever the number of tasks.
     const int tasks = threads > 1 ? 4 * threads : 1;
     workspace.tasks.resize(std::size_t(tasks));
     std::vector<std::uint64_t> tests(std::size_t(tasks), 0);
@@ -264,14 +311,9 @@ std::uint64_t findPairsGrid(const World& world, double margin, Workspace& worksp
         const Range range = rangeOf(n, t, tasks);
         tests[std::size_t(t)] = forwardPairs(range.begin, range.end, grid, margin, workspace, scratch);
     });
-    workspace.foundPairs.clear();
     std::uint64_t total = 0;
-    for (int t = 0; t < tasks; ++t) {
-        const std::vector<SpherePair>& part = workspace.tasks[std::size_t(t)].pairs;
-        workspace.foundPairs.insert(workspace.foundPairs.end(), part.begin(), part.end());
-        total += tests[std::size_t(t)];
-    }
-    sortByFirstSphere(n, workspace.foundPairs, workspace.pairStart, workspace.pairs, threads);
+    for (int t = 0; t < tasks; ++t) total += tests[std::size_t(t)];
+    sortByFirstSphere(n, workspace.tasks, workspace, threads);
     return total;
 }
 

@@ -177,8 +177,8 @@ struct Workspace {
     std::vector<std::uint32_t> cellStart;   // counting-sort offsets, one per cell + 1
     std::vector<std::uint32_t> sphereByCell;  // then a few slots of padding
     std::vector<glm::dvec4> cellOrdered;      // centre (m) and radius (m), in sphereByCell order
-    std::vector<SpherePair> foundPairs;     // the grid's pairs in cell order, before sorting
     std::vector<std::uint32_t> pairStart;   // counting-sort offsets, one per sphere + 1
+    std::vector<std::uint32_t> pairCounts;  // scratch of that sort: per group of tasks, per sphere
     std::vector<TaskScratch> tasks;         // one per parallel task
     // With several threads the pairs are shared out: thread t visits
     // sharedPairs[shareStart[t], shareStart[t + 1]), the pairs whose first sphere lies in
