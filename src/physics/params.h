@@ -97,7 +97,7 @@ struct Params {
     // The continuous method's most impacts per sphere in a solver step: past N times it,
     // the rest of the step is projected (and counted, StepStats::cappedSteps), so a step
     // never hangs. A sphere at rest makes one or two a step, one bouncing in place with
-    // epsilon = 0 about 30 before its speed rounds to 0.
+    // epsilon = 0 reaches the cap in every solver step (its speed never rounds to 0).
     int maxEventsPerSphere = 50;
 
     // The most impacts a continuous solver step of `spheres` spheres handles.

@@ -238,14 +238,14 @@ std::vector<Parameter> makeTable() {
                "Continuous method only: how the instant of contact is found. closed-form: the "
                "earliest root of the gap, a quadratic in time along the step's parabola. "
                "bisection: the slide's binary search on the same gap, halving the interval "
-               "until it is 1e-12 s long (about 35 halvings per impact).",
+               "until it is 1e-12 s long (32 to 34 halvings per impact).",
                param<&Params::timeOfImpact>())),
         onlyWith(isContinuous, integer("max_events", "most impacts per sphere", 1, 100000, kDefaults.maxEventsPerSphere,
                 "Continuous method only: a solver step of N spheres handles at most N times "
                 "this many impacts. Past it the rest of the step is projected as the position "
                 "method would, and the alarms say so: a step never hangs. A sphere at rest "
-                "makes one or two impacts a step; one bouncing in place with \u03b5 = 0 about "
-                "30, until its speed rounds to 0.",
+                "makes one or two impacts a step; one bouncing in place with \u03b5 = 0 reaches "
+                "the cap in every solver step (its speed never rounds to 0).",
                 param<&Params::maxEventsPerSphere>())),
         choice("response", "sphere-sphere response", {"lecture", "momentum"},
                static_cast<double>(kDefaults.response),
