@@ -165,8 +165,7 @@ std::vector<Parameter> makeTable() {
              "Slide 13: a contact whose relative speed is at or below \u03b5 is static: no "
              "bounce, friction v \u2190 \u03bc v instead, which avoids jittering. An \u03b5 above "
              "|g| h / substeps (the speed gravity adds in one solver step) catches a resting "
-             "contact; below it one may keep bouncing in place (a sphere that settled by "
-             "bouncing meets the floor at |g| h / substeps / (1 + \u03b2) every step).",
+             "contact; below it one may keep bouncing in place.",
              param<&Params::epsilon>()),
         real("mu", "\u03bc  static-contact friction", "", 0.0, 1.0, kDefaults.mu,
              "Slide 13: friction v \u2190 \u03bc v on both spheres of a static contact. A damping "
@@ -228,8 +227,8 @@ std::vector<Parameter> makeTable() {
                "level 0, those touching level k and none lower level k + 1; the levels are swept from "
                "the floor up, each one's contacts answered with the level below frozen (infinitely "
                "heavy, it does not move), then frozen in turn. A stack's weight reaches the floor in "
-               "one sweep, so a column or a pyramid stands without overlap at any K. The sweep answers "
-               "overlaps and static contacts only: impacts stay with the passes, so a struck stack "
+               "one sweep: a column stands as built at any K, a pyramid without overlap at K = 1. "
+               "The sweep answers overlaps and static contacts only: impacts stay with the passes, so a struck stack "
                "still moves. Position, velocity and reflection methods; spheres that reach no plane "
                "keep the passes' answer.",
                param<&Params::shock>())),
