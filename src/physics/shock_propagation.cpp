@@ -171,14 +171,10 @@ class Sweep {
             return;
         }
         const int tasks = 4 * threads;
-        std::vector<StepStats> taskStats(static_cast<std::size_t>(tasks));
-        runTasks(threads, tasks, [&](int t) {
-            StepStats local;  // neighbours in taskStats share cache lines: count apart
+        runCountedTasks(threads, tasks, stats_, [&](int t, StepStats& local) {
             const Range range = rangeOf(count, t, tasks);
             for (std::uint32_t s = first + range.begin; s < first + range.end; ++s) onFrozen(s, true, kMostFrozenRounds, local);
-            taskStats[std::size_t(t)] = local;
         });
-        for (const StepStats& local : taskStats) stats_ += local;
     }
 
     // The pushes off the frozen level may press spheres of level k into each other: those

@@ -34,6 +34,20 @@ inline Range rangeOf(std::size_t n, int t, int tasks) {
             std::uint32_t(n * std::size_t(t + 1) / std::size_t(tasks))};
 }
 
+// task(t, stats) for each t in [0, tasks) on up to `threads` threads, each task counting
+// into a StepStats of its own, the counts summed into `stats` afterwards (neighbours in
+// one array would share cache lines, so each task counts in a local first).
+template <class Task>
+void runCountedTasks(int threads, int tasks, StepStats& stats, const Task& task) {
+    std::vector<StepStats> taskStats(static_cast<std::size_t>(tasks));
+    runTasks(threads, tasks, [&](int t) {
+        StepStats local;
+        task(t, local);
+        taskStats[std::size_t(t)] = local;
+    });
+    for (const StepStats& s : taskStats) stats += s;
+}
+
 // Tasks per thread of forEachSphere: the threads take them as they come, so that
 // spheres that cost more (in the position based wall stage, the few near a wall: the
 // bottom of a pile, the lowest indices) are shared too.
@@ -49,14 +63,10 @@ void forEachSphere(World& world, const Params& params, StepStats& stats, const V
         return;
     }
     const int tasks = kSphereTasksPerThread * threads;
-    std::vector<StepStats> taskStats(static_cast<std::size_t>(tasks));
-    runTasks(threads, tasks, [&](int t) {
-        StepStats local;  // neighbours in taskStats share cache lines: count apart
+    runCountedTasks(threads, tasks, stats, [&](int t, StepStats& local) {
         const Range range = rangeOf(world.size(), t, tasks);
         for (std::uint32_t i = range.begin; i < range.end; ++i) visit(i, local);
-        taskStats[std::size_t(t)] = local;
     });
-    for (const StepStats& s : taskStats) stats += s;
 }
 
 // A share's thread tells the others how far it got after at most this many pairs.
@@ -234,20 +244,10 @@ void forEachColor(World& world, const Params& params, StepStats& stats, const Vi
             if (r.end > r.begin) visit(pairs, r.begin, r.end, s);
         }
     };
-    std::vector<StepStats> taskStats;
-    const auto shared = [&](int tasks, const auto& task) {  // task(t, stats) on the team, counted apart
-        taskStats.assign(std::size_t(tasks), StepStats{});
-        runTasks(threads, tasks, [&](int t) {
-            StepStats local;  // neighbours in taskStats share cache lines: count apart
-            task(t, local);
-            taskStats[std::size_t(t)] = local;
-        });
-        for (const StepStats& s : taskStats) stats += s;
-    };
     if (threads == 1 || blocks < 2) {
         for (std::uint32_t g = 0; g < blocks; ++g) visitBlock(g, stats);
     } else {
-        shared(int(blocks), [&](int g, StepStats& s) { visitBlock(std::uint32_t(g), s); });
+        runCountedTasks(threads, int(blocks), stats, [&](int g, StepStats& s) { visitBlock(std::uint32_t(g), s); });
     }
     for (unsigned c = 0; c < kGroupColors; ++c) {
         const Range r = colorRange(ws, blocks, c);
@@ -257,7 +257,7 @@ void forEachColor(World& world, const Params& params, StepStats& stats, const Vi
             continue;
         }
         const int tasks = kColorTasksPerThread * threads;
-        shared(tasks, [&](int t, StepStats& s) {
+        runCountedTasks(threads, tasks, stats, [&](int t, StepStats& s) {
             const Range part = rangeOf(size, t, tasks);
             visit(pairs, r.begin + part.begin, r.begin + part.end, s);
         });
@@ -281,14 +281,9 @@ void forEachPairInPassOrder(World& world, const Params& params, StepStats& stats
         visit(ws.visitOrder.data(), 0u, std::uint32_t(ws.visitOrder.size()), stats);
         return;
     }
-    std::vector<StepStats> taskStats(static_cast<std::size_t>(threads));
     SharedPass<Visit> pass(world, threads, visit);
-    runTasks(threads, threads, [&](int share) {
-        StepStats local;  // neighbours in taskStats share cache lines: count apart
-        pass.finish(std::uint32_t(share), local);
-        taskStats[std::size_t(share)] = local;
-    });
-    for (const StepStats& s : taskStats) stats += s;
+    runCountedTasks(threads, threads, stats,
+                    [&](int share, StepStats& local) { pass.finish(std::uint32_t(share), local); });
 }
 
 // Adds the wall time (s) from its construction to the end of its scope to `seconds`:
