@@ -301,9 +301,11 @@ std::vector<Parameter> makeTable() {
                      "Radius of every generated sphere (all generators). Applies on restart.",
                      {radiusOf, setRadius}))),
         restart(integer("seed", "seed", 0, kMaxSeed, 1,
-                        "Seed of our own random generator: generated positions and "
-                        "velocities, and the shuffled pair order. Same seed, same run. "
-                        "Applies on restart.",
+                        "Seed of our own random generator: the generated spheres' "
+                        "positions, radii (so masses, where set by density) and velocities, "
+                        "the emitted spheres' radii and velocities, and the shuffled pair "
+                        "order (a generator given its own seed in the file keeps it). Same "
+                        "seed, same run. Applies on restart.",
                         {seedOf, setSeed})),
     };
 }
