@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <set>
 #include <glm/geometric.hpp>
 
 #include "app/commands/capture_command.h"
@@ -150,6 +151,33 @@ TEST(Overlays, ContactsShowThePointUnderTheSphereAndTheFloorNormal) {
     });
     ASSERT_NE(point, snapshot.points.end());
     EXPECT_NEAR(point->position.z, 0.0, 1e-3);
+}
+
+// A pile's contacts are too many to draw each normal (a few pixels each, mostly hidden,
+// and half of what the overlay cost a software GL): over 50 contacts every point keeps
+// its dot and only the selected sphere's contacts keep their normals.
+TEST(Overlays, ACrowdOfContactsShowsEveryPointAndTheSelectedSpheresNormals) {
+    Simulation sim(latticeScene(400));
+    ui::PanelState view = app::viewShowing(only("contacts"));
+    render::FrameSnapshot snapshot;
+    app::buildSnapshot(sim, view, snapshot);  // the overlay asks the steps to record contacts
+    for (int k = 0; k < 120; ++k) sim.singleStep();  // 2 s: on the floor, touching
+    app::buildSnapshot(sim, view, snapshot);
+    const auto dots = std::count_if(snapshot.points.begin(), snapshot.points.end(), [](const auto& p) {
+        return sameColor(p.color, app::kContactPointColor);
+    });
+    ASSERT_GT(dots, 50);
+    EXPECT_TRUE(linesOf(snapshot, app::kNormalColor).empty());
+
+    const int selected = 7;
+    view.selectedSphere = selected;  // as a click in the window
+    app::buildSnapshot(sim, view, snapshot);
+    std::set<std::pair<std::uint32_t, std::int32_t>> touching;  // the last step's contacts of sphere 7
+    for (const physics::ContactEvent& e : sim.world().contacts) {
+        if (e.i == std::uint32_t(selected) || e.other == selected) touching.insert({e.i, e.other});
+    }
+    ASSERT_FALSE(touching.empty());
+    EXPECT_EQ(linesOf(snapshot, app::kNormalColor).size(), touching.size());
 }
 
 TEST(Overlays, ImpulseArrowAtImpactFadesToNothingAfterHalfASecond) {

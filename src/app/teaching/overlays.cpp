@@ -196,7 +196,7 @@ void appendVelocityArrows(const physics::World& world, int selected, render::Fra
     }
 }
 
-void appendContacts(const physics::World& world, render::FrameSnapshot& snapshot) {
+void appendContacts(const physics::World& world, int selected, render::FrameSnapshot& snapshot) {
     // The last response of each (sphere, other) in the step: the passes repeat contacts.
     std::unordered_set<std::uint64_t> seen;
     std::vector<const physics::ContactEvent*> latest;
@@ -206,17 +206,22 @@ void appendContacts(const physics::World& world, render::FrameSnapshot& snapshot
         if (!finite(e.point) || !finite(e.normal) || e.i >= world.size()) continue;
         latest.push_back(&e);
     }
-    // Many contacts (a pile): thinner marks without their dark outline, so that the
-    // spheres still show between them (and a software GL draws a third fewer lines).
+    // Many contacts (a pile): smaller dots without their dark outline, so that the
+    // spheres still show between them, and the normals of the selected sphere only:
+    // a pile's normals are a few pixels each, mostly hidden in the gaps, and were half
+    // of what the overlay cost a software GL.
     const bool crowded = latest.size() > kCrowdedMarks;
     const float scale = crowded ? 0.5f : 1.0f;
     for (const physics::ContactEvent* e : latest) {
-        const double length = 0.9 * world.radius[e->i];  // m, into the sphere the normal points to
-        const glm::dvec3 tip = e->point + length * e->normal;
-        if (!crowded) {
-            snapshot.addLine(glm::vec3(e->point), glm::vec3(tip), kOutlineColor, scale * kArrowWidth + kOutlineExtra);
+        const bool ofSelected = selected >= 0 && (e->i == std::uint32_t(selected) || e->other == selected);
+        if (!crowded || ofSelected) {
+            const double length = 0.9 * world.radius[e->i];  // m, into the sphere the normal points to
+            const glm::dvec3 tip = e->point + length * e->normal;
+            if (!crowded) {
+                snapshot.addLine(glm::vec3(e->point), glm::vec3(tip), kOutlineColor, kArrowWidth + kOutlineExtra);
+            }
+            snapshot.addLine(glm::vec3(e->point), glm::vec3(tip), kNormalColor, scale * kArrowWidth);
         }
-        snapshot.addLine(glm::vec3(e->point), glm::vec3(tip), kNormalColor, scale * kArrowWidth);
         appendDot(snapshot, e->point, kContactPointColor, scale * (e->bounce ? kPointSize : 0.7f * kPointSize), !crowded);
     }
 }
@@ -354,7 +359,9 @@ std::vector<LegendLine> overlayLegend(const OverlayFlags& flags, std::size_t sph
     const std::string notRecorded =
         sphereCount > kMaxRecordSpheres ? " (off above " + std::to_string(kMaxRecordSpheres) + " spheres)" : "";
     if (flags.contacts) {
-        lines.push_back({"contacts: point (yellow) and normal (cyan), last step" + notRecorded, kNormalColor});
+        lines.push_back({"contacts: point (yellow), normal (cyan; over " + std::to_string(kCrowdedMarks) +
+                             " contacts, the selected sphere's only), last step" + notRecorded,
+                         kNormalColor});
     }
     if (flags.impulses) {
         std::snprintf(text, sizeof text, "impulse at impact: 1 kg m/s = %.0f cm, fades in %.1f s%s",

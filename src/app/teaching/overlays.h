@@ -114,7 +114,7 @@ std::vector<std::uint32_t> overlaySpheres(const physics::World& world, int selec
 
 // ---- drawing into the snapshot (after its spheres: trails take their colours) ----
 void appendVelocityArrows(const physics::World& world, int selected, render::FrameSnapshot& snapshot);
-void appendContacts(const physics::World& world, render::FrameSnapshot& snapshot);
+void appendContacts(const physics::World& world, int selected, render::FrameSnapshot& snapshot);
 void appendImpulses(const OverlayState& state, const physics::World& world, render::FrameSnapshot& snapshot);
 void appendTrails(const OverlayState& state, const physics::World& world, render::FrameSnapshot& snapshot);
 // Slide 14's contact graph: each sphere in the colour of its level, a line between the

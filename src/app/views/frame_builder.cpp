@@ -57,7 +57,7 @@ void buildSnapshot(Simulation& simulation, const ui::PanelState& view, render::F
         appendPenetration(currentOverlaps(world, scratch), snapshot);
     }
     if (flags.velocity) appendVelocityArrows(world, simulation.selectedSphere(), snapshot);
-    if (flags.contacts && world.recordContacts) appendContacts(world, snapshot);
+    if (flags.contacts && world.recordContacts) appendContacts(world, simulation.selectedSphere(), snapshot);
     if (flags.impulses) appendImpulses(simulation.overlays(), world, snapshot);
 }
 
