@@ -257,6 +257,9 @@ void WindowApp::handleMouse() {
     if (input_.handleMouse(layout().views, camera_, window_->time())) return;
     const ImGuiIO& io = ImGui::GetIO();
     if (io.WantCaptureMouse) return;
+    // The press's frame: its delta is the move before the press (a jump, when the
+    // pointer moved and clicked within one frame), not a drag.
+    if (ImGui::IsMouseClicked(ImGuiMouseButton_Left) || ImGui::IsMouseClicked(ImGuiMouseButton_Right)) return;
     const glm::vec2 scale = window_->framebufferScale();
     const float dx = io.MouseDelta.x * scale.x, dy = io.MouseDelta.y * scale.y;
     const bool shift = io.KeyShift;
