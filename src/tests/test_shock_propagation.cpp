@@ -264,6 +264,14 @@ TEST(ShockPropagation, AStackStruckFromTheSideIsNotMadeRigid) {
     for (int s = 0; s < 60; ++s) physics::step(withSweep, on);
     EXPECT_GT(withSweep.position[2].x, 0.2);  // struck out of the stack, 0.25 s later
     EXPECT_LT(std::abs(withSweep.position[3].x), 0.05);
+
+    // The flaw the README states: at mu = 0.5 the sweep brakes the struck sphere once more.
+    on.mu = off.mu = 0.5;
+    physics::World dampedWithSweep = world, dampedWithout = world;
+    physics::step(dampedWithSweep, on);
+    physics::step(dampedWithout, off);
+    EXPECT_NEAR(dampedWithout.velocity[2].x, 0.25, 1e-9);
+    EXPECT_NEAR(dampedWithSweep.velocity[2].x, 0.125, 1e-9);
 }
 
 // An impact that travels upward, the stacked drop (a 1 kg sphere resting on a 3 kg one,
