@@ -112,6 +112,14 @@ void sortIntoClusters(World& world, std::vector<LcpContact>& contacts, std::vect
     }
 }
 
+double clusterTolerance(std::size_t count, double fastest, bool impact) {
+    constexpr double kRestingTolerance = 1e-12;       // m/s
+    constexpr std::size_t kSmallCluster = 64;          // contacts
+    constexpr double kImpactTolerance = 1e-14;        // of the fastest approach
+    if (!impact || count > kSmallCluster) return kRestingTolerance;
+    return std::min(kRestingTolerance, kImpactTolerance * fastest);
+}
+
 int projectedGaussSeidel(World& world, LcpContact* contacts, std::size_t count, double tolerance, int mostSweeps,
                          double& residual) {
     int sweeps = 0;

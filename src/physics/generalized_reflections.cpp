@@ -24,9 +24,6 @@ namespace {
 // Random elastic clusters of 3-8 spheres need at most 17; with beta < 1 up to 1322 (the
 // blended answer leaves contacts that approach a little, round after round).
 constexpr int kMostRounds = 10000;
-// Each round's solve stops at this fraction of the fastest approach of its active set
-// (m/s per m/s): the energy is then kept to about 1e-13 of itself.
-constexpr double kRelativeTolerance = 1e-14;
 constexpr int kMostSweeps = 1000;
 // The work of a cluster in a pass at most, in contact visits of the sweeps summed over its
 // rounds: 500 sweeps of all its contacts, at least 4 x 10^6. A resting pile pushes contacts
@@ -111,7 +108,11 @@ void reflectCluster(World& world, const Params& params, LcpContact* contacts, Co
          fastest = findApproaching(world, params, contacts, cluster.count, scratch)) {
         ++cluster.rounds;
         const std::size_t size = scratch.active.size();
-        const double tolerance = kRelativeTolerance * fastest;  // m/s
+        // An impact's solve to 1e-14 of its fastest approach: the energy is then kept to
+        // about 1e-13 of itself; resting contacts' and a pile's to 1e-12 m/s.
+        const bool impact = std::any_of(scratch.active.begin(), scratch.active.end(),
+                                        [](const LcpContact& c) { return !c.isStatic; });
+        const double tolerance = clusterTolerance(cluster.count, fastest, impact);  // m/s
         const int solves = (params.beta < 1.0) + (params.beta > 0.0);
         const int mostSweeps = int(std::clamp<std::uint64_t>(visitsLeft / (solves * size), 1, kMostSweeps));
         scratch.inelastic.assign(size, 0.0);

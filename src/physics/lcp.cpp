@@ -5,7 +5,7 @@
 // b_k = -beta c_k for a contact that approached (a bounce), 0 for a static contact (slide
 // 13: |c_k| <= epsilon). A contact that separates faster takes no part. The problem falls
 // apart into clusters of spheres that touch: projected Gauss-Seidel on each, until none of
-// its contacts is off by more than kLcpTolerance (clusters on several threads). Then the
+// its contacts is off by more than clusterTolerance (clusters on several threads). Then the
 // tangential part, per contact that pushed: alpha on a bounce's, mu on a static contact's
 // relative tangential velocity.
 #include <algorithm>
@@ -16,15 +16,6 @@
 namespace physics {
 namespace {
 
-// m/s: how far from its target a contact may end.
-constexpr double kLcpTolerance = 1e-12;
-// A cluster of at most this many contacts (an impact, not a pile) is solved to
-// kSmallClusterTolerance of its fastest approach instead: with 1e-12 m/s, Bernoulli's
-// problem was left 1.2e-14 m/s off symmetric, enough for a later wall contact to be found
-// a step apart for the two mirror spheres (0.02 m by step 120). Piles keep 1e-12 m/s: the
-// sweeps a tighter tolerance takes there are the cost.
-constexpr std::uint32_t kSmallCluster = 64;
-constexpr double kSmallClusterTolerance = 1e-14;
 // Sweeps over a cluster's contacts at most, whatever the tolerance: a step never hangs.
 // (A landing pile of 1000 needs 300 a solve, and more as it settles: the residual left
 // is shown.)
@@ -33,12 +24,13 @@ constexpr int kLcpMostSweeps = 1000;
 }  // namespace
 
 void solveLcpCluster(World& world, LcpContact* contacts, ContactCluster& cluster) {
-    double tolerance = kLcpTolerance;  // m/s
-    if (cluster.count <= kSmallCluster) {
-        double fastest = 0.0;  // m/s
-        for (std::uint32_t k = 0; k < cluster.count; ++k) fastest = std::max(fastest, std::abs(relativeNormal(world, contacts[k])));
-        tolerance = std::min(tolerance, kSmallClusterTolerance * fastest);
+    double fastest = 0.0;  // m/s
+    bool impact = false;   // a bounce among them
+    for (std::uint32_t k = 0; k < cluster.count; ++k) {
+        fastest = std::max(fastest, std::abs(relativeNormal(world, contacts[k])));
+        impact = impact || contacts[k].target > 0.0;
     }
+    const double tolerance = clusterTolerance(cluster.count, fastest, impact);  // m/s
     cluster.sweeps = std::uint32_t(
         projectedGaussSeidel(world, contacts, cluster.count, tolerance, kLcpMostSweeps, cluster.residual));
     cluster.capped = false;
