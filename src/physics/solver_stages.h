@@ -304,6 +304,11 @@ class StageTimer {
 void integrateVelocity(World& world, const Params& params, double h);
 void integratePosition(World& world, const Params& params, double h);
 
+// out <- the pairs of spheres within the margin of touching now, in index order: from
+// the cached pairs while no sphere has moved past their skin, else from a new search.
+// Timed as StepStats::broadPhaseSeconds.
+void findPairsWithinReach(World& world, const Params& params, StepStats& stats, std::vector<SpherePair>& out);
+
 // Fills world.workspace.visitOrder with the candidate pairs in the order the passes
 // visit them (index, reversed, or shuffled with the world's seed and step count), and
 // with several threads shares them out. Timed as StepStats::broadPhaseSeconds.

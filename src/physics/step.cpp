@@ -78,8 +78,8 @@ bool cachedPairsStillReach(World& world, const Extent& extent, double margin, in
     return 2.0 * std::sqrt(maxMoveSquared) <= ws.reachAtBuild - margin;
 }
 
-// visitOrder <- the cached pairs within `margin` of touching, in index order.
-void keepPairsWithinReach(World& world, double margin, int threads) {
+// out <- the cached pairs within `margin` of touching, in index order.
+void keepPairsWithinReach(World& world, double margin, int threads, std::vector<SpherePair>& out) {
     Workspace& ws = world.workspace;
     const int tasks = threads > 1 ? 4 * threads : 1;
     ws.tasks.resize(std::size_t(tasks));
@@ -91,8 +91,8 @@ void keepPairsWithinReach(World& world, double margin, int threads) {
             if (withinReach(world, ws.pairs[k], margin)) kept.push_back(ws.pairs[k]);
         }
     });
-    ws.visitOrder.clear();
-    for (const TaskScratch& task : ws.tasks) ws.visitOrder.insert(ws.visitOrder.end(), task.pairs.begin(), task.pairs.end());
+    out.clear();
+    for (const TaskScratch& task : ws.tasks) out.insert(out.end(), task.pairs.begin(), task.pairs.end());
 }
 
 void reorder(World& world, PairOrder order) {
@@ -272,7 +272,7 @@ void integratePosition(World& world, const Params& params, double h) {
     forEachSphere(world, params, none, [&](std::uint32_t i, StepStats&) { world.position[i] += h * world.velocity[i]; });
 }
 
-void findOrderedPairs(World& world, const Params& params, StepStats& stats) {
+void findPairsWithinReach(World& world, const Params& params, StepStats& stats, std::vector<SpherePair>& out) {
     const StageTimer timer(stats.broadPhaseSeconds);
     Workspace& ws = world.workspace;
     const int threads = solverThreads(world, params);
@@ -283,10 +283,10 @@ void findOrderedPairs(World& world, const Params& params, StepStats& stats) {
         ws.cached = false;
         stats.pairTests += findPairs(params.broadPhase, world, margin, ws);
         ++stats.broadPhaseBuilds;
-        ws.visitOrder.swap(ws.pairs);  // the pairs are not kept
+        out.swap(ws.pairs);  // the pairs are not kept
     } else if (cachedPairsStillReach(world, extent, margin, threads)) {
         ws.reusedSinceBuild = true;
-        keepPairsWithinReach(world, margin, threads);
+        keepPairsWithinReach(world, margin, threads, out);
     } else {
         ws.buildsNotReused = ws.built && !ws.reusedSinceBuild ? ws.buildsNotReused + 1 : 0;
         ws.reusedSinceBuild = false;
@@ -300,11 +300,17 @@ void findOrderedPairs(World& world, const Params& params, StepStats& stats) {
         if (ws.cached) {
             ws.positionsAtBuild = world.position;
             ws.radiusSumAtBuild = extent.radiusSum;
-            keepPairsWithinReach(world, margin, threads);
+            keepPairsWithinReach(world, margin, threads, out);
         } else {
-            ws.visitOrder.swap(ws.pairs);  // the pairs are not kept
+            out.swap(ws.pairs);  // the pairs are not kept
         }
     }
+}
+
+void findOrderedPairs(World& world, const Params& params, StepStats& stats) {
+    Workspace& ws = world.workspace;
+    findPairsWithinReach(world, params, stats, ws.visitOrder);
+    const StageTimer timer(stats.broadPhaseSeconds);
     stats.candidatePairs += ws.visitOrder.size();
     reorder(world, params.order);
     const int passThreads = threadsFor(world, params);

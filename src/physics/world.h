@@ -155,6 +155,7 @@ struct ContactGraph {
     std::vector<SpherePair> pressed;         // scratch: a level's contacts answered again
     std::vector<std::uint8_t> moved;         // scratch: per sphere, moved in this round
     std::vector<SpherePair> builtFrom;       // the candidate pairs the sweep's graph was found from
+    std::vector<SpherePair> pairsAfterPasses;  // the position stages' pairs within reach after the passes, in index order
     std::vector<std::uint32_t> queue;      // scratch: the breadth-first search's
     std::vector<std::uint32_t> next;       // scratch of the counting sorts: where the next entry goes
 };
