@@ -14,22 +14,6 @@ namespace {
 // The grid covers the spheres' bounding box. Cells are never smaller than one
 // largest diameter plus the margin, and grow if needed to keep at most ~4 cells
 // per sphere, so spheres that fly far apart cannot blow up the memory.
-struct GridShape {
-    glm::dvec3 origin{0.0};  // m, corner of cell (0, 0, 0)
-    double cellSize = 1.0;   // m
-    glm::ivec3 dims{1};
-
-    glm::ivec3 cellOf(const glm::dvec3& p) const {
-        return glm::clamp(glm::ivec3(glm::floor((p - origin) / cellSize)), glm::ivec3(0), dims - 1);
-    }
-    std::uint32_t linear(const glm::ivec3& c) const {
-        return static_cast<std::uint32_t>((c.z * dims.y + c.y) * dims.x + c.x);
-    }
-    glm::ivec3 cellAt(std::uint32_t linearIndex) const {  // the inverse of linear()
-        const int k = static_cast<int>(linearIndex);
-        return {k % dims.x, k / dims.x % dims.y, k / dims.x / dims.y};
-    }
-};
 
 bool finite(const glm::dvec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
 
@@ -299,6 +283,7 @@ std::uint64_t findPairsGrid(const World& world, double margin, Workspace& worksp
     if (n < 2) return 0;
     threads = std::max(threads, 1);
     const GridShape grid = chooseGrid(world, margin);
+    workspace.gridAtBuild = grid;
     sortByCell(world, grid, workspace, threads);
     // Each task finds the pairs of one range of the cell order; sorted together, they
     // are in index order whatever the number of tasks.
@@ -315,6 +300,63 @@ std::uint64_t findPairsGrid(const World& world, double margin, Workspace& worksp
     for (int t = 0; t < tasks; ++t) total += tests[std::size_t(t)];
     sortByFirstSphere(n, workspace.tasks, workspace, threads);
     return total;
+}
+
+std::uint64_t findMoverPairs(const World& world, double margin, Workspace& ws) {
+    const GridShape& grid = ws.gridAtBuild;
+    std::vector<SpherePair>& out = ws.moverPairs;
+    out.clear();
+    std::uint64_t tests = 0;
+    const auto test = [&](std::uint32_t a, std::uint32_t b) {
+        ++tests;
+        const SpherePair pair{std::min(a, b), std::max(a, b)};
+        if (withinReach(world, pair, margin)) out.push_back(pair);
+    };
+    for (std::size_t m = 0; m < ws.movers.size(); ++m) {
+        const std::uint32_t i = ws.movers[m];
+        if (!finite(world.position[i])) continue;  // NaN is never within reach
+        const glm::ivec3 c = grid.cellOf(world.position[i]);
+        const glm::ivec3 lo = glm::max(c - 1, glm::ivec3(0)), hi = glm::min(c + 1, grid.dims - 1);
+        for (int z = lo.z; z <= hi.z; ++z) {
+            for (int y = lo.y; y <= hi.y; ++y) {
+                // A row of up to three cells is one run of slots.
+                const std::uint32_t end = ws.cellStart[grid.linear({hi.x, y, z}) + 1];
+                for (std::uint32_t slot = ws.cellStart[grid.linear({lo.x, y, z})]; slot < end; ++slot) {
+                    const std::uint32_t j = ws.sphereByCell[slot];
+                    if (!ws.isMover[j]) test(i, j);
+                }
+            }
+        }
+    }
+    // Movers with each other: sorted by the build grid's cell they are in now (then by
+    // number), each tested against the movers of the cells around it, each pair once.
+    using MoverInCell = Workspace::MoverInCell;
+    std::vector<MoverInCell>& byCell = ws.moversByCell;
+    byCell.clear();
+    for (std::uint32_t i : ws.movers) {
+        if (finite(world.position[i])) byCell.push_back({grid.linear(grid.cellOf(world.position[i])), i});
+    }
+    const auto before = [](const MoverInCell& a, const MoverInCell& b) {
+        return a.cell != b.cell ? a.cell < b.cell : a.sphere < b.sphere;
+    };
+    std::sort(byCell.begin(), byCell.end(), before);
+    for (const MoverInCell& mover : byCell) {
+        const glm::ivec3 c = grid.cellAt(mover.cell);
+        const glm::ivec3 lo = glm::max(c - 1, glm::ivec3(0)), hi = glm::min(c + 1, grid.dims - 1);
+        for (int z = lo.z; z <= hi.z; ++z) {
+            for (int y = lo.y; y <= hi.y; ++y) {
+                const auto first = std::lower_bound(byCell.begin(), byCell.end(), MoverInCell{grid.linear({lo.x, y, z}), 0}, before);
+                const std::uint32_t last = grid.linear({hi.x, y, z});
+                for (auto other = first; other != byCell.end() && other->cell <= last; ++other) {
+                    if (other->sphere > mover.sphere) test(mover.sphere, other->sphere);
+                }
+            }
+        }
+    }
+    std::sort(out.begin(), out.end(), [](const SpherePair& a, const SpherePair& b) {
+        return a.i != b.i ? a.i < b.i : a.j < b.j;
+    });
+    return tests;
 }
 
 std::uint64_t findPairs(BroadPhase kind, const World& world, double margin, Workspace& workspace,

@@ -25,6 +25,13 @@ std::uint64_t findPairsAllPairs(const World& world, double margin, std::vector<S
 // pairs in index order.
 std::uint64_t findPairsGrid(const World& world, double margin, Workspace& workspace, int threads = 1);
 
+// ws.moverPairs <- the pairs that the movers (ws.movers, flagged in ws.isMover) make with
+// any sphere, within `margin` of touching now, each once, sorted by i then j; returns the
+// distance tests made. The other spheres are looked up in the last grid build's cells
+// around each mover: each must be within (the build's reach - margin) of where the build
+// saw it, so that one cell around is far enough. Movers are tested with each other.
+std::uint64_t findMoverPairs(const World& world, double margin, Workspace& ws);
+
 double maxRadius(const World& world);  // m, 0 for an empty world
 
 // Whether the pair's spheres are within `margin` (m) of touching.

@@ -69,6 +69,7 @@ StepStats stepWithPositionResponse(World& world, const Params& params, double h,
     integrateVelocity(world, params, h);  // A
     integratePosition(world, params, h);
     findOrderedPairs(world, params, stats);
+    if (params.shock == ShockPropagation::On) world.workspace.contactGraph.positionsBeforePasses = world.position;
     {
         const StageTimer timer(stats.passesSeconds);
         findWallClearances(world, params);

@@ -19,6 +19,7 @@
 // towards it, an impact would throw the upper sphere off with energy from nowhere (the
 // frozen sphere keeps its own), and a struck stack would move as one rigid body.
 #include <algorithm>
+#include <cmath>
 
 #include "physics/solver_stages.h"
 
@@ -34,6 +35,9 @@ constexpr int kMostLevelRounds = 4;
 constexpr int kMostFrozenRounds = 8;
 // A level of fewer spheres is answered on one thread: sharing it out would cost more.
 constexpr std::uint32_t kParallelLevelSpheres = 512;
+// The position stage finds the pairs within reach again after the passes, for the graph,
+// where a sphere moved in them by more than this fraction of the margin.
+constexpr double kMoveThatFindsPairsAgain = 0.25;
 
 // graph.edgeStart and graph.neighbour: the candidate pairs, all within the margin of
 // touching. A pair the passes left a hair apart is an edge too, so the sweep's moves, which
@@ -303,6 +307,18 @@ void findContactGraph(const World& world, PairOrder order, ContactGraph& graph) 
 
 namespace {
 
+// m: the farthest a sphere moved since ContactGraph::positionsBeforePasses.
+double farthestMoveInThePasses(const World& world, const ContactGraph& graph) {
+    const std::vector<glm::dvec3>& before = graph.positionsBeforePasses;
+    if (before.size() != world.size()) return INFINITY;
+    double farthestSquared = 0.0;  // m^2
+    for (std::size_t i = 0; i < before.size(); ++i) {
+        const glm::dvec3 move = world.position[i] - before[i];
+        farthestSquared = std::max(farthestSquared, glm::dot(move, move));
+    }
+    return std::sqrt(farthestSquared);
+}
+
 // Whether the graph the last sweep found is this step's too: the same candidate pairs in
 // the same order (a resting pile keeps them for many steps), and the same spheres near a
 // plane. Then its levels and sweep order are this step's, found again for nothing.
@@ -331,10 +347,12 @@ void propagateShock(World& world, const Params& params, StepStats& stats, bool m
     // past the margin the step's pairs were found with (an impact's lift pushed a sphere
     // into one it had no pair with; the sweep, blind to that pair, then lifted it deeper:
     // 16.5 % of r in a landing pile of 10k, against 1.9 % once found again).
-    // The velocity method moves nothing in its passes: its pairs still hold.
+    // The velocity method moves nothing in its passes: its pairs still hold; nor does the
+    // position stage, for the graph, where no sphere moved by a quarter of the margin the
+    // pairs were found with (a pair it leaves out is then more than half the margin apart).
     std::vector<SpherePair>* pairs = &world.workspace.visitOrder;
     PairOrder order = params.order;
-    if (moves) {
+    if (moves && farthestMoveInThePasses(world, graph) > kMoveThatFindsPairsAgain * world.workspace.margin) {
         pairs = &graph.pairsAfterPasses;
         order = PairOrder::Index;
         findPairsWithinReach(world, params, stats, *pairs);

@@ -59,28 +59,43 @@ Extent extentOf(const World& world) {
     return e;
 }
 
-bool cachedPairsStillReach(World& world, const Extent& extent, double margin, int threads) {
+// A sphere that has moved more than half of (reach - margin) since the build may meet
+// spheres outside the cached pairs: a mover. Two others have closed their distance by at
+// most reach - margin, so every pair of them within the margin now is cached. Past this
+// share of movers a new build costs less than finding their pairs one by one.
+constexpr std::size_t kMostMoversPerSphere = 8;  // 1 in 8
+
+// Whether the cached pairs can serve now; ws.movers and ws.isMover <- the movers.
+bool cacheServes(World& world, const Extent& extent, double margin, int threads) {
     Workspace& ws = world.workspace;
     if (!ws.cached || ws.positionsAtBuild.size() != world.size() || ws.radiusSumAtBuild != extent.radiusSum) {
         return false;
     }
-    ws.taskMove.assign(std::size_t(threads), 0.0);
+    const double slack = 0.5 * (ws.reachAtBuild - margin);  // m
+    ws.isMover.resize(world.size());
     runTasks(threads, threads, [&](int t) {
         const Range range = rangeOf(world.size(), t, threads);
-        double maxMoveSquared = 0.0;  // m^2
         for (std::uint32_t i = range.begin; i < range.end; ++i) {
             const glm::dvec3 move = world.position[i] - ws.positionsAtBuild[i];
-            maxMoveSquared = std::max(maxMoveSquared, glm::dot(move, move));
+            ws.isMover[i] = !(glm::dot(move, move) <= slack * slack);  // a NaN moves
         }
-        ws.taskMove[std::size_t(t)] = maxMoveSquared;
     });
-    const double maxMoveSquared = *std::max_element(ws.taskMove.begin(), ws.taskMove.end());
-    return 2.0 * std::sqrt(maxMoveSquared) <= ws.reachAtBuild - margin;
+    ws.movers.clear();
+    const std::size_t most = world.size() / kMostMoversPerSphere;
+    for (std::uint32_t i = 0; i < world.size(); ++i) {
+        if (!ws.isMover[i]) continue;
+        if (ws.movers.size() == most) return false;
+        ws.movers.push_back(i);
+    }
+    return true;
 }
 
-// out <- the cached pairs within `margin` of touching, in index order.
-void keepPairsWithinReach(World& world, double margin, int threads, std::vector<SpherePair>& out) {
+// out <- the pairs within `margin` of touching, in index order: the cached pairs of
+// spheres that are not movers, filtered, and the movers' pairs found anew (cacheServes).
+void keepPairsWithinReach(World& world, double margin, int threads, std::vector<SpherePair>& out,
+                          StepStats& stats) {
     Workspace& ws = world.workspace;
+    const bool anyMover = !ws.movers.empty();
     const int tasks = threads > 1 ? 4 * threads : 1;
     ws.tasks.resize(std::size_t(tasks));
     runTasks(threads, tasks, [&](int t) {
@@ -88,11 +103,19 @@ void keepPairsWithinReach(World& world, double margin, int threads, std::vector<
         std::vector<SpherePair>& kept = ws.tasks[std::size_t(t)].pairs;
         kept.clear();
         for (std::uint32_t k = range.begin; k < range.end; ++k) {
-            if (withinReach(world, ws.pairs[k], margin)) kept.push_back(ws.pairs[k]);
+            const SpherePair pair = ws.pairs[k];
+            if (anyMover && (ws.isMover[pair.i] | ws.isMover[pair.j])) continue;
+            if (withinReach(world, pair, margin)) kept.push_back(pair);
         }
     });
     out.clear();
     for (const TaskScratch& task : ws.tasks) out.insert(out.end(), task.pairs.begin(), task.pairs.end());
+    if (!anyMover) return;
+    stats.pairTests += findMoverPairs(world, margin, ws);
+    const std::size_t kept = out.size();
+    out.insert(out.end(), ws.moverPairs.begin(), ws.moverPairs.end());
+    std::inplace_merge(out.begin(), out.begin() + std::ptrdiff_t(kept), out.end(),
+                       [](const SpherePair& a, const SpherePair& b) { return a.i != b.i ? a.i < b.i : a.j < b.j; });
 }
 
 void reorder(World& world, PairOrder order) {
@@ -284,9 +307,9 @@ void findPairsWithinReach(World& world, const Params& params, StepStats& stats, 
         stats.pairTests += findPairs(params.broadPhase, world, margin, ws);
         ++stats.broadPhaseBuilds;
         out.swap(ws.pairs);  // the pairs are not kept
-    } else if (cachedPairsStillReach(world, extent, margin, threads)) {
+    } else if (cacheServes(world, extent, margin, threads)) {
         ws.reusedSinceBuild = true;
-        keepPairsWithinReach(world, margin, threads, out);
+        keepPairsWithinReach(world, margin, threads, out, stats);
     } else {
         ws.buildsNotReused = ws.built && !ws.reusedSinceBuild ? ws.buildsNotReused + 1 : 0;
         ws.reusedSinceBuild = false;
@@ -300,7 +323,8 @@ void findPairsWithinReach(World& world, const Params& params, StepStats& stats, 
         if (ws.cached) {
             ws.positionsAtBuild = world.position;
             ws.radiusSumAtBuild = extent.radiusSum;
-            keepPairsWithinReach(world, margin, threads, out);
+            ws.movers.clear();
+            keepPairsWithinReach(world, margin, threads, out, stats);
         } else {
             out.swap(ws.pairs);  // the pairs are not kept
         }

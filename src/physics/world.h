@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <vector>
 
+#include <glm/common.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
@@ -155,9 +156,29 @@ struct ContactGraph {
     std::vector<SpherePair> pressed;         // scratch: a level's contacts answered again
     std::vector<std::uint8_t> moved;         // scratch: per sphere, moved in this round
     std::vector<SpherePair> builtFrom;       // the candidate pairs the sweep's graph was found from
-    std::vector<SpherePair> pairsAfterPasses;  // the position stages' pairs within reach after the passes, in index order
+    std::vector<glm::dvec3> positionsBeforePasses;  // m, the position stages' (shock on)
+    std::vector<SpherePair> pairsAfterPasses;  // their pairs within reach after the passes, in index order
     std::vector<std::uint32_t> queue;      // scratch: the breadth-first search's
     std::vector<std::uint32_t> next;       // scratch of the counting sorts: where the next entry goes
+};
+
+// The broad phase's uniform grid (broad_phase.cpp): cubic cells from `origin`, `dims`
+// of them along x, y, z; a centre outside belongs to the nearest cell.
+struct GridShape {
+    glm::dvec3 origin{0.0};  // m, corner of cell (0, 0, 0)
+    double cellSize = 1.0;   // m
+    glm::ivec3 dims{1};
+
+    glm::ivec3 cellOf(const glm::dvec3& p) const {
+        return glm::clamp(glm::ivec3(glm::floor((p - origin) / cellSize)), glm::ivec3(0), dims - 1);
+    }
+    std::uint32_t linear(const glm::ivec3& c) const {
+        return static_cast<std::uint32_t>((c.z * dims.y + c.y) * dims.x + c.x);
+    }
+    glm::ivec3 cellAt(std::uint32_t linearIndex) const {  // the inverse of linear()
+        const int k = static_cast<int>(linearIndex);
+        return {k % dims.x, k / dims.x % dims.y, k / dims.x / dims.y};
+    }
 };
 
 // Scratch memory reused from step to step, so a step allocates nothing once warm.
@@ -174,6 +195,17 @@ struct Workspace {
     bool built = false;                        // the grid has built pairs before
     bool reusedSinceBuild = false;             // the pairs served more than one step
     int buildsNotReused = 0;                   // consecutive builds that served one step
+    // Spheres that have moved too far since the build for its pairs to hold theirs
+    // (step.cpp's movers): their pairs are found anew, the others' filtered.
+    std::vector<std::uint32_t> movers;
+    std::vector<std::uint8_t> isMover;  // per sphere, 1 for a mover
+    std::vector<SpherePair> moverPairs;  // scratch
+    struct MoverInCell {
+        std::uint32_t cell, sphere;
+    };
+    std::vector<MoverInCell> moversByCell;  // scratch
+    // The grid of the last grid build, and the spheres in it as they were then.
+    GridShape gridAtBuild;
     std::vector<std::uint32_t> cellOfSphere;
     std::vector<std::uint32_t> cellStart;   // counting-sort offsets, one per cell + 1
     std::vector<std::uint32_t> sphereByCell;  // then a few slots of padding

@@ -475,3 +475,25 @@ TEST(SolverCache, BuildingWithoutTheSkinChangesNoState) {
 }
 
 }  // namespace
+
+// The movers (step.cpp): a sphere that moved past the cached pairs' skin has its pairs
+// found anew from the last build's grid, the others' filtered. A pile of 5000 coming to
+// rest (few spheres still move) and another struck by a fast sphere: at every step the
+// same state as a fresh build, and the movers' path served steps on its own.
+TEST(SolverCache, FindingOnlyTheMoversPairsChangesNoState) {
+    for (const bool struck : {false, true}) {
+        const scenes::Scene scene = pile({});
+        physics::World cached = run(scene, 300);  // 5 s: landed, a few still rolling
+        if (struck) cached.addSphere({-1.0, 0.0, 0.3}, {8.0, 0.0, 0.0}, 0.025, 0.1);
+        physics::World fresh = cached;
+        int servedByMovers = 0;
+        for (int k = 0; k < 60; ++k) {
+            const physics::StepStats stats = physics::step(cached, scene.params);
+            servedByMovers += stats.broadPhaseBuilds == 0 && !cached.workspace.movers.empty();
+            fresh.workspace = physics::Workspace{};
+            physics::step(fresh, scene.params);
+            ASSERT_EQ(physics::stateHash(cached), physics::stateHash(fresh)) << "step " << k << (struck ? ", struck" : "");
+        }
+        EXPECT_GT(servedByMovers, 0) << (struck ? "struck" : "at rest");
+    }
+}
