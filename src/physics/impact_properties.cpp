@@ -46,10 +46,21 @@ void findTouching(World& world, ImpactScratch& scratch) {
         if (touching(world, pair, contact)) scratch.contacts.push_back({pair.i, pair.j, contact.u, 0.0});
     }
     for (std::uint32_t i = 0; i < world.size(); ++i) {
-        forEachTouchedPlane(world, i, [&](std::size_t, const Plane& face) {
-            scratch.contacts.push_back({i, -1, face.normal, 0.0});
+        forEachTouchedPlane(world, i, [&](std::size_t k, const Plane& face) {
+            scratch.contacts.push_back({i, -1 - std::int64_t(k), face.normal, 0.0});
         });
     }
+}
+
+// Whether the contact still touches at the end of the step: the position stages may have
+// moved its spheres apart (a contact that no longer touches may approach: it is no contact).
+bool stillTouching(const World& world, const MeasuredContact& c) {
+    if (c.j >= 0) {
+        SphereContact contact;
+        return touching(world, SpherePair{c.i, std::uint32_t(c.j)}, contact);
+    }
+    const Plane& plane = world.planes[std::size_t(-1 - c.j)];
+    return touching(world.position[c.i], world.radius[c.i], faceFor(plane, world.position[c.i]));
 }
 
 double kineticOf(const World& world, std::size_t i, const glm::dvec3& v) {
@@ -104,7 +115,7 @@ void endMeasuringImpacts(World& world, StepStats& stats) {
     for (const MeasuredContact& c : scratch.contacts) {
         const double after = approach(world, c);  // m/s
         p.struck += c.approachBefore < -kConvergedApproachSpeed;
-        p.fastestApproachAfter = std::max(p.fastestApproachAfter, -after);
+        if (stillTouching(world, c)) p.fastestApproachAfter = std::max(p.fastestApproachAfter, -after);
         const bool struckCluster = scratch.clusterFlags[root(scratch.cluster, c.i)] & kStruck;
         if (c.j < 0 || !struckCluster || std::abs(c.approachBefore) > kConvergedApproachSpeed) continue;
         ++p.restingPairs;

@@ -33,7 +33,8 @@ struct ImpactProperties {
     ImpactProperties& operator+=(const ImpactProperties& o);
 };
 
-// A contact of the measurement: spheres i and j (j < 0: a plane), unit normal u from j to i.
+// A contact of the measurement: spheres i and j (j < 0: the plane -1 - j), unit normal u
+// from j to i.
 struct MeasuredContact {
     std::uint32_t i = 0;
     std::int64_t j = -1;
