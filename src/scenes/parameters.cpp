@@ -162,14 +162,15 @@ std::vector<Parameter> makeTable() {
              "\u03b2\u00b2.",
              param<&Params::beta>()),
         real("epsilon", "\u03b5  static-contact speed", "m/s", 0.0, 10.0, kDefaults.epsilon,
-             "Slide 13: a contact whose relative speed is at or below \u03b5 is static: no "
+             "Slide 13: a contact whose relative normal speed is at or below \u03b5 is static: no "
              "bounce, friction v \u2190 \u03bc v instead, which avoids jittering. An \u03b5 above "
              "|g| h / substeps (the speed gravity adds in one solver step) catches a resting "
              "contact; below it one may keep bouncing in place.",
              param<&Params::epsilon>()),
         real("mu", "\u03bc  static-contact friction", "", 0.0, 1.0, kDefaults.mu,
              "Slide 13: friction v \u2190 \u03bc v on both spheres of a static contact. A damping "
-             "factor applied each time a static contact is handled (once per pass), not Coulomb's "
+             "factor applied each time a static contact is handled (once per pass, and once more in "
+             "the shock sweep), not Coulomb's "
              "friction coefficient: 1 keeps the velocity, 0 stops it. With the momentum-conserving "
              "response, a static sphere-sphere contact damps the relative tangential velocity "
              "instead (equal and opposite impulses), so momentum stays exact.",
@@ -230,10 +231,12 @@ std::vector<Parameter> makeTable() {
                "level 0, those touching level k and none lower level k + 1; the levels are swept from "
                "the floor up, each one's contacts answered with the level below frozen (infinitely "
                "heavy, it does not move), then frozen in turn. A stack's weight reaches the floor in "
-               "one sweep: a column stands as built at any K, a pyramid without overlap at K = 1. "
-               "The sweep answers overlaps and static contacts only: impacts stay with the passes, so a struck stack "
-               "still moves. Position, velocity and reflection methods; spheres that reach no plane "
-               "keep the passes' answer.",
+               "one sweep: with the position and reflection methods a column stands as built at any "
+               "K, a pyramid without overlap at K = 1. The sweep answers overlaps (position, "
+               "reflection) and static contacts only: impacts stay with the passes, so a struck "
+               "stack still moves. With the velocity method it moves no sphere, and overlaps stay "
+               "(a column of 20: 2.7 % of r at K = 1). Spheres that reach no plane keep the "
+               "passes' answer.",
                param<&Params::shock>())),
         onlyWith(isContinuous, choice("toi", "time of impact", {"closed-form", "bisection"},
                static_cast<double>(kDefaults.timeOfImpact),
@@ -280,7 +283,7 @@ std::vector<Parameter> makeTable() {
                             "8192 spheres, where a second thread starts to pay, and one below; "
                             "auto tries one thread now and then and keeps it while more were "
                             "slower (other programs busy on the cores). "
-                            "The result is the same, bit for bit, for any count and pair order: "
+                            "The result is the same, bit for bit, for any thread count, in each pair order: "
                             "each thread takes the pairs of its slab of the box, and waits where "
                             "a sphere met another thread's pair last, so each sphere still meets "
                             "its partners in the pair order (in the colored order, threads share "
