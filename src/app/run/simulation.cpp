@@ -93,13 +93,17 @@ int Simulation::advance(double realSeconds) {
     accumulator_ += realSeconds * timeScale;
     const auto start = std::chrono::steady_clock::now();
     int steps = 0;
+    double lastStep = 0.0;  // s of wall time the last step took: what the next may take
     while (accumulator_ >= due && steps < kMaxStepsPerFrame) {
+        const auto stepStart = std::chrono::steady_clock::now();
         if (!beforeStep() || !guardedStep()) break;
         afterStep();
         accumulator_ -= h;
         ++steps;
         if (paused) break;  // an alarm stopped it
-        if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > wallBudget) break;
+        const auto now = std::chrono::steady_clock::now();
+        lastStep = std::chrono::duration<double>(now - stepStart).count();
+        if (std::chrono::duration<double>(now - start).count() + lastStep > wallBudget) break;
     }
     behind_ = !paused && accumulator_ >= due;
     if (behind_ || paused) accumulator_ = 0.0;

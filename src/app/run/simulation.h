@@ -30,9 +30,9 @@ public:
     void setScene(scenes::Scene scene);
 
     // Real seconds since the last frame: scaled by timeScale, accumulated, and spent
-    // in whole steps of h. At most kMaxStepsPerFrame run per call, and no more once
-    // wallBudget is spent; time beyond that is dropped (the "spiral of death" guard)
-    // and behindRealTime() says so.
+    // in whole steps of h. At most kMaxStepsPerFrame run per call, and after the first
+    // none that would end past wallBudget (as long as the last took); time beyond that is
+    // dropped (the "spiral of death" guard) and behindRealTime() says so.
     // Returns the number of steps run. Does nothing while paused.
     int advance(double realSeconds);
     void singleStep();  // one step of h, paused or not

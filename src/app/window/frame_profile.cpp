@@ -24,7 +24,16 @@ void FrameProfile::lap(Part part) {
 
 void FrameProfile::endFrame(bool keep) {
     if (keep) frames_.push_back(current_);
+    previous_ = current_;
     current_ = {};
+}
+
+double FrameProfile::lastFrameWithout(Part part) const {
+    double sum = 0.0;  // ms
+    for (int p = 0; p < kParts; ++p) {
+        if (p != part) sum += previous_[std::size_t(p)];
+    }
+    return sum;
 }
 
 double FrameProfile::medianOf(Part part) const {

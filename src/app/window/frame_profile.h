@@ -17,6 +17,8 @@ public:
     void lap(Part part);
     // The frame's parts are kept when `keep`, and the next frame starts.
     void endFrame(bool keep);
+    // ms: what the last frame spent on everything but `part`.
+    double lastFrameWithout(Part part) const;
     // "spheres: 300 frames; the last 299 in 3.60 s: 83.0 frames per second (median ...)".
     void print(int frames, double seconds) const;
 
@@ -26,6 +28,7 @@ private:
 
     std::chrono::steady_clock::time_point last_;
     Parts current_{};
+    Parts previous_{};  // the last frame's
     std::vector<Parts> frames_;
 };
 
