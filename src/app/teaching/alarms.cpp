@@ -81,6 +81,10 @@ bool energyCreated(double before, double after, double scale, const physics::Par
     return energyRuleApplies(params) && after - before > kEnergyTolerance * std::max(scale, kMinEnergyScale) + slack;
 }
 
+// From this static-contact friction up, the position based projection can lift a stack
+// within a step (09's column: E~ rises at mu = 0.98, never at 0.97; test_canonical_checks).
+constexpr double kProjectionLiftsFromMu = 0.98;
+
 std::string energyHint(const physics::Params& params) {
     if (params.solver == physics::Solver::Simultaneous) {
         return "the simultaneous solver answers each contact as if it were alone and sums the answers: a sphere "
@@ -102,6 +106,10 @@ std::string energyHint(const physics::Params& params) {
                "after v ← v + h g, inside the wall): a floor bounce loses energy, a bounce off the "
                "ceiling gains about m g h |v⊥|; smaller with more substeps";
     }
+    if (params.mu >= kProjectionLiftsFromMu) {  // position based
+        return "without static damping (μ near 1) the projection of a stack can lift it within a step "
+               "(the column of 09 at μ = 1: up to 0.07 J); over a run it still loses; lower μ to 0.97 or less";
+    }
     return "not expected from the lecture's rules with α, β ≤ 1: report the scene and its parameters";
 }
 
@@ -113,7 +121,8 @@ std::string penetrationHint(const physics::Params& params) {
     switch (params.method) {
         case physics::Method::ResponseOnly:
             return "response-only has no position correction (slides 5–6): the contact is found inside "
-                   "the floor and a resting sphere sinks by h² g every second step; switch method to position";
+                   "the floor and a resting sphere sinks by h² g every solver step once its contact is static "
+                   "(every second step when ε < g h / substeps, as in 01); switch method to position";
         case physics::Method::VelocityBased:
             return "velocity based only cancels the approach, never pushes apart: an existing overlap "
                    "persists or grows; switch method to position to project it out";
@@ -141,7 +150,8 @@ std::string escapeHint(const physics::Params& params) {
                "per h / substeps, or pushed through by the passes): lower h or raise substeps";
     }
     return "without projection (slide 7) a wall only turns the velocity: a sphere pushed on by gravity "
-           "or by its neighbours sinks through it; switch method to position, or lower h";
+           "or by its neighbours sinks through it, and one fast enough to cross the wall's plane within a "
+           "step is never met (the contacts are found before the move); switch method to position, or lower h";
 }
 
 std::string heldInMidAirHint(const physics::Params& params) {
