@@ -319,3 +319,24 @@ TEST(InteractionSelection, TheExplainedContactsOtherSphereIsRingedToo) {
     tools.explainer = false;
     EXPECT_EQ(app::explainedPartner(session, tools), -1);
 }
+
+// The window gives the stepping what the last frame's drawing left of 1/30 s: a scene whose
+// drawing alone takes longer gets a budget of 0, and must still step once a frame (it stood
+// still at 100k), in one piece and in half-step slices (while explaining a contact) alike.
+TEST(InteractionSession, AFrameWithNoStepBudgetLeftStillStepsOnce) {
+    for (const bool slices : {false, true}) {
+        scenes::Scene scene;
+        scene.box = scenes::Box{};
+        scene.spheres.push_back({{0.0, 0.0, 1.0}, glm::dvec3(0.0), 0.1, 1.0});
+        app::Simulation simulation(scene);
+        app::Session session(simulation);
+        if (slices) {
+            session.select(0);
+            session.setCatchEveryStep(true);
+        }
+        simulation.wallBudget = 0.0;  // s
+        const double h = simulation.params().timeStep;
+        EXPECT_EQ(session.advance(4 * h), 1) << (slices ? "in slices" : "in one piece");
+        EXPECT_EQ(session.advance(4 * h), 1) << (slices ? "in slices" : "in one piece");
+    }
+}

@@ -92,9 +92,11 @@ int Session::advance(double realSeconds) {
     const double piece = slice ? 0.5 * primary_.params().timeStep / scale : realSeconds;  // s
     int steps = 0, otherSteps = 0;
     const auto start = std::chrono::steady_clock::now();
+    // Until a step has run the budget does not stop it: a frame whose drawing alone spends
+    // the budget still steps once (else a heavy scene would stand still).
     auto withinBudget = [&] {
-        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() <=
-               primary_.wallBudget;
+        return steps == 0 ||
+               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() <= primary_.wallBudget;
     };
     for (double left = realSeconds; left > 0.0 && steps < Simulation::kMaxStepsPerFrame && withinBudget();) {
         const double seconds = std::min(piece, left);
