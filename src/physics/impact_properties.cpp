@@ -112,7 +112,14 @@ void endMeasuringImpacts(World& world, StepStats& stats) {
         }
     }
     p.momentumChange = glm::length(momentum);
-    for (const MeasuredContact& c : scratch.contacts) {
+    for (MeasuredContact c : scratch.contacts) {
+        // Along the normal the spheres have now: the position stages may have turned it (the
+        // solvers answered the contacts along it).
+        if (c.j >= 0) {
+            const glm::dvec3 delta = world.position[c.i] - world.position[std::size_t(c.j)];  // m
+            const double distance = glm::length(delta);
+            if (distance > 0.0) c.u = delta / distance;
+        }
         const double after = approach(world, c);  // m/s
         p.struck += c.approachBefore < -kConvergedApproachSpeed;
         if (stillTouching(world, c)) p.fastestApproachAfter = std::max(p.fastestApproachAfter, -after);
