@@ -198,7 +198,7 @@ std::vector<Parameter> makeTable() {
                "Summary with multiple particles. position: velocity + position response, "
                "walls last (the slide: good avoidance of the last constraints, jitter in "
                "stacked spheres; here a stack comes nearly to rest when \u03b5 > |g| h / "
-               "substeps and \u03bc < 1, 09-11, and a thin wall can still be tunnelled, 13). velocity: "
+               "substeps and \u03bc well below 1 (0.5 in 09-11), and a thin wall can still be tunnelled, 13). velocity: "
                "velocity response, cancel the velocity into a penetration, then move (the "
                "slide: smooth and stable, an existing collision persists; here piles sink "
                "into themselves and jitter, 10-11). response-only: slides 5-6, collision "

@@ -421,7 +421,7 @@ TEST(Alarms, AColumnWithoutStaticDampingIsLiftedByTheProjectionAndTheHintSaysSo)
     bool said = false;
     for (const app::AlarmLine& line : sim.alarms().lines(sim.world().time)) {
         if (line.kind != AlarmKind::EnergyCreated) continue;
-        said = contains(line.hint, "without static damping (μ near 1) the projection of a stack can lift it");
+        said = contains(line.hint, "with little static damping (μ near 1) the projection of a stack can lift it");
         EXPECT_FALSE(contains(line.hint, "report the scene")) << line.hint;
     }
     EXPECT_TRUE(said);
