@@ -67,7 +67,7 @@ void addCapture(CLI::App& cli, CaptureOptions& o) {
     cap->add_option("--compare", o.compare,
                     "Side by side: a second view with these overrides, name=value[,name=value] (e.g. method=velocity)");
     cap->add_option("--overlay", o.overlay,
-                    "Overlays, comma-separated: velocity, contacts, impulses, penetration, trails (or all)");
+                    "Overlays, comma-separated: velocity, contacts, impulses, penetration, trails, graph (or all)");
     cap->add_option("--gl", o.gl, "Headless GL: osmesa, egl or auto (OSMesa first, then EGL)")->capture_default_str();
     cap->add_option("--samples", o.samples, "Multisampling: samples per pixel, 0 to 16")->capture_default_str();
 }

@@ -9,12 +9,14 @@
 #include <sys/wait.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <glm/geometric.hpp>
 #include <string>
 #include <vector>
 
 #include "app/commands/progress_line.h"
 #include "app/run/scene_source.h"
+#include "scenes/presets.h"
 #include "physics/diagnostics.h"
 #include "render/palette.h"
 #include "test_capture_support.h"
@@ -148,6 +150,27 @@ TEST(CaptureRefusals, BrokenSceneOrSettingIsRefusedBeforeWriting) {
     setting.settings = {"beta=7"};
     EXPECT_THROW(app::runCapture(setting), UsageError);
     EXPECT_FALSE(exists(out));
+}
+
+// The README's example captures `--scene cradle` into `--out cradle/`: once that folder
+// exists (a second run, or made before the scene is read again), the name still means the
+// preset; a folder that names no preset is refused as no scene file.
+TEST(SceneSource, AFolderNamedAfterAPresetDoesNotHideIt) {
+    const std::string folder = capture_test::freshFolder("cradle");
+    std::filesystem::create_directories(folder);
+    const std::filesystem::path before = std::filesystem::current_path();
+    std::filesystem::current_path(std::filesystem::path(folder).parent_path());
+    const std::string cradle = app::resolveScenePath("cradle");
+    std::filesystem::create_directories("not_a_preset_here");
+    std::string refusal;
+    try {
+        app::resolveScenePath("not_a_preset_here");
+    } catch (const UsageError& e) {
+        refusal = e.what();
+    }
+    std::filesystem::current_path(before);
+    EXPECT_EQ(cradle, scenes::presetPath("08_newtons_cradle"));
+    EXPECT_NE(refusal.find("is a folder, not a scene file"), std::string::npos) << refusal;
 }
 
 class CaptureBackendRefusal : public ::testing::TestWithParam<HeadlessBackend> {};

@@ -17,11 +17,12 @@ void checkWritable(const std::string& flag, const std::string& path) {
 
 std::string resolveScenePath(const std::string& nameOrPath) {
     if (std::filesystem::is_regular_file(nameOrPath)) return nameOrPath;
-    if (std::filesystem::is_directory(nameOrPath)) {
-        throw UsageError("--scene " + nameOrPath + ": is a folder, not a scene file");
-    }
     std::string why;
     const std::string preset = scenes::matchPreset(nameOrPath, why);
+    // A folder is no scene: a preset of its name wins (`capture --scene cradle --out cradle/`).
+    if (std::filesystem::is_directory(nameOrPath) && (preset.empty() || !why.empty())) {
+        throw UsageError("--scene " + nameOrPath + ": is a folder, not a scene file");
+    }
     if (!why.empty()) throw UsageError("--scene " + nameOrPath + ": " + why);
     return preset;
 }
