@@ -56,8 +56,9 @@ void findTouching(World& world, ImpactScratch& scratch) {
 // moved its spheres apart (a contact that no longer touches may approach: it is no contact).
 bool stillTouching(const World& world, const MeasuredContact& c) {
     if (c.j >= 0) {
-        SphereContact contact;
-        return touching(world, SpherePair{c.i, std::uint32_t(c.j)}, contact);
+        const glm::dvec3 delta = world.position[c.i] - world.position[std::size_t(c.j)];  // m
+        const double reach = world.radius[c.i] + world.radius[std::size_t(c.j)];   // m
+        return glm::dot(delta, delta) <= reach * reach;
     }
     const Plane& plane = world.planes[std::size_t(-1 - c.j)];
     return touching(world.position[c.i], world.radius[c.i], faceFor(plane, world.position[c.i]));
@@ -112,19 +113,23 @@ void endMeasuringImpacts(World& world, StepStats& stats) {
         }
     }
     p.momentumChange = glm::length(momentum);
-    for (MeasuredContact c : scratch.contacts) {
+    for (const MeasuredContact& measured : scratch.contacts) {
+        p.struck += measured.approachBefore < -kConvergedApproachSpeed;
+        const bool struckCluster = scratch.clusterFlags[root(scratch.cluster, measured.i)] & kStruck;
+        const bool resting = measured.j >= 0 && struckCluster && std::abs(measured.approachBefore) <= kConvergedApproachSpeed;
+        const bool touchingNow = stillTouching(world, measured);
+        if (!touchingNow && !resting) continue;
         // Along the normal the spheres have now: the position stages may have turned it (the
         // solvers answered the contacts along it).
+        MeasuredContact c = measured;
         if (c.j >= 0) {
             const glm::dvec3 delta = world.position[c.i] - world.position[std::size_t(c.j)];  // m
             const double distance = glm::length(delta);
             if (distance > 0.0) c.u = delta / distance;
         }
         const double after = approach(world, c);  // m/s
-        p.struck += c.approachBefore < -kConvergedApproachSpeed;
-        if (stillTouching(world, c)) p.fastestApproachAfter = std::max(p.fastestApproachAfter, -after);
-        const bool struckCluster = scratch.clusterFlags[root(scratch.cluster, c.i)] & kStruck;
-        if (c.j < 0 || !struckCluster || std::abs(c.approachBefore) > kConvergedApproachSpeed) continue;
+        if (touchingNow) p.fastestApproachAfter = std::max(p.fastestApproachAfter, -after);
+        if (!resting) continue;
         ++p.restingPairs;
         p.brokeAway += after > kConvergedApproachSpeed;
     }

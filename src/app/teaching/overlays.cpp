@@ -199,6 +199,7 @@ void appendVelocityArrows(const physics::World& world, int selected, render::Fra
 void appendContacts(const physics::World& world, int selected, render::FrameSnapshot& snapshot) {
     // The last response of each (sphere, other) in the step: the passes repeat contacts.
     std::unordered_set<std::uint64_t> seen;
+    seen.reserve(std::min(world.contacts.size(), kMaxDrawnContacts));
     std::vector<const physics::ContactEvent*> latest;
     for (auto it = world.contacts.rbegin(); it != world.contacts.rend() && latest.size() < kMaxDrawnContacts; ++it) {
         const physics::ContactEvent& e = *it;
