@@ -302,6 +302,16 @@ std::uint64_t findPairsGrid(const World& world, double margin, Workspace& worksp
     return total;
 }
 
+// The cells around c (c's too), row by row along x: visit(first, last) with the linear
+// numbers of a row's first and last cell, which are consecutive.
+template <class Visit>
+void forRowsAround(const GridShape& grid, const glm::ivec3& c, const Visit& visit) {
+    const glm::ivec3 lo = glm::max(c - 1, glm::ivec3(0)), hi = glm::min(c + 1, grid.dims - 1);
+    for (int z = lo.z; z <= hi.z; ++z) {
+        for (int y = lo.y; y <= hi.y; ++y) visit(grid.linear({lo.x, y, z}), grid.linear({hi.x, y, z}));
+    }
+}
+
 std::uint64_t findMoverPairs(const World& world, double margin, Workspace& ws) {
     const GridShape& grid = ws.gridAtBuild;
     std::vector<SpherePair>& out = ws.moverPairs;
@@ -315,18 +325,13 @@ std::uint64_t findMoverPairs(const World& world, double margin, Workspace& ws) {
     for (std::size_t m = 0; m < ws.movers.size(); ++m) {
         const std::uint32_t i = ws.movers[m];
         if (!finite(world.position[i])) continue;  // NaN is never within reach
-        const glm::ivec3 c = grid.cellOf(world.position[i]);
-        const glm::ivec3 lo = glm::max(c - 1, glm::ivec3(0)), hi = glm::min(c + 1, grid.dims - 1);
-        for (int z = lo.z; z <= hi.z; ++z) {
-            for (int y = lo.y; y <= hi.y; ++y) {
-                // A row of up to three cells is one run of slots.
-                const std::uint32_t end = ws.cellStart[grid.linear({hi.x, y, z}) + 1];
-                for (std::uint32_t slot = ws.cellStart[grid.linear({lo.x, y, z})]; slot < end; ++slot) {
-                    const std::uint32_t j = ws.sphereByCell[slot];
-                    if (!ws.isMover[j]) test(i, j);
-                }
+        forRowsAround(grid, grid.cellOf(world.position[i]), [&](std::uint32_t first, std::uint32_t last) {
+            // A row of up to three cells is one run of slots.
+            for (std::uint32_t slot = ws.cellStart[first]; slot < ws.cellStart[last + 1]; ++slot) {
+                const std::uint32_t j = ws.sphereByCell[slot];
+                if (!ws.isMover[j]) test(i, j);
             }
-        }
+        });
     }
     // Movers with each other: sorted by the build grid's cell they are in now (then by
     // number), each tested against the movers of the cells around it, each pair once.
@@ -341,21 +346,14 @@ std::uint64_t findMoverPairs(const World& world, double margin, Workspace& ws) {
     };
     std::sort(byCell.begin(), byCell.end(), before);
     for (const MoverInCell& mover : byCell) {
-        const glm::ivec3 c = grid.cellAt(mover.cell);
-        const glm::ivec3 lo = glm::max(c - 1, glm::ivec3(0)), hi = glm::min(c + 1, grid.dims - 1);
-        for (int z = lo.z; z <= hi.z; ++z) {
-            for (int y = lo.y; y <= hi.y; ++y) {
-                const auto first = std::lower_bound(byCell.begin(), byCell.end(), MoverInCell{grid.linear({lo.x, y, z}), 0}, before);
-                const std::uint32_t last = grid.linear({hi.x, y, z});
-                for (auto other = first; other != byCell.end() && other->cell <= last; ++other) {
-                    if (other->sphere > mover.sphere) test(mover.sphere, other->sphere);
-                }
+        forRowsAround(grid, grid.cellAt(mover.cell), [&](std::uint32_t first, std::uint32_t last) {
+            const auto from = std::lower_bound(byCell.begin(), byCell.end(), MoverInCell{first, 0}, before);
+            for (auto other = from; other != byCell.end() && other->cell <= last; ++other) {
+                if (other->sphere > mover.sphere) test(mover.sphere, other->sphere);
             }
-        }
+        });
     }
-    std::sort(out.begin(), out.end(), [](const SpherePair& a, const SpherePair& b) {
-        return a.i != b.i ? a.i < b.i : a.j < b.j;
-    });
+    std::sort(out.begin(), out.end(), inIndexOrder);
     return tests;
 }
 

@@ -116,8 +116,7 @@ void keepPairsWithinReach(World& world, double margin, int threads, std::vector<
     stats.pairTests += findMoverPairs(world, margin, ws);
     const std::size_t kept = out.size();
     out.insert(out.end(), ws.moverPairs.begin(), ws.moverPairs.end());
-    std::inplace_merge(out.begin(), out.begin() + std::ptrdiff_t(kept), out.end(),
-                       [](const SpherePair& a, const SpherePair& b) { return a.i != b.i ? a.i < b.i : a.j < b.j; });
+    std::inplace_merge(out.begin(), out.begin() + std::ptrdiff_t(kept), out.end(), inIndexOrder);
 }
 
 void reorder(World& world, PairOrder order) {

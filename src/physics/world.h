@@ -66,6 +66,9 @@ struct SpherePair {
     std::uint32_t i, j;  // i < j
 };
 
+// Index order: by first sphere, then by second.
+inline bool inIndexOrder(const SpherePair& a, const SpherePair& b) { return a.i != b.i ? a.i < b.i : a.j < b.j; }
+
 // Narrow phase, slide 9: where a touching pair touches.
 struct SphereContact {
     glm::dvec3 u{0.0, 0.0, 1.0};  // (p1 - p2) / |p1 - p2|, from 2 to 1
@@ -243,7 +246,6 @@ struct Workspace {
     std::vector<SpherePair> colorSorted;        // scratch: the pairs placed colour by colour
     std::vector<std::uint32_t> colorNext;       // scratch: where each colour's next pair goes
     std::vector<double> slabSample;  // m: scratch of the share-out, coordinates that place its slabs
-    std::vector<double> taskMove;  // m^2: the largest squared displacement each task saw
     // The contacts of a step whose positions stay put while its passes run (velocity
     // based, response only): found once, used by every pass (findContacts).
     std::vector<std::uint8_t> pairTouches;     // per pair, in the order the passes visit them
