@@ -64,7 +64,9 @@ int projectedGaussSeidel(World& world, LcpContact* contacts, std::size_t count, 
 // generalized reflections' rounds (generalized_reflections.cpp); the cluster's record
 // (sweeps, rounds, residual, capped) filled in, each contact's lambda its impulse.
 void solveLcpCluster(World& world, LcpContact* contacts, ContactCluster& cluster);
-void reflectCluster(World& world, const Params& params, LcpContact* contacts, ContactCluster& cluster);
+// `converged` (m/s): the rounds go on while a contact approaches faster.
+void reflectCluster(World& world, const Params& params, LcpContact* contacts, ContactCluster& cluster,
+                    double converged = kConvergedApproachSpeed);
 // Adds one cluster's record to the stats (a cluster solved alone: the continuous
 // method's simultaneous impacts).
 void countCluster(const ContactCluster& cluster, StepStats& stats);
@@ -72,6 +74,16 @@ void countCluster(const ContactCluster& cluster, StepStats& stats);
 // After the normal solve, per contact that pushed (lambda > 0): alpha on a bounce's, mu on
 // a static contact's relative tangential velocity (equal and opposite impulses).
 void dampTangential(World& world, const Params& params, const std::vector<LcpContact>& contacts);
+
+// Positivity after alpha and mu: a tangential impulse at one contact of a sphere that has
+// several tilts its velocity into another (the 1k pile under the position method and
+// generalized reflections ended steps with a contact approaching at 0.85 m/s). Every
+// touching contact findContacts found, separating ones too, is answered once more with
+// normal impulses only: rounds of generalized reflections with beta = 0 (every target 0)
+// per cluster, until none approaches. A round only removes approach: it never adds energy
+// (dE = sum lambda c / 2, c < 0). The rounds are counted in stats.positivityRounds (of
+// the cluster that took most); the solve's own contacts and lambdas are left as they are.
+void restorePositivity(World& world, const Params& params, StepStats& stats);
 
 // The spheres' contact states and the stats' counts, from the contacts that pushed or
 // were static; with world.recordContacts each is also logged as a ContactEvent whose

@@ -55,7 +55,7 @@ struct RoundScratch {
 // rounds (a pile of 1000 took 840 rounds a step without this). Its target 0 and c <= 0
 // keep the energy rule: it adds lambda (c + c+) / 2 <= 0.
 double findApproaching(const World& world, const Params& params, const LcpContact* contacts, std::size_t count,
-                       RoundScratch& scratch) {
+                       double converged, RoundScratch& scratch) {
     scratch.active.clear();
     scratch.where.clear();
     scratch.startOfI.clear();
@@ -64,14 +64,14 @@ double findApproaching(const World& world, const Params& params, const LcpContac
     for (std::size_t k = 0; k < count; ++k) {
         const double c = relativeNormal(world, contacts[k]);  // m/s
         const bool resting = contacts[k].isStatic && contacts[k].lambda > 0.0 && c <= 0.0;
-        if (c >= -kConvergedApproachSpeed && !resting) continue;
+        if (c >= -converged && !resting) continue;
         LcpContact copy = contacts[k];
         copy.isStatic = resting || -c <= params.epsilon;
         scratch.active.push_back(copy);
         scratch.where.push_back(std::uint32_t(k));
         scratch.startOfI.push_back(world.velocity[copy.i]);
         scratch.startOfJ.push_back(copy.j >= 0 ? world.velocity[std::size_t(copy.j)] : glm::dvec3(0.0));
-        if (c < -kConvergedApproachSpeed) fastest = std::max(fastest, -c);
+        if (c < -converged) fastest = std::max(fastest, -c);
     }
     return fastest;
 }
@@ -98,15 +98,15 @@ int solveActive(World& world, RoundScratch& scratch, bool elastic, double tolera
 
 }  // namespace
 
-void reflectCluster(World& world, const Params& params, LcpContact* contacts, ContactCluster& cluster) {
+void reflectCluster(World& world, const Params& params, LcpContact* contacts, ContactCluster& cluster, double converged) {
     thread_local RoundScratch scratch;
     for (std::size_t k = 0; k < cluster.count; ++k) contacts[k].lambda = 0.0;
     std::uint64_t visitsLeft = std::max(kLeastVisits, kVisitsPerContact * cluster.count);
-    double fastest = findApproaching(world, params, contacts, cluster.count, scratch);
+    double fastest = findApproaching(world, params, contacts, cluster.count, converged, scratch);
     cluster.rounds = cluster.sweeps = 0;
     cluster.residual = 0.0;
     for (; fastest > 0.0 && cluster.rounds < kMostRounds && visitsLeft > 0;
-         fastest = findApproaching(world, params, contacts, cluster.count, scratch)) {
+         fastest = findApproaching(world, params, contacts, cluster.count, converged, scratch)) {
         ++cluster.rounds;
         const std::size_t size = scratch.active.size();
         // An impact's solve to 1e-14 of its fastest approach: the energy is then kept to
@@ -138,6 +138,38 @@ void reflectCluster(World& world, const Params& params, LcpContact* contacts, Co
         }
     }
     cluster.capped = fastest > 0.0;
+}
+
+// restorePositivity's rounds go on while a contact approaches faster than this (m/s): well
+// under kConvergedApproachSpeed, so that the velocity method's C, which follows them with
+// its own cancelling contact by contact, does not push one past it (22_shock_pyramid
+// under lcp: 1.8e-9 m/s with kConvergedApproachSpeed here).
+constexpr double kPositiveApproachSpeed = 1e-11;
+
+void restorePositivity(World& world, const Params& params, StepStats& stats) {
+    Workspace& ws = world.workspace;
+    std::vector<LcpContact>& contacts = ws.positivityContacts;
+    gatherContacts(world, params, true, contacts);  // a separating one may approach by now
+    sortIntoClusters(world, contacts, ws.positivityClusters);
+    Params inelastic = params;
+    inelastic.beta = 0.0;
+    std::vector<ContactCluster>& clusters = ws.positivityClusters;
+    runTasks(clusterThreads(world, params, clusters.size()), int(clusters.size()), [&](int k) {
+        ContactCluster& cluster = clusters[std::size_t(k)];
+        reflectCluster(world, inelastic, contacts.data() + cluster.first, cluster, kPositiveApproachSpeed);
+    });
+    std::uint32_t rounds = 0;  // of the cluster that took most
+    for (const ContactCluster& cluster : clusters) {
+        rounds = std::max(rounds, cluster.rounds);
+        stats.reflectionCapHits += cluster.capped;
+    }
+    stats.positivityRounds += rounds;
+}
+
+void endWithPositivity(World& world, const Params& params, StepStats& stats, bool moved) {
+    if (params.solver != Solver::Lcp && params.solver != Solver::GeneralizedReflections) return;
+    if (moved) findContacts(world, params);
+    restorePositivity(world, params, stats);
 }
 
 void reflectGeneralized(World& world, const Params& params, StepStats& stats, int pass) {

@@ -92,6 +92,7 @@ StepStats stepWithPositionResponse(World& world, const Params& params, double h,
             respondWithSolver(world, params, stats, params.passes);
         }
         propagateShock(world, params, stats, true);
+        endWithPositivity(world, params, stats, params.shock == ShockPropagation::On);
         endMeasuringImpacts(world, stats);
     }
     return stats;

@@ -447,6 +447,15 @@ inline void respondWithSolver(World& world, const Params& params, StepStats& sta
     }
 }
 
+// The global solvers' (lcp, generalized reflections) positivity at the step's end, after
+// the last velocity solve and the shock sweep: alpha and mu, applied after each normal
+// solve, and the sweep's answers against frozen spheres leave contacts approaching (the
+// 1k pile under the position method: 0.85 m/s; 22_shock_pyramid under lcp: 1.1e-3 m/s).
+// complementarity.h's restorePositivity answers them, normal impulses only; `moved`: the
+// positions moved since findContacts last ran (the sweep's projection). Other solvers:
+// nothing.
+void endWithPositivity(World& world, const Params& params, StepStats& stats, bool moved);
+
 // Whether a touching contact of the current positions still approaches faster than
 // kConvergedApproachSpeed (finds the contacts again, as findContacts).
 bool contactsStillApproach(World& world, const Params& params);

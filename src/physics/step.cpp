@@ -274,6 +274,7 @@ StepStats& StepStats::operator+=(const StepStats& o) {
     lcpSweeps += o.lcpSweeps;
     lcpResidual = std::max(lcpResidual, o.lcpResidual);
     reflectionRounds += o.reflectionRounds;
+    positivityRounds += o.positivityRounds;
     reflectionCapHits += o.reflectionCapHits;
     shockLevels = std::max(shockLevels, o.shockLevels);
     shockRounds += o.shockRounds;

@@ -34,6 +34,8 @@ struct StepStats {
     // most, summed over the passes, and the clusters that stopped at a cap with a contact
     // still approaching.
     std::uint64_t reflectionRounds = 0;
+    // Rounds of restorePositivity (complementarity.h) after alpha and mu, summed over passes.
+    std::uint64_t positivityRounds = 0;
     std::uint64_t reflectionCapHits = 0;
     // Shock propagation: the most levels of the contact graph a solver step swept (max).
     std::uint64_t shockLevels = 0;

@@ -46,6 +46,7 @@ StepStats stepVelocityBased(World& world, const Params& params, double h) {
         beginMeasuringImpacts(world);
         runPasses(world, params, stats, [&](int pass) { respondWithSolver(world, params, stats, pass); });  // B
         propagateShock(world, params, stats, false);
+        endWithPositivity(world, params, stats, false);
         cancelPenetratingVelocity(world, params);  // C
         endMeasuringImpacts(world, stats);
     }

@@ -263,6 +263,9 @@ struct Workspace {
     std::vector<std::uint32_t> clusterParent;
     std::vector<std::uint32_t> clusterOfSphere;
     std::vector<LcpContact> clusterSorted;
+    // restorePositivity's own contacts and clusters.
+    std::vector<LcpContact> positivityContacts;
+    std::vector<ContactCluster> positivityClusters;
     // Params::threads = 0: the count in use, measured against the other (step()).
     AutomaticThreads automaticThreads;
     ContinuousWorkspace continuous;

@@ -224,7 +224,10 @@ std::vector<Parameter> makeTable() {
                "\u03b1 and \u03bc then act on each contact's tangential velocity (one thread). "
                "generalized-reflections: Smith et al. 2012, the contacts that approach solved together "
                "elastically (blended with the inelastic answer for \u03b2 < 1), again until none "
-               "approaches: touching spheres may break away, as a cradle's last ball does (one thread).",
+               "approaches: touching spheres may break away, as a cradle's last ball does (one thread). "
+               "Both end each step with no touching contact approaching (positivity): the contacts "
+               "\u03b1 and \u03bc or the shock sweep turned back into approach are answered once more, "
+               "normal impulses only, never adding energy.",
                param<&Params::solver>()),
         onlyWith(sweepsLevels, choice("shock", "shock propagation", {"off", "on"},
                static_cast<double>(kDefaults.shock),
