@@ -68,6 +68,24 @@ double kineticOf(const World& world, std::size_t i, const glm::dvec3& v) {
     return 0.5 * world.mass[i] * glm::dot(v, v);  // J
 }
 
+// A sphere the passes brought into contact joins that cluster: a falling sphere projected
+// onto a struck pile gives it energy (300 spheres landing under lcp: the struck clusters'
+// kinetic energy rose 0.02 % in a step while the whole world's fell). Each pair touching
+// now (within the margin) whose two spheres' velocities the step changed unites their
+// clusters, flags merged.
+void joinWhatTheStepJoined(World& world, ImpactScratch& scratch) {
+    const auto changed = [&](std::uint32_t i) { return world.velocity[i] != scratch.velocityBefore[i]; };
+    for (const SpherePair& pair : world.workspace.visitOrder) {
+        std::uint32_t a = root(scratch.cluster, pair.i), b = root(scratch.cluster, pair.j);
+        if (a == b || !changed(pair.i) || !changed(pair.j)) continue;
+        const glm::dvec3 delta = world.position[pair.i] - world.position[pair.j];  // m
+        const double reach = world.radius[pair.i] + world.radius[pair.j] + world.workspace.margin;  // m
+        if (glm::dot(delta, delta) > reach * reach) continue;  // (a projection leaves them a hair apart)
+        scratch.cluster[a] = b;
+        scratch.clusterFlags[b] |= scratch.clusterFlags[a];
+    }
+}
+
 }  // namespace
 
 void beginMeasuringImpacts(World& world) {
@@ -97,6 +115,7 @@ void endMeasuringImpacts(World& world, StepStats& stats) {
     for (std::uint32_t i = 0; i < world.size(); ++i) {
         if (nearAPlane(world, i, world.workspace.margin)) scratch.clusterFlags[root(scratch.cluster, i)] |= kTouchesPlane;
     }
+    joinWhatTheStepJoined(world, scratch);
     ImpactProperties p;
     p.contacts = scratch.contacts.size();
     glm::dvec3 momentum(0.0);  // kg m/s

@@ -349,3 +349,31 @@ TEST(MultipleCollisions, TheGlobalSolversLeaveNothingApproachingUnderTheVelocity
 TEST(MultipleCollisions, TheGlobalSolversLeaveNothingApproachingUnderTheReflectionMethod) {
     expectPositivityUnderTheGlobalSolvers("method=reflection");
 }
+
+// The energy and momentum properties are measured over the clusters a step struck,
+// together with the spheres the step brought into contact with them: a falling sphere
+// projected onto the landing pile gives it energy and momentum. Counted without it, 300
+// spheres landing under lcp showed the struck clusters' kinetic energy rising 0.018 % in
+// a step (energy ✗) while the whole world's fell.
+TEST(MultipleCollisions, AFallingSphereThatJoinsAStruckClusterIsCountedWithIt) {
+    for (const char* solver : {"solver=lcp", "solver=generalized-reflections"}) {
+        SCOPED_TRACE(solver);
+        scenes::Scene scene = scenes::loadScene(scenes::presetPath("11_pile"));
+        ASSERT_EQ(scenes::applySetting(scene, solver), "");
+        ASSERT_EQ(scenes::applySetting(scene, "count=300"), "");
+        physics::World world = scenes::buildWorld(scene);
+        world.measureImpacts = true;
+        double most = 0.0;       // kinetic energy after / before, of the struck clusters
+        double momentum = 0.0;   // their momentum change / sum m |v|, of those free of walls
+        std::uint64_t struck = 0;
+        for (int k = 0; k < 120; ++k) {
+            const physics::ImpactProperties p = physics::step(world, scene.params).impacts;
+            if (p.kineticBefore > 0.0) most = std::max(most, p.kineticAfter / p.kineticBefore);
+            if (p.momentumScale > 0.0) momentum = std::max(momentum, p.momentumChange / p.momentumScale);
+            struck += p.struck;
+        }
+        EXPECT_GT(struck, 1000u);
+        EXPECT_LE(most, 1.0 + 1e-9);
+        EXPECT_LT(momentum, 1e-12);
+    }
+}
