@@ -169,6 +169,9 @@ TEST(CommandLine, BadInputExitsWithCodeTwoAndOneLineNamingIt) {
         {"simulate --scene pile --steps 1 --set alpha=2", "alpha"},
         {"simulate --scene pile --steps 1 --out /nonexistent/x.csv", "/nonexistent/x.csv"},
         {"--scene pile --frames 1 --screenshot /nonexistent/x.png", "--screenshot"},
+        {"--scene pile --frames 1 --screenshot x.jpg", "must end in .png"},
+        {"simulate --scene pile --steps 1 --state x.json", "must end in .csv"},
+        {"simulate --scene pile --steps 1 --save x.csv", "must end in .json"},
     };
     for (const auto& [arguments, named] : cases) {
         const fs::path log = fs::path(SPHERES_TEST_OUTPUT_DIR) / "bad_input.txt";

@@ -32,8 +32,8 @@ void writeState(const std::string& path, const physics::World& world) {
 int runSimulate(const SimulateOptions& options) {
     const scenes::Scene scene = loadSceneWithSettings(options.scene, options.settings);
     if (options.every > 0 && options.out.empty()) throw UsageError("--every needs --out FILE");
-    checkWritable("--state", options.state);
-    checkWritable("--save", options.save);
+    checkWritable("--state", options.state, ".csv");
+    checkWritable("--save", options.save, ".json");
     std::optional<DiagnosticsLog> log;
     if (!options.out.empty()) log.emplace(options.out);
     const std::int64_t every = options.every > 0 ? options.every : options.steps;

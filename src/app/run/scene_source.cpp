@@ -9,8 +9,15 @@
 
 namespace app {
 
-void checkWritable(const std::string& flag, const std::string& path) {
+bool endsWith(const std::string& s, const std::string& suffix) {
+    return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+void checkWritable(const std::string& flag, const std::string& path, const std::string& extension) {
     if (path.empty()) return;
+    if (!extension.empty() && !endsWith(path, extension)) {
+        throw UsageError(flag + " " + path + ": the file must end in " + extension);
+    }
     std::ofstream probe(path, std::ios::app);
     if (!probe) throw UsageError(flag + " " + path + ": cannot open the file for writing");
 }

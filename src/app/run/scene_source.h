@@ -13,8 +13,12 @@ struct UsageError : std::runtime_error {
 };
 
 // Throws UsageError "FLAG PATH: cannot open the file for writing" unless `path` is
-// empty or can be written: output files are checked before any work starts.
-void checkWritable(const std::string& flag, const std::string& path);
+// empty or can be written, and "FLAG PATH: the file must end in EXTENSION" when it
+// ends otherwise (a CSV written into x.json): output files are checked before any work.
+void checkWritable(const std::string& flag, const std::string& path, const std::string& extension = "");
+
+// Whether `s` ends in `suffix`.
+bool endsWith(const std::string& s, const std::string& suffix);
 
 // `nameOrPath` is a file, or a preset name with or without its number and .json
 // ("pile", "11_pile"). Then every "name=value" of `settings` is applied, in order.

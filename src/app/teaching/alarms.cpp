@@ -90,7 +90,8 @@ std::string energyHint(const physics::Params& params) {
     if (params.solver == physics::Solver::Simultaneous) {
         return "the simultaneous solver answers each contact as if it were alone and sums the answers: a sphere "
                "hit from several sides at once can leave faster than it came (slide 14: the global approach "
-               "solves the contacts together); switch solver to sequential";
+               "solves the contacts together); switch solver to lcp or generalized-reflections (sequential keeps "
+               "the energy but breaks the symmetry)";
     }
     if (params.method == physics::Method::VelocityBased) {
         return "velocity-based bounce reflects this step's gravity kick: the contact is found after "

@@ -486,7 +486,7 @@ int WindowApp::run() {
 
 int runWindowApp(const WindowAppOptions& options) {
     scenes::Scene scene = loadSceneWithSettings(options.scene, options.settings);
-    checkWritable("--screenshot", options.screenshot);
+    checkWritable("--screenshot", options.screenshot, ".png");
     if (!options.compare.empty()) {
         if (const std::string error = checkCompare(scene, options.compare); !error.empty()) {
             throw UsageError("--compare " + error);
