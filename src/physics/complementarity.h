@@ -81,8 +81,8 @@ void dampTangential(World& world, const Params& params, const std::vector<LcpCon
 // touching contact findContacts found, separating ones too, is answered once more with
 // normal impulses only: rounds of generalized reflections with beta = 0 (every target 0)
 // per cluster, until none approaches. A round only removes approach: it never adds energy
-// (dE = sum lambda c / 2, c < 0). The rounds are counted in stats.positivityRounds (of
-// the cluster that took most); the solve's own contacts and lambdas are left as they are.
+// (dE = sum lambda c / 2, c < 0). A cluster stopped at the work cap is counted in
+// stats.reflectionCapHits; the solve's own contacts and lambdas are left as they are.
 void restorePositivity(World& world, const Params& params, StepStats& stats);
 
 // The spheres' contact states and the stats' counts, from the contacts that pushed or

@@ -158,12 +158,7 @@ void restorePositivity(World& world, const Params& params, StepStats& stats) {
         ContactCluster& cluster = clusters[std::size_t(k)];
         reflectCluster(world, inelastic, contacts.data() + cluster.first, cluster, kPositiveApproachSpeed);
     });
-    std::uint32_t rounds = 0;  // of the cluster that took most
-    for (const ContactCluster& cluster : clusters) {
-        rounds = std::max(rounds, cluster.rounds);
-        stats.reflectionCapHits += cluster.capped;
-    }
-    stats.positivityRounds += rounds;
+    for (const ContactCluster& cluster : clusters) stats.reflectionCapHits += cluster.capped;
 }
 
 void endWithPositivity(World& world, const Params& params, StepStats& stats, bool moved) {

@@ -274,7 +274,6 @@ StepStats& StepStats::operator+=(const StepStats& o) {
     lcpSweeps += o.lcpSweeps;
     lcpResidual = std::max(lcpResidual, o.lcpResidual);
     reflectionRounds += o.reflectionRounds;
-    positivityRounds += o.positivityRounds;
     reflectionCapHits += o.reflectionCapHits;
     shockLevels = std::max(shockLevels, o.shockLevels);
     shockRounds += o.shockRounds;

@@ -32,10 +32,8 @@ struct StepStats {
     double lcpResidual = 0.0;
     // Generalized reflections: rounds of { active set, solve } of the cluster that took
     // most, summed over the passes, and the clusters that stopped at a cap with a contact
-    // still approaching.
+    // still approaching (theirs, and those of lcp's and their last, positivity solve).
     std::uint64_t reflectionRounds = 0;
-    // Rounds of restorePositivity (complementarity.h) after alpha and mu, summed over passes.
-    std::uint64_t positivityRounds = 0;
     std::uint64_t reflectionCapHits = 0;
     // Shock propagation: the most levels of the contact graph a solver step swept (max).
     std::uint64_t shockLevels = 0;
