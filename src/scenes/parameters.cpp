@@ -265,7 +265,7 @@ std::vector<Parameter> makeTable() {
         choice("response", "sphere-sphere response", {"lecture", "momentum"},
                static_cast<double>(kDefaults.response),
                "lecture: slide 12, v1 \u2190 \u03b1 v1// + \u03b2 (v1\u22a5 + j/m1 u); with "
-               "\u03b2 < 1 it does not conserve momentum. momentum: equal and opposite impulses, "
+               "it conserves momentum only when \u03b1 = \u03b2 = 1 and, at static contacts, \u03bc = 1. momentum: equal and opposite impulses, "
                "(1 + \u03b2) on the normal and \u03b1 on the tangential speed: momentum is exact.",
                param<&Params::response>()),
         choice("split", "position correction split", {"half", "mass"},
@@ -314,7 +314,8 @@ std::vector<Parameter> makeTable() {
                         "restart.",
                         {countOf, setCount}))),
         onlyWith(hasGenerator, restart(real("radius", "r  sphere radius", "m", 0.005, 0.5, Generator{}.radiusMax,
-                     "Radius of every generated sphere (all generators). Applies on restart.",
+                     "The largest radius of the generated spheres (all generators); setting it gives every "
+                     "generated sphere this one radius. Applies on restart.",
                      {radiusOf, setRadius}))),
         restart(integer("seed", "seed", 0, kMaxSeed, 1,
                         "Seed of our own random generator: the generated spheres' "

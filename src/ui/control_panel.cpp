@@ -157,7 +157,8 @@ void measuredRestitution(const Readouts& r) {
     }
     tooltip("Measured beta^2: the apex height after a floor bounce over the apex height before it, newest first, "
             "read from the modified energy of the motion along the normal (exact in free flight). Slide 4: it "
-            "should be beta^2. Position based loses up to h s / H of it; velocity based gains about 2 g h / s. "
+            "should be beta^2. Position based loses up to tau s / H of it; velocity based gains about 2 g tau / s "
+            "(tau = h / substeps, the solver step; s the impact speed, H the fall above the contact). "
             "Measured for scenes of up to 10 spheres, or the selected sphere.");
 }
 
@@ -170,7 +171,7 @@ void runSection(double& timeScale, const Readouts& r, PanelActions& actions) {
     ImGui::SliderScalar("time scale", ImGuiDataType_Double, &timeScale,
                         &kTimeScaleRange[0], &kTimeScaleRange[1], "%.3g x", ImGuiSliderFlags_Logarithmic);
     tooltip("Simulated seconds per real second: below 1 is slow motion. The step h does not change.");
-    ImGui::Text("t = %.3f s   %llu steps   %zu spheres", r.time, static_cast<unsigned long long>(r.steps), r.sphereCount);
+    ImGui::Text("t = %.3f s   %llu solver steps   %zu spheres", r.time, static_cast<unsigned long long>(r.steps), r.sphereCount);
     if (r.behindRealTime) ImGui::TextColored({1.0f, 0.55f, 0.2f, 1.0f}, "behind real time: lower the time scale or N");
 }
 
@@ -327,11 +328,13 @@ void readoutsBody(const Readouts& r, const PanelState& state, PanelActions& acti
     ImGui::Text("potential %.5g J", d.potential);
     ImGui::Text("total %.6g J", d.total);
     ImGui::Text("E~ %.6g J", d.modified);
-    tooltip("E~ = sum m (-g.p + |v + h g/2|^2 / 2): the energy the time integration keeps exactly in free flight. "
+    tooltip("E~ = sum m (-g.p + |v + tau g/2|^2 / 2), tau = h / substeps the solver step: the energy the time "
+            "integration keeps exactly in free flight. "
             "Use it for bounce heights: the naive total wobbles by O(g v h).");
     ImGui::Text("p (%.2g, %.2g, %.2g) kg m/s", d.momentum.x, d.momentum.y, d.momentum.z);
     tooltip("Total momentum, sum m v. Gravity changes it; the walls too. Between spheres alone it is kept by the "
-            "momentum-conserving response for every alpha, beta, and by the lecture's only when beta = 1.");
+            "momentum-conserving response for every alpha, beta, mu, and by the lecture's only when alpha = beta = 1 "
+            "and no static contact damps it (slide 13's v <- mu v scales each sphere's own velocity).");
     ImGui::Text("deepest penetration %.2f %% of r", 100.0 * d.maxPenetration);
     ImGui::Text("state hash %016llx", static_cast<unsigned long long>(d.hash));
     tooltip("Same scene, same seed, same parameters: same hash. Compare runs with it.");

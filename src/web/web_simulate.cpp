@@ -1,6 +1,7 @@
 // The page's runs without a view, called from index.html (Module.ccall): the same code
 // as `spheres simulate` (the preset named as on the command line, the settings as --set
-// takes them, then `steps` solver steps with the scene's emitters), and the presets.
+// takes them, then `steps` time steps h, each of `substeps` solver steps, with the scene's
+// emitters), and the presets.
 // Each returns JSON text (valid until the next call).
 #include <cstdint>
 #include <cstdio>

@@ -97,7 +97,7 @@ void drawTimelineBar(const glm::vec4& scene, const TimelineInfo& timeline, bool 
                  kFixed | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
 
     char info[96];
-    std::snprintf(info, sizeof info, "t %.3f s  step %llu  (%.1f s kept)", timeline.cursorTime,
+    std::snprintf(info, sizeof info, "t %.3f s  solver step %llu  (%.1f s kept)", timeline.cursorTime,
                   static_cast<unsigned long long>(timeline.cursorSteps), timeline.keptSeconds);
     ImGui::AlignTextToFramePadding();
     ImGui::TextUnformatted("Timeline");
@@ -261,12 +261,15 @@ void drawExplainer(const Placement& placement, const ExplainerInput& input, Tool
         ImGui::TextColored(kRingNoteColor, "ringed: #%d yellow, #%d magenta", input.selected, partner);
     }
     const double age = input.now - input.eventTime;  // s
+    // The log holds a whole time step h: its `substeps` solver steps end at eventSteps.
+    const unsigned long long last = input.eventSteps;
+    const unsigned long long first = last + 1 - std::min<unsigned long long>(last, std::max(1, input.params->substeps));
     if (age > 0.0) {
-        ImGui::TextDisabled("in the step to t = %.4f s (step %llu), %.3g s ago", input.eventTime,
-                            static_cast<unsigned long long>(input.eventSteps), age);
+        ImGui::TextDisabled("in the time step to t = %.4f s (solver steps %llu-%llu), %.3g s ago", input.eventTime,
+                            first, last, age);
     } else {
-        ImGui::TextDisabled("in the last step, to t = %.4f s (step %llu)", input.eventTime,
-                            static_cast<unsigned long long>(input.eventSteps));
+        ImGui::TextDisabled("in the last time step, to t = %.4f s (solver steps %llu-%llu)", input.eventTime, first,
+                            last);
     }
     ImGui::Separator();
     const ContactExplanation explanation = explainContact(event, *input.params);
