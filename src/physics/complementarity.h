@@ -79,10 +79,11 @@ void dampTangential(World& world, const Params& params, const std::vector<LcpCon
 // several tilts its velocity into another (the 1k pile under the position method and
 // generalized reflections ended steps with a contact approaching at 0.85 m/s). Every
 // touching contact findContacts found, separating ones too, is answered once more with
-// normal impulses only: rounds of generalized reflections with beta = 0 (every target 0)
-// per cluster, until none approaches. A round only removes approach: it never adds energy
-// (dE = sum lambda c / 2, c < 0). A cluster stopped at the work cap is counted in
-// stats.reflectionCapHits; the solve's own contacts and lambdas are left as they are.
+// normal impulses only, per cluster: one inelastic complementarity problem (every target
+// 0) by projected Gauss-Seidel, then, where that stops short, rounds of generalized
+// reflections at beta = 0 until none approaches (generalized_reflections.cpp). Neither ever
+// adds energy. A cluster stopped at the work cap is counted in stats.reflectionCapHits;
+// the solve's own contacts and lambdas are left as they are.
 void restorePositivity(World& world, const Params& params, StepStats& stats);
 
 // The spheres' contact states and the stats' counts, from the contacts that pushed or

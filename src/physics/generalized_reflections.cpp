@@ -146,6 +146,23 @@ void reflectCluster(World& world, const Params& params, LcpContact* contacts, Co
 // under lcp: 1.8e-9 m/s with kConvergedApproachSpeed here).
 constexpr double kPositiveApproachSpeed = 1e-11;
 
+// One cluster's positivity: first one inelastic complementarity problem over all its
+// touching contacts, separating ones too (every target 0), by projected Gauss-Seidel: with
+// every target 0 its answer never adds energy (lambda (c + A lambda) = 0 makes the change
+// -lambda A lambda / 2 <= 0), and on a pile it is cheap (the 1k pile's lcp: 9.0 -> 10.7 ms a
+// solver step, against 15.3 with the rounds alone). Where it stops at its sweeps short of
+// the tolerance (a column of 20 is a slow chain for Gauss-Seidel), rounds of generalized
+// reflections at beta = 0 take the contacts still approaching until none does.
+void restoreClusterPositivity(World& world, const Params& inelastic, LcpContact* contacts, ContactCluster& cluster) {
+    for (std::uint32_t k = 0; k < cluster.count; ++k) contacts[k].target = contacts[k].lambda = 0.0;
+    projectedGaussSeidel(world, contacts, cluster.count, kPositiveApproachSpeed, kMostSweeps, cluster.residual);
+    if (cluster.residual <= kPositiveApproachSpeed) {
+        cluster.capped = false;
+        return;
+    }
+    reflectCluster(world, inelastic, contacts, cluster, kPositiveApproachSpeed);
+}
+
 void restorePositivity(World& world, const Params& params, StepStats& stats) {
     Workspace& ws = world.workspace;
     std::vector<LcpContact>& contacts = ws.positivityContacts;
@@ -156,7 +173,7 @@ void restorePositivity(World& world, const Params& params, StepStats& stats) {
     std::vector<ContactCluster>& clusters = ws.positivityClusters;
     runTasks(clusterThreads(world, params, clusters.size()), int(clusters.size()), [&](int k) {
         ContactCluster& cluster = clusters[std::size_t(k)];
-        reflectCluster(world, inelastic, contacts.data() + cluster.first, cluster, kPositiveApproachSpeed);
+        restoreClusterPositivity(world, inelastic, contacts.data() + cluster.first, cluster);
     });
     for (const ContactCluster& cluster : clusters) stats.reflectionCapHits += cluster.capped;
 }
