@@ -24,6 +24,7 @@ namespace {
 
 constexpr std::uint8_t kTouchesPlane = 1;
 constexpr std::uint8_t kStruck = 2;
+constexpr std::uint8_t kBounced = 4;  // a contact approached faster than epsilon: an impact
 
 std::uint32_t root(std::vector<std::uint32_t>& cluster, std::uint32_t i) {
     while (cluster[i] != i) i = cluster[i] = cluster[cluster[i]];
@@ -88,7 +89,7 @@ void joinWhatTheStepJoined(World& world, ImpactScratch& scratch) {
 
 }  // namespace
 
-void beginMeasuringImpacts(World& world) {
+void beginMeasuringImpacts(World& world, const Params& params) {
     if (!world.measureImpacts) return;
     ImpactScratch& scratch = world.workspace.impacts;
     scratch.velocityBefore = world.velocity;
@@ -104,6 +105,7 @@ void beginMeasuringImpacts(World& world) {
         std::uint8_t& flags = scratch.clusterFlags[root(scratch.cluster, c.i)];
         if (c.j < 0) flags |= kTouchesPlane;
         if (c.approachBefore < -kConvergedApproachSpeed) flags |= kStruck;
+        if (c.approachBefore < -std::max(params.epsilon, kConvergedApproachSpeed)) flags |= kBounced;
     }
 }
 
@@ -134,7 +136,8 @@ void endMeasuringImpacts(World& world, StepStats& stats) {
     p.momentumChange = glm::length(momentum);
     for (const MeasuredContact& measured : scratch.contacts) {
         p.struck += measured.approachBefore < -kConvergedApproachSpeed;
-        const bool struckCluster = scratch.clusterFlags[root(scratch.cluster, measured.i)] & kStruck;
+        // Break-away is tested where an impact struck: a stack at rest has nothing that should part.
+        const bool struckCluster = scratch.clusterFlags[root(scratch.cluster, measured.i)] & kBounced;
         const bool resting = measured.j >= 0 && struckCluster && std::abs(measured.approachBefore) <= kConvergedApproachSpeed;
         const bool touchingNow = stillTouching(world, measured);
         if (!touchingNow && !resting) continue;

@@ -22,8 +22,9 @@ struct ImpactProperties {
     // J: kinetic energy of the spheres of struck clusters, before and after, summed.
     double kineticBefore = 0.0;
     double kineticAfter = 0.0;
-    // Touching sphere pairs of struck clusters that did not approach (|c| within
-    // kConvergedApproachSpeed), and how many of them separate afterwards (break-away).
+    // Touching sphere pairs that did not approach (|c| within kConvergedApproachSpeed), in
+    // clusters an impact struck (a contact approaching faster than epsilon: a stack at rest
+    // has nothing that should part), and how many of them separate afterwards (break-away).
     std::uint64_t restingPairs = 0;
     std::uint64_t brokeAway = 0;
     // m/s: the fastest approach left between touching spheres or a sphere and a wall

@@ -73,7 +73,7 @@ StepStats stepWithPositionResponse(World& world, const Params& params, double h,
     {
         const StageTimer timer(stats.passesSeconds);
         findWallClearances(world, params);
-        beginMeasuringImpacts(world);
+        beginMeasuringImpacts(world, params);
         const bool together = solvesTogether(params.solver);
         runPasses(world, params, stats, [&](int pass) {
             if (together) {

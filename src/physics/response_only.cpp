@@ -17,7 +17,7 @@ StepStats stepResponseOnly(World& world, const Params& params, double h) {
     {
         const StageTimer timer(stats.passesSeconds);
         findContacts(world, params);  // positions stay put during B
-        beginMeasuringImpacts(world);
+        beginMeasuringImpacts(world, params);
         runPasses(world, params, stats, [&](int pass) { respondWithSolver(world, params, stats, pass); });  // B
         endMeasuringImpacts(world, stats);
     }

@@ -466,7 +466,7 @@ bool contactsStillApproach(World& world, const Params& params);
 // With World::measureImpacts, the velocities and touching contacts before the velocity
 // stage (impact_properties.cpp), and what the stage did to them, into stats.impacts. A
 // no-op without it.
-void beginMeasuringImpacts(World& world);
+void beginMeasuringImpacts(World& world, const Params& params);
 void endMeasuringImpacts(World& world, StepStats& stats);
 
 template <class Pass>

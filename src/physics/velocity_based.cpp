@@ -43,7 +43,7 @@ StepStats stepVelocityBased(World& world, const Params& params, double h) {
     {
         const StageTimer timer(stats.passesSeconds);
         findContacts(world, params);  // positions stay put until D
-        beginMeasuringImpacts(world);
+        beginMeasuringImpacts(world, params);
         runPasses(world, params, stats, [&](int pass) { respondWithSolver(world, params, stats, pass); });  // B
         propagateShock(world, params, stats, false);
         endWithPositivity(world, params, stats, false);

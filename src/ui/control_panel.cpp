@@ -106,7 +106,8 @@ void propertiesSection(const Readouts& r) {
     if (r.properties.empty()) return;
     ImGui::TextDisabled("five properties (Smith et al.)");
     tooltip("What a simultaneous-impact answer may keep (slide 14's global approach), measured on the contacts of "
-            "every step since the last restart. Compare solvers side by side on one of slide 14's presets.");
+            "every step since the last restart (symmetry: on the state now). Compare solvers side by side on one "
+            "of slide 14's presets.");
     for (const Readouts::Property& p : r.properties) {
         static const ImVec4 kColours[] = {{0.45f, 0.9f, 0.45f, 1.0f}, {1.0f, 0.4f, 0.35f, 1.0f}, {0.6f, 0.6f, 0.6f, 1.0f}};
         static const char* kMarks[] = {"\u2713", "\u2717", "-"};
@@ -286,26 +287,31 @@ void readoutsBody(const Readouts& r, const PanelState& state, PanelActions& acti
     ImGui::Text("bounces since restart %llu", static_cast<unsigned long long>(r.bouncesSinceRestart));
     tooltip("Contacts answered as a bounce since the last restart, counted in every pass and substep.");
     if (r.untilConverged) {
-        ImGui::Text("passes last step %llu (K = %d)", static_cast<unsigned long long>(r.stats.passesUsed), r.passCap);
+        ImGui::Text("passes last step %llu (at most K = %d a solver step)", static_cast<unsigned long long>(r.stats.passesUsed),
+                    r.passCap);
         ImGui::Text("solver steps that reached K: %llu", static_cast<unsigned long long>(r.stats.passCapHits));
-        tooltip("Until converged: the passes run in the last time step, all substeps, and how many solver steps "
-                "reached K with a contact still approaching (raise K to let them converge).");
+        tooltip("Until converged: the passes run in the last time step, summed over its substeps (each solver step "
+                "runs at most K), and how many solver steps reached K with a contact still approaching (raise K to "
+                "let them converge).");
     }
     if (r.globalSolve) {
         ImGui::Text("LCP sweeps last step %llu", static_cast<unsigned long long>(r.stats.lcpSweeps));
         ImGui::Text("LCP residual %.2g m/s", r.stats.lcpResidual);
         tooltip("The global solve, each cluster of touching spheres on its own (and on several threads): projected "
                 "Gauss-Seidel sweeps of the cluster that took most, summed over the last time step's passes, and the "
-                "most any contact ended off its target speed (the tolerance is 1e-12 m/s; a pile needs hundreds of "
-                "sweeps, and at most 1000 a pass are made).");
+                "most any contact ended off its target speed (the tolerance is 1e-12 m/s, or 1e-14 of the fastest "
+                "approach for a cluster of at most 64 contacts with an impact; a pile needs hundreds of sweeps; lcp "
+                "makes at most 1000 a solve, one solve a pass; generalized reflections up to 1000 a round, many "
+                "rounds a pass).");
     }
     if (r.reflections) {
-        ImGui::Text("reflection rounds last step %llu, capped %llu",
+        ImGui::TextWrapped("reflection rounds last step %llu, capped %llu",
                     static_cast<unsigned long long>(r.stats.reflectionRounds),
                     static_cast<unsigned long long>(r.stats.reflectionCapHits));
         tooltip("Generalized reflections: rounds of { the contacts that approach, solved together } of the cluster "
                 "that took most, summed over the last time step's passes, and the clusters that stopped at a cap "
-                "(10 000 rounds, or 500 sweeps of their contacts) with a contact still approaching.");
+                "(10 000 rounds, or 10^7 contact visits, 500 sweeps of the contacts above 20 000) with a contact "
+                "still approaching, the step's last positivity solve included.");
     }
     if (r.shock) {
         ImGui::Text("shock: %llu levels, %llu rounds last step", static_cast<unsigned long long>(r.stats.shockLevels),

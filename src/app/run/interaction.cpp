@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 #include <glm/geometric.hpp>
@@ -147,9 +148,16 @@ std::string checkSphereFields(const physics::World& world, const SphereFields& f
     }
     double room = std::numeric_limits<double>::infinity();  // m: the largest radius that fits at p
     for (int k = 0; k < world.boxPlaneCount; ++k) room = std::min(room, clearance(world.planes[std::size_t(k)], f.p, 0.0));
-    if (room <= 0.0) return "cannot edit: p lies outside the box";
+    const auto rounded = [](double x) {  // what the fields show
+        char text[32];
+        std::snprintf(text, sizeof text, "%.3f", x);
+        return std::string(text);
+    };
+    const std::string at = "p = (" + rounded(f.p.x) + ", " + rounded(f.p.y) + ", " + rounded(f.p.z) + ")";
+    if (room <= 0.0) return "cannot edit: " + at + " lies outside the box";
     if (f.r > room + kInsideSlack) {
-        return "cannot edit: r = " + number(f.r) + " m does not fit at this p: at most " + number(room) + " m there";
+        return "cannot edit: at " + at + " a sphere of r = " + number(f.r) + " m crosses a wall; at most r = " +
+               rounded(room) + " m fits there";
     }
     return "";
 }

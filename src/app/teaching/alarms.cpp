@@ -95,23 +95,23 @@ std::string energyHint(const physics::Params& params) {
     }
     if (params.method == physics::Method::VelocityBased) {
         return "velocity-based bounce reflects this step's gravity kick: the contact is found after "
-               "v ← v + h g, and the response sends that back too (about 2 g h / s per bounce; "
-               "smaller with more substeps or β < 1)";
+               "v ← v + τ g, and the response sends that back too (about 2 g τ / s per bounce, τ = h / substeps "
+               "the solver step, s the impact speed; smaller with more substeps or β < 1)";
     }
     if (params.method == physics::Method::Reflection) {
         return "reflection mirrors the velocity the step found, one gravity kick late (slide 7's "
-               "approximation): a bounce that enters early in its step comes out up to 2 g h / s "
-               "too fast; switch method to continuous for the instant of contact";
+               "approximation): a bounce that enters early in its step comes out up to 2 g τ / s "
+               "too fast (τ = h / substeps); switch method to continuous for the instant of contact";
     }
     if (params.method == physics::Method::ResponseOnly) {
         return "response-only reflects this step's gravity kick too (slides 5–6: the contact is found "
-               "after v ← v + h g, inside the wall): a floor bounce loses energy, a bounce off the "
-               "ceiling gains about m g h |v⊥|; smaller with more substeps";
+               "after v ← v + τ g, inside the wall, τ = h / substeps): a floor bounce loses energy, a bounce "
+               "off the ceiling gains about m g τ |v⊥|; smaller with more substeps";
     }
     if (params.mu >= kProjectionLiftsFromMu) {  // position based
         return "with little static damping (μ near 1) the projection of a stack can lift it within a step "
-               "(the column of 09 at μ = 1: up to 0.07 J; 21's at K = 1 from μ = 0.87); over a run it still "
-               "loses; lower μ (0.5) or raise passes";
+               "(the column of 09 from μ = 0.98: up to 0.07 J in a step at μ = 1; 21's at K = 1 starts rising "
+               "at μ = 0.87, below this alarm); over a run it still loses; lower μ (0.5) or raise passes";
     }
     return "not expected from the lecture's rules with α, β ≤ 1: report the scene and its parameters";
 }
@@ -124,13 +124,15 @@ std::string penetrationHint(const physics::Params& params) {
     switch (params.method) {
         case physics::Method::ResponseOnly:
             return "response-only has no position correction (slides 5–6): the contact is found inside "
-                   "the floor and a resting sphere sinks by h² g every solver step once its contact is static "
+                   "the floor and a resting sphere sinks by τ² g every solver step once its contact is static (τ = "
+                   "h / substeps) "
                    "(every second step when ε < g h / substeps, as in 01); switch method to position";
         case physics::Method::VelocityBased:
             return "velocity based only cancels the approach, never pushes apart: an existing overlap "
                    "persists or grows; switch method to position to project it out";
         case physics::Method::Continuous:
-            return "continuous: a resting contact is pressed in by g h² / 2 within a step and projected "
+            return "continuous: a resting contact is pressed in by g τ² / 2 within a solver step (τ = h / "
+                   "substeps) and projected "
                    "at its end; a deeper overlap comes from a step that reached the impact cap "
                    "(raise max_events) or an overlap that was there before";
         case physics::Method::PositionBased:
@@ -148,9 +150,14 @@ std::string escapeHint(const physics::Params& params) {
         return "continuous catches every wall at its instant of contact: a sphere got out in a step that "
                "reached the impact cap (raise max_events), or was outside already";
     }
-    if (params.method == physics::Method::PositionBased || params.method == physics::Method::Reflection) {
-        return "a sphere crossed a whole wall within one solver step (faster than the wall is thick "
-               "per h / substeps, or pushed through by the passes): lower h or raise substeps";
+    if (params.method == physics::Method::Reflection) {
+        return "reflection moves a sphere back by (1 + β) d: a step that carried it deep past a wall throws it "
+               "that far back, out through the opposite wall where the box is narrower; a thin wall crossed "
+               "within a step is never met; lower h or raise substeps";
+    }
+    if (params.method == physics::Method::PositionBased) {
+        return "the passes pushed a sphere through a wall (a crowd pressed against it), or it crossed a thin "
+               "wall within one solver step: raise passes or substeps, or lower h";
     }
     return "without projection (slide 7) a wall only turns the velocity: a sphere pushed on by gravity "
            "or by its neighbours sinks through it, a fast one is outside for a step before the wall turns it "
@@ -158,11 +165,13 @@ std::string escapeHint(const physics::Params& params) {
 }
 
 std::string heldInMidAirHint(const physics::Params& params) {
-    std::string hint =
-        "slide 13's static contact brakes each sphere's own velocity, v ← μ v, so spheres that touch only "
-        "each other stop wherever they are, as if glued";
-    if (params.response == physics::ResponseModel::LectureAttenuation) hint += "; switch response to momentum (μ on the relative velocity) and they fall";
-    return hint;
+    if (params.response != physics::ResponseModel::LectureAttenuation) {
+        return "spheres rest where nothing below carries them: deep overlaps (the velocity method never "
+               "pushes spheres apart) hold spheres inside each other; switch method to position";
+    }
+    return "slide 13's static contact brakes each sphere's own velocity, v ← μ v, so spheres that touch only "
+           "each other stop wherever they are, as if glued; switch response to momentum (μ on the relative "
+           "velocity) and they fall";
 }
 
 void Alarms::clear() {
@@ -236,7 +245,8 @@ void Alarms::checkRest(const physics::World& world, const physics::Params& param
 std::string eventCapHint(const physics::Params& params) {
     return formatted("the continuous method answers impacts one at a time, at most %.0f per sphere in a solver "
                      "step: a sphere at rest makes one or two, one bouncing in place with ε = 0 infinitely many "
-                     "(until its speed rounds to 0). Raise max_events or ε, or lower h",
+                     "(until its speed rounds to 0). Raise ε (a little above 0 lets it rest); a larger max_events "
+                     "only makes the cap rarer (1000: half as often), and a smaller h does not help",
                      double(params.maxEventsPerSphere));
 }
 
@@ -266,7 +276,7 @@ std::vector<AlarmLine> Alarms::lines(double now) const {
     }
     if (const State& s = state(AlarmKind::Penetration); s.count > 0) {
         lines.push_back({AlarmKind::Penetration,
-                         formatted("PENETRATION: up to %.0f %% of r (alarm above %.0f %%), last at t = %.2f s",
+                         formatted("PENETRATION: up to %.1f %% of r (alarm above %.0f %%), last at t = %.2f s",
                                    100.0 * s.worst, 100.0 * kPenetrationTolerance, s.lastTime),
                          s.hint, lit(AlarmKind::Penetration)});
     }
@@ -278,8 +288,8 @@ std::vector<AlarmLine> Alarms::lines(double now) const {
     }
     if (const State& s = state(AlarmKind::HeldInMidAir); s.count > 0) {
         char text[256];
-        std::snprintf(text, sizeof text, "MID-AIR: %zu spheres at rest off the floor (up to %.0f), held by v ← μ v on "
-                      "spheres that touch only each other (slide 13)", heldNow_, s.worst);
+        std::snprintf(text, sizeof text, "MID-AIR: %zu spheres at rest off the floor (up to %.0f), nothing below "
+                      "carrying them", heldNow_, s.worst);
         lines.push_back({AlarmKind::HeldInMidAir, text, s.hint, lit(AlarmKind::HeldInMidAir)});
     }
     if (const State& s = state(AlarmKind::EventCap); s.count > 0) {

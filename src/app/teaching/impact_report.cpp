@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include <glm/geometric.hpp>
+
 namespace app {
 namespace {
 
@@ -32,8 +34,8 @@ PropertyVerdict momentum(const ImpactRecord& r) {
 PropertyVerdict energy(const ImpactRecord& r, const physics::Params& params) {
     PropertyVerdict v{"energy", "", Verdict::Untested,
                       "Kinetic energy of the struck clusters after / before the contacts of a step: never more, "
-                      "and kept exactly when the contacts are elastic (beta = 1, alpha = 1 and epsilon = 0: no "
-                      "friction, no static contact)."};
+                      "and kept exactly when the contacts are elastic (beta = 1, alpha = 1, mu = 1 and epsilon = "
+                      "0: no friction, no damped static contact)."};
     if (r.worstEnergyRatio < 0.0) {
         v.value = "nothing struck";
         return v;
@@ -42,7 +44,7 @@ PropertyVerdict energy(const ImpactRecord& r, const physics::Params& params) {
                   ? format("after/before %.4f to %.4f", r.leastEnergyRatio, r.worstEnergyRatio)
                   : format("after/before %.6f", r.worstEnergyRatio);
     const bool gained = r.worstEnergyRatio > 1.0 + kKeptSlack;
-    const bool elastic = params.beta >= 1.0 && params.alpha >= 1.0 && params.epsilon <= 0.0;
+    const bool elastic = params.beta >= 1.0 && params.alpha >= 1.0 && params.mu >= 1.0 && params.epsilon <= 0.0;
     const bool lostElastic = elastic && r.leastEnergyRatio < 1.0 - kKeptSlack;
     v.verdict = gained || lostElastic ? Verdict::Broken : Verdict::Kept;
     if (lostElastic) v.value += " (elastic: lost)";
@@ -74,10 +76,11 @@ PropertyVerdict symmetry(const std::vector<physics::MirrorAsymmetry>& mirrors) {
 PropertyVerdict breakAway(const ImpactRecord& r) {
     PropertyVerdict v{"break-away", "", Verdict::Untested,
                       "Touching spheres that did not approach may part, as a cradle's last ball does: resting "
-                      "pairs of a struck cluster that separated."};
+                      "pairs of a cluster an impact struck (a contact faster than epsilon) that separated. A "
+                      "stack at rest tests nothing."};
     const auto& t = r.total;
     if (t.restingPairs == 0) {
-        v.value = "no resting pair struck";
+        v.value = "no resting pair an impact struck";
         return v;
     }
     v.value = format("%.0f of %.0f resting pairs parted", double(t.brokeAway), double(t.restingPairs));
@@ -85,16 +88,18 @@ PropertyVerdict breakAway(const ImpactRecord& r) {
     return v;
 }
 
-PropertyVerdict positivity(const ImpactRecord& r) {
+PropertyVerdict positivity(const ImpactRecord& r, const physics::Params& params) {
     PropertyVerdict v{"positivity", "", Verdict::Untested,
                       "Impulses only push, so no contact still approaches after the contacts of a step: the "
-                      "fastest approach left (m/s)."};
+                      "fastest approach left (m/s), kept up to 1e-6 of a solver step's gravity, g h / substeps "
+                      "(rounding; at least 1e-9 m/s)."};
     if (r.total.contacts == 0) {
         v.value = "no contact";
         return v;
     }
     v.value = format("fastest approach left %.2g m/s", r.total.fastestApproachAfter);
-    v.verdict = r.total.fastestApproachAfter <= kKeptSlack ? Verdict::Kept : Verdict::Broken;
+    const double slack = std::max(kKeptSlack, 1e-6 * glm::length(params.gravity) * params.solverStep());  // m/s
+    v.verdict = r.total.fastestApproachAfter <= slack ? Verdict::Kept : Verdict::Broken;
     return v;
 }
 
@@ -115,7 +120,7 @@ void ImpactRecord::add(const physics::ImpactProperties& step) {
 std::vector<PropertyVerdict> judgeProperties(const ImpactRecord& record,
                                              const std::vector<physics::MirrorAsymmetry>& mirrors,
                                              const physics::Params& params) {
-    return {momentum(record), energy(record, params), symmetry(mirrors), breakAway(record), positivity(record)};
+    return {momentum(record), energy(record, params), symmetry(mirrors), breakAway(record), positivity(record, params)};
 }
 
 namespace {

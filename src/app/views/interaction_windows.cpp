@@ -51,17 +51,19 @@ const char* stateName(physics::ContactState state) {
     return "";
 }
 
-// One vector field: three numbers; true when edited (the value is in `v`).
+// One vector field: three numbers; true when edited (the value is in `v`). An edit counts
+// when Enter is pressed: applied keystroke by keystroke, "150" passed through 15 on its way,
+// and a refused value left its first digits behind.
 bool vectorField(const char* label, glm::dvec3& v, bool editable) {
     double values[3] = {v.x, v.y, v.z};
-    const ImGuiInputTextFlags flags = editable ? 0 : ImGuiInputTextFlags_ReadOnly;
+    const ImGuiInputTextFlags flags = editable ? ImGuiInputTextFlags_EnterReturnsTrue : ImGuiInputTextFlags_ReadOnly;
     const bool changed = ImGui::InputScalarN(label, ImGuiDataType_Double, values, 3, nullptr, nullptr, "%.3f", flags);
     if (changed) v = {values[0], values[1], values[2]};
     return changed;
 }
 
 bool scalarField(const char* label, double& value, bool editable) {
-    const ImGuiInputTextFlags flags = editable ? 0 : ImGuiInputTextFlags_ReadOnly;
+    const ImGuiInputTextFlags flags = editable ? ImGuiInputTextFlags_EnterReturnsTrue : ImGuiInputTextFlags_ReadOnly;
     return ImGui::InputScalar(label, ImGuiDataType_Double, &value, nullptr, nullptr, "%.4g", flags);
 }
 
