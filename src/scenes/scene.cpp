@@ -17,6 +17,9 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 // An authored scene's spheres may touch (up to rounding), never overlap.
 constexpr double kTouching = 1e-9;
+// m/s: the fastest a scene file may start a sphere (its mean plus its spread). 13 shoots at
+// 100 m/s; a sphere at 1e160 m/s made the energy overflow to inf with no value to name.
+constexpr double kMostSceneSpeed = 1000.0;
 
 [[noreturn]] void fail(const std::string& what, const std::string& path) {
     throw SceneError(what, path);
@@ -32,6 +35,16 @@ std::string number(double x) {
     std::ostringstream out;
     out << x;
     return out.str();
+}
+
+// m/s, without overflow (glm::length of 1e160 m/s is inf).
+double speedOf(const glm::dvec3& v) { return std::hypot(v.x, std::hypot(v.y, v.z)); }
+
+// Fails with `what` "speed ... is above 1000 m/s" when `speed` is.
+void checkSpeed(double speed, const std::string& what, const std::string& path) {
+    if (speed > kMostSceneSpeed) {
+        fail(what + " " + number(speed) + " m/s is above " + number(kMostSceneSpeed) + " m/s", path);
+    }
 }
 
 std::string sphereName(std::size_t i) { return "spheres[" + std::to_string(i) + "]"; }
@@ -85,6 +98,7 @@ void addExtraPlanes(const Scene& scene, physics::World& world) {
 void checkSphere(const Sphere& s, std::size_t i) {
     if (!isFinite(s.p)) fail(sphereName(i) + " position must be finite", spherePath(i, "p"));
     if (!isFinite(s.v)) fail(sphereName(i) + " velocity must be finite", spherePath(i, "v"));
+    checkSpeed(speedOf(s.v), sphereName(i) + " speed |v| =", spherePath(i, "v"));
     if (!(s.r > 0) || !std::isfinite(s.r)) {
         fail(sphereName(i) + " radius must be positive (m), got " + number(s.r),
              spherePath(i, "r"));
@@ -146,6 +160,8 @@ void checkGeneratorValues(const Generator& g, std::size_t i) {
     if (!(g.velocitySpread >= 0) || !std::isfinite(g.velocitySpread)) {
         fail(name + " velocitySpread must be >= 0 (m/s)", generatorPath(i, "velocitySpread"));
     }
+    checkSpeed(speedOf(g.velocity) + std::sqrt(3.0) * g.velocitySpread, name + " fastest speed",
+               generatorPath(i, "velocity"));
 }
 
 void checkRegion(const Generator& g, std::size_t i, const physics::World& world) {
@@ -193,6 +209,7 @@ void checkEmitter(const Emitter& e, std::size_t i, const physics::World& world) 
     if (!(e.spread >= 0) || !std::isfinite(e.spread)) {
         fail(name + " spread must be >= 0 (m/s)", emitterPath(i, "spread"));
     }
+    checkSpeed(speedOf(e.velocity) + std::sqrt(3.0) * e.spread, name + " fastest speed", emitterPath(i, "velocity"));
     if (!(e.radiusMin > 0) || !(e.radiusMin <= e.radiusMax) || !std::isfinite(e.radiusMax)) {
         fail(name + " radius must be positive with min <= max (m)", emitterPath(i, "radius"));
     }

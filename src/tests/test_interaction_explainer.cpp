@@ -282,6 +282,51 @@ TEST(ContactExplanation, SaysALcpContactWasSolvedWithTheOthers) {
     EXPECT_EQ(bounces, 2);
 }
 
+// A static pair falling together under the global solvers: their mu acts on the relative
+// tangential velocity (dampTangential), so the pair keeps falling as it would alone (slide
+// 13's v <- mu v on each sphere's own velocity would halve it: the window predicted
+// 1.41 m/s where the solver gave 2.82). The explanation predicts the solver's velocities
+// and names why.
+TEST(ContactExplanation, AStaticPairUnderTheGlobalSolversIsDampedOnItsRelativeVelocity) {
+    for (const physics::Solver solver : {physics::Solver::Lcp, physics::Solver::GeneralizedReflections}) {
+        physics::Params params;
+        params.method = physics::Method::VelocityBased;
+        params.solver = solver;
+        params.gravity = glm::dvec3(0.0);
+        params.epsilon = 0.1;
+        params.mu = 0.5;
+        params.substeps = 1;
+        physics::World world;
+        world.addSphere({0.0, 0.0, 1.0}, {0.05, 0.0, -2.0}, 0.1, 1.0);  // slides along the other,
+        world.addSphere({0.0, 0.0, 1.2}, {-0.05, 0.0, -2.04}, 0.1, 1.0);  // pressing on it at 0.04 m/s
+        world.recordContacts = true;
+        physics::step(world, params);
+        ASSERT_FALSE(world.contacts.empty());
+        const physics::ContactEvent& event = world.contacts.front();
+        ASSERT_FALSE(event.bounce);
+        const app::ContactExplanation e = app::explainContact(event, params);
+        expectVector(e.predicted[0], event.velocityAfter[0], 1e-12);
+        expectVector(e.predicted[1], event.velocityAfter[1], 1e-12);
+        expectVector(event.velocityAfter[0], {0.025, 0.0, -2.02}, 1e-12);  // (v2 - v1)_par halved, momentum kept
+        expectVector(event.velocityAfter[1], {-0.025, 0.0, -2.02}, 1e-12);
+        const auto lines = app::explanationLines(e, params, 0);
+        EXPECT_TRUE(hasLine(lines, "then \u03bc damps the relative tangential velocity"));
+        EXPECT_TRUE(hasLine(lines, "equal and opposite impulses scale"));
+        // Falling together without pressing, the contact does not push: no friction, free fall.
+        physics::World together;
+        together.addSphere({0.0, 0.0, 1.0}, {0.05, 0.0, -2.0}, 0.1, 1.0);
+        together.addSphere({0.0, 0.0, 1.2}, {-0.05, 0.0, -2.0}, 0.1, 1.0);
+        together.recordContacts = true;
+        physics::step(together, params);
+        ASSERT_FALSE(together.contacts.empty());
+        const physics::ContactEvent& still = together.contacts.front();
+        const app::ContactExplanation undamped = app::explainContact(still, params);
+        expectVector(undamped.predicted[0], still.velocityAfter[0], 1e-12);
+        expectVector(still.velocityAfter[0], {0.05, 0.0, -2.0}, 1e-12);
+        EXPECT_TRUE(hasLine(app::explanationLines(undamped, params, 0), "it did not push (\u03bb = 0)"));
+    }
+}
+
 // A pairwise response lists nothing solved together.
 TEST(ContactExplanation, APairwiseResponseIsSolvedAlone) {
     physics::ContactEvent event;

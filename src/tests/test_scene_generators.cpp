@@ -289,6 +289,26 @@ TEST(BuildWorld, SavedStatesLoadAsTheyWere) {
     EXPECT_TRUE(contains(buildError(scene), "radius must be positive"));
 }
 
+// A scene file starts no sphere faster than 1000 m/s (its mean speed plus the spread's
+// most): a sphere at 1e160 m/s made the energy overflow to inf with nothing to name.
+TEST(BuildWorld, RefusesSpeedsNoLectureNeeds) {
+    Scene scene;
+    scene.box = scenes::Box{};
+    scene.spheres = {{{0, 0, 1}, {1e160, 0, 0}, 0.1, 1.0}};
+    std::string error = buildError(scene);
+    EXPECT_TRUE(contains(error, "spheres[0] speed |v| = 1e+160 m/s is above 1000 m/s")) << error;
+    EXPECT_TRUE(contains(error, "@/spheres/0/v")) << error;
+    scene.spheres[0].v = {100, 0, 0};  // 13's fastest shot
+    EXPECT_EQ(buildError(scene), "");
+    scene.snapshot = true;  // a saved state too
+    scene.spheres[0].v = {0, 0, -2000};
+    EXPECT_TRUE(contains(buildError(scene), "is above 1000 m/s"));
+    Generator g = cubeGenerator(GeneratorKind::Random, 10, 0.05);
+    g.velocity = {999, 0, 0};
+    g.velocitySpread = 1.0;  // up to 999 + sqrt(3)
+    EXPECT_TRUE(contains(buildError(boxScene(g)), "generate[0] fastest speed")) << buildError(boxScene(g));
+}
+
 TEST(BuildWorld, RefusesRegionsOutsideTheBox) {
     Generator g = cubeGenerator(GeneratorKind::Random, 10, 0.05);
     g.regionMax.z = 2.5;

@@ -25,17 +25,34 @@ glm::dvec3 predictPlane(const glm::dvec3& v, const glm::dvec3& n, bool isStatic,
 }
 
 // Slides 11-13 for two spheres, in the chosen response model.
-void predictPair(const glm::dvec3 v[2], const double m[2], const glm::dvec3& u, bool isStatic,
+// Whether a static pair's mu acts on the spheres' relative tangential velocity (equal and
+// opposite impulses) rather than on each sphere's own velocity (slide 13's v <- mu v): the
+// momentum response, the continuous method, and slide 14's global solvers (their alpha and
+// mu act on each contact's relative tangential velocity after the normal solve).
+bool relativeFriction(const physics::Params& params) {
+    return physics::frictionOnRelativeVelocity(params) || params.solver == physics::Solver::Lcp ||
+           params.solver == physics::Solver::GeneralizedReflections;
+}
+
+// Why: the name of what makes relativeFriction true.
+const char* relativeFrictionCause(const physics::Params& params) {
+    if (params.solver == physics::Solver::Lcp) return "lcp";
+    if (params.solver == physics::Solver::GeneralizedReflections) return "generalized reflections";
+    if (params.response == physics::ResponseModel::MomentumConserving) return "the momentum-conserving response";
+    return "the continuous method";
+}
+
+void predictPair(const glm::dvec3 v[2], const double m[2], const glm::dvec3& u, bool isStatic, bool undamped,
                  const physics::Params& params, glm::dvec3 out[2]) {
     const double mass = reducedMass(m[0], m[1]);
     const double s = glm::dot(v[1] - v[0], u);  // m/s, approaching when > 0
     const bool lecture = params.response == physics::ResponseModel::LectureAttenuation;
     if (isStatic) {
-        const bool relativeFriction = physics::frictionOnRelativeVelocity(params);
         const double jc = s > 0.0 ? mass * s : 0.0;  // kg m/s, perfectly inelastic
         out[0] = v[0] + (jc / m[0]) * u;
         out[1] = v[1] - (jc / m[1]) * u;
-        if (!relativeFriction) {
+        if (undamped) return;
+        if (!relativeFriction(params)) {
             out[0] *= params.mu;
             out[1] *= params.mu;
         } else {
@@ -71,6 +88,10 @@ std::string format(const char* pattern, ...) {
 
 // -0.000 reads as a sign error on a slide: print it as 0.000.
 double clean(double x) { return std::abs(x) < 5e-4 ? 0.0 : x; }
+
+// m: a depth as shown to %.4g; one at rounding's size (-1.4e-17 m where a continuous contact
+// meets exactly) is 0.
+double depthShown(double depth) { return std::abs(depth) < 1e-12 ? 0.0 : depth; }
 
 std::string vec(const glm::dvec3& v) { return format("(%.3f, %.3f, %.3f)", clean(v.x), clean(v.y), clean(v.z)); }
 
@@ -128,7 +149,7 @@ void planeLines(const ContactExplanation& e, const physics::Params& p, int boxPl
     instantLine(lines, e, p);
     add(lines, Line::Kind::Heading, "Slide 3: detection, (p − a)·n ≤ r");
     add(lines, Line::Kind::Formula, "n = " + vec(e.normal) + "  (unit, into the free side)");
-    add(lines, Line::Kind::Formula, format("d = r − (p − a)·n = %.4g m  (distance of penetration, slide 8)", e.depth));
+    add(lines, Line::Kind::Formula, format("d = r − (p − a)·n = %.4g m  (distance of penetration, slide 8)", depthShown(e.depth)));
     add(lines, Line::Kind::Heading, "Slide 13: bounce or static contact?");
     if (e.staticContact) {
         add(lines, Line::Kind::Formula,
@@ -168,7 +189,7 @@ void pairLines(const ContactExplanation& e, const physics::Params& p, std::vecto
     instantLine(lines, e, p);
     add(lines, Line::Kind::Heading, "Slides 9 and 11: ‖p₁ − p₂‖ ≤ r₁ + r₂, u = (p₁ − p₂) / ‖p₁ − p₂‖");
     add(lines, Line::Kind::Formula, "u = " + vec(e.normal) + "  (from 2 to 1)");
-    add(lines, Line::Kind::Formula, format("d = r₁ + r₂ − ‖p₁ − p₂‖ = %.4g m  (collision depth, slide 13)", e.depth));
+    add(lines, Line::Kind::Formula, format("d = r₁ + r₂ − ‖p₁ − p₂‖ = %.4g m  (collision depth, slide 13)", depthShown(e.depth)));
     add(lines, Line::Kind::Heading, "Slide 13: bounce or static contact?");
     if (e.staticContact) {
         add(lines, Line::Kind::Formula,
@@ -188,14 +209,23 @@ void pairLines(const ContactExplanation& e, const physics::Params& p, std::vecto
     add(lines, Line::Kind::Formula, "before:  " + splitText("v₁", e.before[0], "u"));
     add(lines, Line::Kind::Formula, "         " + splitText("v₂", e.before[1], "u"));
     if (e.staticContact) {
-        add(lines, Line::Kind::Heading, format("Slide 13, 2-b: no bounce, then friction v ← μ v, μ = %.3g", p.mu));
+        if (relativeFriction(p)) {
+            add(lines, Line::Kind::Heading,
+                format("Slide 13, 2-b: no bounce, then μ damps the relative tangential velocity, μ = %.3g", p.mu));
+        } else {
+            add(lines, Line::Kind::Heading, format("Slide 13, 2-b: no bounce, then friction v ← μ v, μ = %.3g", p.mu));
+        }
         add(lines, Line::Kind::Formula,
             format("approach removed (perfectly inelastic): j/2 = (v₂ − v₁)·u / (1/m₁ + 1/m₂) = %.4g kg m/s",
                    e.normalSpeed > 0.0 ? 0.5 * e.impulse : 0.0));
-        if (physics::frictionOnRelativeVelocity(p)) {
+        if (e.undamped) {
             add(lines, Line::Kind::Note,
-                lecture ? "continuous: μ damps the relative tangential velocity (momentum kept)"
-                        : "momentum-conserving: μ damps the relative tangential velocity");
+                std::string(relativeFrictionCause(p)) + ": it did not push (λ = 0), so μ does not act on it");
+        } else if (relativeFriction(p)) {
+            add(lines, Line::Kind::Note,
+                std::string(relativeFrictionCause(p)) +
+                    ": equal and opposite impulses scale (v₂ − v₁)∥ by μ, so momentum is kept (slide 13's v ← μ v "
+                    "would scale each sphere's own velocity)");
         }
     } else if (lecture) {
         add(lines, Line::Kind::Heading, format("Slide 12: with α = %.3g, β = %.3g", p.alpha, p.beta));
@@ -204,6 +234,7 @@ void pairLines(const ContactExplanation& e, const physics::Params& p, std::vecto
     } else {
         add(lines, Line::Kind::Heading, format("Momentum-conserving restitution, α = %.3g, β = %.3g", p.alpha, p.beta));
         add(lines, Line::Kind::Formula, "J = (1 + β) j/2 u + (1 − α) m* (v₂ − v₁)∥,  v₁ ← v₁ + J/m₁,  v₂ ← v₂ − J/m₂");
+        add(lines, Line::Kind::Formula, "m* = 1/(1/m₁ + 1/m₂), the reduced mass");
     }
     add(lines, Line::Kind::Formula, "v₁ ← " + vec(e.predicted[0]) + ",   v₂ ← " + vec(e.predicted[1]));
     add(lines, Line::Kind::Formula, "after:   " + splitText("v₁", e.after[0], "u"));
@@ -268,7 +299,9 @@ ContactExplanation explainContact(const physics::ContactEvent& event, const phys
         e.normalSpeed = e.before[1].normal - e.before[0].normal;
         e.staticContact = std::abs(e.normalSpeed) <= params.epsilon;
         e.impulse = 2.0 * reducedMass(e.mass[0], e.mass[1]) * e.normalSpeed;
-        predictPair(event.velocityBefore, e.mass, event.normal, e.staticContact, params, e.predicted);
+        const bool global = params.solver == physics::Solver::Lcp || params.solver == physics::Solver::GeneralizedReflections;
+        e.undamped = global && e.staticContact && !(event.solvedImpulse > 0.0);
+        predictPair(event.velocityBefore, e.mass, event.normal, e.staticContact, e.undamped, params, e.predicted);
         if (!corrects) {
             e.correction = PositionCorrection::None;
         } else if (params.split == physics::PositionSplit::HalfHalf) {

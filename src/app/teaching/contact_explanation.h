@@ -44,6 +44,9 @@ struct ContactExplanation {
     double epsilon = 0.0;         // m/s
     bool staticContact = false;   // |normalSpeed| <= epsilon (slide 13, 2-b)
     bool recordedBounce = false;  // what the solver did
+    // Slide 14's global solvers damp a contact's tangential velocity only where it pushed
+    // (lambda > 0): a static contact that did not is left undamped.
+    bool undamped = false;
     double mass[2]{0.0, 0.0};     // kg (0 for a plane)
     double impulse = 0.0;         // kg m/s, slide 11: j = 2/(1/m1 + 1/m2) (v2 - v1).u; 0 for a plane
     VelocitySplit before[2];      // of sphere 1 and sphere 2, along `normal`
