@@ -407,7 +407,7 @@ Response respondToContact(World& world, std::uint32_t i, std::size_t planeIndex,
 
 // Sphere i's static contact with the frozen sphere `frozen` of a lower level (shock
 // propagation; contact.u from it to i): respondToFrozenSphere, recorded in i's contact
-// state and counted. Not logged: the contact log's formulas take two finite masses.
+// state and counted; logged with the frozen sphere's mass infinite.
 Response respondToFrozenContact(World& world, std::uint32_t i, std::uint32_t frozen, const SphereContact& contact,
                                 const Params& params, StepStats& stats);
 

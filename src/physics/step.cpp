@@ -1,6 +1,7 @@
 #include "physics/step.h"
 
 #include <algorithm>
+#include <limits>
 #include <array>
 #include <cassert>
 #include <chrono>
@@ -401,9 +402,16 @@ Response respondToContact(World& world, std::uint32_t i, std::size_t planeIndex,
 
 Response respondToFrozenContact(World& world, std::uint32_t i, std::uint32_t frozen, const SphereContact& contact,
                                 const Params& params, StepStats& stats) {
+    const glm::dvec3 before = world.velocity[i];  // m/s
     const Response response = respondToFrozenSphere(world.velocity[i], world.velocity[frozen], contact.u, params);
     record(world, i, response);
     count(stats, response);
+    if (world.recordContacts && response != Response::None) {  // the frozen sphere: infinitely heavy
+        world.contacts.push_back({i, static_cast<std::int32_t>(frozen), params.passes, response == Response::Bounce,
+                                  contact.u, world.position[i] - world.radius[i] * contact.u, contact.depth,
+                                  {before, world.velocity[frozen]}, {world.velocity[i], world.velocity[frozen]},
+                                  {world.mass[i], std::numeric_limits<double>::infinity()}});
+    }
     return response;
 }
 

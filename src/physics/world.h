@@ -51,7 +51,7 @@ struct ContactEvent {
     double depth = 0.0;          // m, penetration when detected
     glm::dvec3 velocityBefore[2]{};  // m/s, of i and of the other sphere (zero for a plane)
     glm::dvec3 velocityAfter[2]{};   // m/s
-    double massOf[2]{0.0, 0.0};      // kg (0 for a plane)
+    double massOf[2]{0.0, 0.0};      // kg (0 for a plane; infinite for a frozen sphere of the shock sweep)
     // s: the continuous method's instant of contact within its solver step (the
     // velocities are those at that instant); -1 for the other methods.
     double timeOfImpact = -1.0;

@@ -327,6 +327,42 @@ TEST(ContactExplanation, AStaticPairUnderTheGlobalSolversIsDampedOnItsRelativeVe
     }
 }
 
+// Slide 14's shock sweep answers sphere 1 against the frozen sphere 0 below it: logged with
+// m2 infinite and explained so (only sphere 1 changes; it moves the whole d). The sweep's
+// answers were not logged before: the window showed only the pass's, which the sweep then
+// changed (sphere 1 ended 3.1 mm higher, at rest).
+TEST(ContactExplanation, TheShockSweepsAnswerAgainstAFrozenSphereIsExplained) {
+    physics::Params params;
+    params.method = physics::Method::PositionBased;
+    params.shock = physics::ShockPropagation::On;
+    params.passes = 1;
+    params.substeps = 1;
+    params.epsilon = 0.1;
+    params.mu = 0.5;
+    physics::World world;
+    world.planes.push_back({{0.0, 0.0, 0.0}, {0.0, 0.0, 1.0}});
+    world.boxPlaneCount = 1;
+    world.addSphere({0.0, 0.0, 0.1}, {0.0, 0.0, 0.0}, 0.1, 1.0);
+    world.addSphere({0.0, 0.0, 0.2995}, {0.0, 0.0, -0.05}, 0.1, 2.0);  // overlapping it by 0.5 mm
+    world.recordContacts = true;
+    physics::step(world, params);
+    const physics::ContactEvent* sweep = nullptr;
+    for (const physics::ContactEvent& e : world.contacts) {
+        if (e.pass == params.passes && e.i == 1 && e.other == 0) sweep = &e;
+    }
+    ASSERT_NE(sweep, nullptr);
+    EXPECT_TRUE(std::isinf(sweep->massOf[1]));
+    const app::ContactExplanation e = app::explainContact(*sweep, params);
+    EXPECT_LT(e.mismatch, 1e-12);
+    expectVector(e.predicted[1], sweep->velocityBefore[1]);
+    EXPECT_EQ(e.correction, app::PositionCorrection::OffFrozen);
+    EXPECT_EQ(e.shift[0], sweep->depth);
+    const auto lines = app::explanationLines(e, params, 0);
+    EXPECT_TRUE(hasLine(lines, "frozen (m\u2082 = \u221e"));
+    EXPECT_TRUE(hasLine(lines, "sphere 2 is frozen and does not move"));
+    EXPECT_TRUE(hasLine(lines, "the solver's result: the same"));
+}
+
 // A pairwise response lists nothing solved together.
 TEST(ContactExplanation, APairwiseResponseIsSolvedAlone) {
     physics::ContactEvent event;

@@ -54,7 +54,7 @@ void predictPair(const glm::dvec3 v[2], const double m[2], const glm::dvec3& u, 
         if (undamped) return;
         if (!relativeFriction(params)) {
             out[0] *= params.mu;
-            out[1] *= params.mu;
+            if (std::isfinite(m[1])) out[1] *= params.mu;  // a frozen sphere keeps its velocity
         } else {
             const glm::dvec3 relative = out[1] - out[0];
             const glm::dvec3 impulse = (1.0 - params.mu) * mass * (relative - glm::dot(relative, u) * u);
@@ -187,6 +187,11 @@ void pairLines(const ContactExplanation& e, const physics::Params& p, std::vecto
     add(lines, Line::Kind::Heading,
         format("Sphere 1 = #%u and sphere 2 = #%d, %s", e.sphere, e.other, passName(e.pass, p.passes).c_str()));
     instantLine(lines, e, p);
+    if (!std::isfinite(e.mass[1])) {
+        add(lines, Line::Kind::Note,
+            format("slide 14's shock propagation: #%d is in the level below, frozen (m₂ = ∞, 1/m₂ = 0): only "
+                   "sphere 1 changes", e.other));
+    }
     add(lines, Line::Kind::Heading, "Slides 9 and 11: ‖p₁ − p₂‖ ≤ r₁ + r₂, u = (p₁ − p₂) / ‖p₁ − p₂‖");
     add(lines, Line::Kind::Formula, "u = " + vec(e.normal) + "  (from 2 to 1)");
     add(lines, Line::Kind::Formula, format("d = r₁ + r₂ − ‖p₁ − p₂‖ = %.4g m  (collision depth, slide 13)", depthShown(e.depth)));
@@ -246,6 +251,9 @@ void pairLines(const ContactExplanation& e, const physics::Params& p, std::vecto
         add(lines, Line::Kind::Formula,
             format("p₁ ← p₁ + (1 + β) d s₁ u = %.4g m,  p₂ ← p₂ − (1 + β) d s₂ u = %.4g m  (s: the split)", e.shift[0],
                    e.shift[1]));
+    } else if (e.correction == PositionCorrection::OffFrozen) {
+        add(lines, Line::Kind::Formula,
+            format("p₁ ← p₁ + d u: %.4g m; sphere 2 is frozen and does not move", e.shift[0]));
     } else if (e.correction == PositionCorrection::HalfHalf) {
         add(lines, Line::Kind::Formula,
             format("p₁ ← p₁ + d/2 u,  p₂ ← p₂ − d/2 u: %.4g m each", e.shift[0]));
@@ -302,7 +310,12 @@ ContactExplanation explainContact(const physics::ContactEvent& event, const phys
         const bool global = params.solver == physics::Solver::Lcp || params.solver == physics::Solver::GeneralizedReflections;
         e.undamped = global && e.staticContact && !(event.solvedImpulse > 0.0);
         predictPair(event.velocityBefore, e.mass, event.normal, e.staticContact, e.undamped, params, e.predicted);
-        if (!corrects) {
+        if (!std::isfinite(e.mass[1])) {  // the shock sweep against a frozen sphere: projected by d, also
+            e.reflected = false;            // under reflection (a resting contact does not bounce)
+            e.predicted[1] = event.velocityBefore[1];
+            e.correction = corrects ? PositionCorrection::OffFrozen : PositionCorrection::None;
+            e.shift[0] = corrects ? event.depth : 0.0;
+        } else if (!corrects) {
             e.correction = PositionCorrection::None;
         } else if (params.split == physics::PositionSplit::HalfHalf) {
             e.correction = PositionCorrection::HalfHalf;

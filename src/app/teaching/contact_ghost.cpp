@@ -59,7 +59,9 @@ std::optional<ContactGhost> lastContactGhost(const physics::World& world, const 
         glm::dvec3 p2 = flown(second, e.velocityBefore[1], params.gravity, rest);
         const glm::dvec3 delta = p1 - p2;
         const double distance = glm::length(delta), overlap = world.radius[e.i] + world.radius[other] - distance;
-        if (overlap > 0.0 && distance > 0.0) {
+        if (overlap > 0.0 && distance > 0.0 && !std::isfinite(e.massOf[1])) {
+            p1 += overlap * (delta / distance);  // the shock sweep: the frozen sphere does not move
+        } else if (overlap > 0.0 && distance > 0.0) {
             physics::separateSpheres(p1, p2, e.massOf[0], e.massOf[1], delta / distance, overlap, params.split);
         }
         const bool mine = e.i == me;

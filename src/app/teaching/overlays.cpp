@@ -112,7 +112,7 @@ void OverlayState::addImpulses(const physics::World& world) {
     for (const physics::ContactEvent& e : world.contacts) {
         if (!e.bounce) continue;
         add(e.i, e.other, e.point, e.impulse());
-        if (!e.isPlane()) {
+        if (!e.isPlane() && std::isfinite(e.massOf[1])) {  // a frozen sphere takes nothing
             const glm::dvec3 onOther = e.massOf[1] * (e.velocityAfter[1] - e.velocityBefore[1]);
             add(static_cast<std::uint32_t>(e.other), static_cast<std::int32_t>(e.i), e.point, onOther);
         }
