@@ -158,7 +158,8 @@ void logContact(World& world, const LcpContact& c, const std::vector<glm::dvec3>
     world.contacts.push_back({c.i, c.other, pass, !c.isStatic, c.u, world.position[c.i] - world.radius[c.i] * c.u,
                               c.depth, {before[c.i], c.j >= 0 ? before[j] : none},
                               {world.velocity[c.i], c.j >= 0 ? world.velocity[j] : none},
-                              {world.mass[c.i], c.j >= 0 ? world.mass[j] : 0.0}, -1.0, c.lambda});
+                              {world.mass[c.i], c.j >= 0 ? world.mass[j] : 0.0}, -1.0, c.lambda,
+                              world.stepCount});
 }
 
 }  // namespace

@@ -58,6 +58,9 @@ struct ContactEvent {
     // kg m/s: the normal impulse lambda a global solve gave this contact (slide 14's lcp and
     // generalized reflections, summed over the rounds); -1 for the pairwise responses.
     double solvedImpulse = -1.0;
+    // The solver step it was answered in (World::stepCount then): a time step's log holds
+    // `substeps` of them, and a global solve's contacts are those of one step and pass.
+    std::uint64_t solverStep = 0;
     bool isPlane() const { return other < 0; }
     glm::dvec3 impulse() const { return massOf[0] * (velocityAfter[0] - velocityBefore[0]); }  // kg m/s on i
 };

@@ -145,7 +145,7 @@ void matchLine(std::vector<Line>& lines, const ContactExplanation& e, const phys
 void planeLines(const ContactExplanation& e, const physics::Params& p, int boxPlaneCount, std::vector<Line>& lines) {
     add(lines, Line::Kind::Heading,
         format("Sphere #%u and the %s, %s", e.sphere, planeName(e.other, boxPlaneCount).c_str(),
-               passName(e.pass, p.passes).c_str()));
+               passName(e.pass, p.passes, e.solvedTogether).c_str()));
     instantLine(lines, e, p);
     add(lines, Line::Kind::Heading, "Slide 3: detection, (p − a)·n ≤ r");
     add(lines, Line::Kind::Formula, "n = " + vec(e.normal) + "  (unit, into the free side)");
@@ -185,7 +185,7 @@ void planeLines(const ContactExplanation& e, const physics::Params& p, int boxPl
 void pairLines(const ContactExplanation& e, const physics::Params& p, std::vector<Line>& lines) {
     const bool lecture = p.response == physics::ResponseModel::LectureAttenuation;
     add(lines, Line::Kind::Heading,
-        format("Sphere 1 = #%u and sphere 2 = #%d, %s", e.sphere, e.other, passName(e.pass, p.passes).c_str()));
+        format("Sphere 1 = #%u and sphere 2 = #%d, %s", e.sphere, e.other, passName(e.pass, p.passes, e.solvedTogether).c_str()));
     instantLine(lines, e, p);
     if (!std::isfinite(e.mass[1])) {
         add(lines, Line::Kind::Note,
@@ -203,6 +203,11 @@ void pairLines(const ContactExplanation& e, const physics::Params& p, std::vecto
     } else {
         add(lines, Line::Kind::Formula,
             format("(v₂ − v₁)·u = %.3f m/s > ε = %.3g m/s: they approach, a bounce (2-a)", e.normalSpeed, e.epsilon));
+    }
+    if (e.solvedTogether && e.recordedBounce && e.staticContact) {
+        add(lines, Line::Kind::Note,
+            "the solver answered it as a bounce: it approached only in a later round, once the others' impulses "
+            "reached it (generalized reflections); the lines below use the velocities at the pass's start");
     }
     if (!e.staticContact) {
         add(lines, Line::Kind::Heading, "Slide 11: the elastic impulse");
@@ -249,8 +254,8 @@ void pairLines(const ContactExplanation& e, const physics::Params& p, std::vecto
         e.reflected ? "Slide 7, reflection: position correction by (1 + β) d" : "Slide 13, step 3: position correction");
     if (e.reflected) {
         add(lines, Line::Kind::Formula,
-            format("p₁ ← p₁ + (1 + β) d s₁ u = %.4g m,  p₂ ← p₂ − (1 + β) d s₂ u = %.4g m  (s: the split)", e.shift[0],
-                   e.shift[1]));
+            format("p₁ ← p₁ + (1 + β) d s₁ u,  p₂ ← p₂ − (1 + β) d s₂ u  (s: the split): sphere 1 moves %.4g m "
+                   "along u, sphere 2 %.4g m along −u", e.shift[0], e.shift[1]));
     } else if (e.correction == PositionCorrection::OffFrozen) {
         add(lines, Line::Kind::Formula,
             format("p₁ ← p₁ + d u: %.4g m; sphere 2 is frozen and does not move", e.shift[0]));
@@ -259,8 +264,8 @@ void pairLines(const ContactExplanation& e, const physics::Params& p, std::vecto
             format("p₁ ← p₁ + d/2 u,  p₂ ← p₂ − d/2 u: %.4g m each", e.shift[0]));
     } else if (e.correction == PositionCorrection::MassWeighted) {
         add(lines, Line::Kind::Formula,
-            format("p₁ ← p₁ + d m₂/(m₁ + m₂) u = %.4g m,  p₂ ← p₂ − d m₁/(m₁ + m₂) u = %.4g m", e.shift[0],
-                   e.shift[1]));
+            format("p₁ ← p₁ + d m₂/(m₁ + m₂) u,  p₂ ← p₂ − d m₁/(m₁ + m₂) u: sphere 1 moves %.4g m along u, "
+                   "sphere 2 %.4g m along −u", e.shift[0], e.shift[1]));
     } else {
         add(lines, Line::Kind::Note, noCorrectionNote(p));
     }
@@ -286,6 +291,7 @@ ContactExplanation explainContact(const physics::ContactEvent& event, const phys
     e.depth = event.depth;
     e.epsilon = params.epsilon;
     e.recordedBounce = event.bounce;
+    e.solvedTogether = event.solvedImpulse >= 0.0;
     e.timeOfImpact = event.timeOfImpact;
     e.reflected = params.method == physics::Method::Reflection;
     const bool corrects = params.method == physics::Method::PositionBased || e.reflected;
@@ -332,8 +338,11 @@ ContactExplanation explainContact(const physics::ContactEvent& event, const phys
     return e;
 }
 
-std::string passName(int pass, int passes) {
-    return pass >= passes ? "the shock propagation sweep" : format("pass %d of %d", pass + 1, passes);
+std::string passName(int pass, int passes, bool solvedTogether) {
+    if (pass < passes) return format("pass %d of %d", pass + 1, passes);
+    // After the K passes: a global solver's last answer (the position and reflection methods
+    // answer the velocities once more after the last projection), or the shock sweep.
+    return solvedTogether ? "after the last pass, velocities only" : "the shock propagation sweep";
 }
 
 std::string planeName(int planeIndex, int boxPlaneCount) {
@@ -373,7 +382,8 @@ std::vector<physics::ContactEvent> clusterOf(const physics::ContactEvent& event,
         grew = false;
         for (std::size_t k = 0; k < solved.size(); ++k) {
             const physics::ContactEvent& e = solved[k];
-            if (taken[k] || e.pass != event.pass || !touchesAny(e, spheres)) continue;
+            const bool sameSolve = e.pass == event.pass && e.solverStep == event.solverStep;
+            if (taken[k] || !sameSolve || !touchesAny(e, spheres)) continue;
             taken[k] = grew = true;
             cluster.push_back(e);
             spheres.push_back(e.i);

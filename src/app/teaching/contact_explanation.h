@@ -48,6 +48,7 @@ struct ContactExplanation {
     // Slide 14's global solvers damp a contact's tangential velocity only where it pushed
     // (lambda > 0): a static contact that did not is left undamped.
     bool undamped = false;
+    bool solvedTogether = false;  // by slide 14's lcp or generalized reflections (its lambda logged)
     double mass[2]{0.0, 0.0};     // kg (0 for a plane)
     double impulse = 0.0;         // kg m/s, slide 11: j = 2/(1/m1 + 1/m2) (v2 - v1).u; 0 for a plane
     VelocitySplit before[2];      // of sphere 1 and sphere 2, along `normal`
@@ -64,9 +65,10 @@ struct ContactExplanation {
 
 ContactExplanation explainContact(const physics::ContactEvent& event, const physics::Params& params);
 
-// "pass 2 of 4", or "the shock propagation sweep" for a contact the sweep answered (logged
-// with pass = K, after the K passes).
-std::string passName(int pass, int passes);
+// "pass 2 of 4"; for a contact logged with pass = K, after the K passes: "after the last
+// pass, velocities only" for a global solver's last answer (`solvedTogether`), else "the
+// shock propagation sweep".
+std::string passName(int pass, int passes, bool solvedTogether = false);
 
 // The plane's name: floor, ceiling, wall -x ... for the box (in scenes::boxPlanes'
 // order), "plane k" for the extra ones.

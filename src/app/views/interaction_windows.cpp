@@ -72,7 +72,7 @@ bool scalarField(const char* label, double& value, bool editable) {
 std::string contactTitle(const physics::ContactEvent& event, int selected, int boxPlaneCount, int passes) {
     char text[128];
     const char* kind = event.bounce ? "bounce" : "static";
-    const std::string pass = passName(event.pass, passes);
+    const std::string pass = passName(event.pass, passes, event.solvedImpulse >= 0.0);
     if (event.isPlane()) {
         std::snprintf(text, sizeof text, "%s, %s, %s", planeName(-1 - event.other, boxPlaneCount).c_str(), pass.c_str(),
                       kind);
