@@ -115,7 +115,7 @@ void propertiesSection(const Readouts& r) {
         ImGui::TextColored(kColours[v], "%s %s", kMarks[v], p.name.c_str());
         tooltip(p.meaning.c_str());
         ImGui::SameLine();
-        ImGui::TextWrapped("%s", p.value.c_str());
+        textWrappedAtSpaces(p.value);  // never "1." / "0000"
     }
 }
 
