@@ -83,3 +83,25 @@ TEST(ImpactReport, EachPropertySaysWhatItMeasuredAndWhetherItHolds) {
     const std::string marks = app::propertiesMarks(app::judgeProperties(cradle, {}, elastic()));
     EXPECT_EQ(marks, "\u2713 momentum  \u2713 energy  - symmetry\n\u2713 break-away  \u2717 positivity");
 }
+
+// "Elastic" needs mu = 1 too: at epsilon = 0 a contact with no normal speed is static, and
+// mu < 1 damps it (18 at mu = 0.5 kept 0.4 % of its energy and was marked broken).
+// Positivity's slack is 1e-6 of a solver step's gravity: 07's 1.4e-9 m/s is rounding.
+TEST(ImpactReport, ElasticNeedsMuOneAndPositivityAllowsRounding) {
+    app::ImpactRecord lost;
+    lost.add(step(1.0, 0.0039));
+    physics::Params damped = elastic();
+    damped.mu = 0.5;
+    EXPECT_EQ(verdictOf(lost, damped, "energy"), Verdict::Kept);
+    EXPECT_EQ(verdictOf(lost, elastic(), "energy"), Verdict::Broken);
+    physics::Params slope;  // g = 9.81 m/s^2, h = 1/60 s, 4 substeps: slack 4.1e-8 m/s
+    physics::ImpactProperties left = step(1.0, 0.5);
+    left.fastestApproachAfter = 1.4e-9;
+    app::ImpactRecord rounding;
+    rounding.add(left);
+    EXPECT_EQ(verdictOf(rounding, slope, "positivity"), Verdict::Kept);
+    left.fastestApproachAfter = 5e-8;
+    app::ImpactRecord approaching;
+    approaching.add(left);
+    EXPECT_EQ(verdictOf(approaching, slope, "positivity"), Verdict::Broken);
+}
