@@ -179,7 +179,7 @@ void restorePositivity(World& world, const Params& params, StepStats& stats) {
 }
 
 void endWithPositivity(World& world, const Params& params, StepStats& stats, bool moved) {
-    if (params.solver != Solver::Lcp && params.solver != Solver::GeneralizedReflections) return;
+    if (!solvesGlobally(params.solver)) return;
     if (moved) findContacts(world, params);
     restorePositivity(world, params, stats);
 }

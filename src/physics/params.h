@@ -33,6 +33,12 @@ constexpr bool solvesTogether(Solver solver) {
     return solver == Solver::Simultaneous || solver == Solver::Lcp || solver == Solver::GeneralizedReflections;
 }
 
+// Whether the solver is slide 14's global approach: one complementarity problem a cluster
+// (lcp, generalized reflections), its lambdas logged, alpha and mu after the normal solve.
+constexpr bool solvesGlobally(Solver solver) {
+    return solver == Solver::Lcp || solver == Solver::GeneralizedReflections;
+}
+
 // Slide 14's first global answer (shock_propagation.cpp): after the passes, the contact
 // graph's levels are swept from the floor up, each level frozen once answered.
 enum class ShockPropagation { Off, On };

@@ -353,6 +353,7 @@ TEST(Alarms, AContinuousStepThatReachesTheImpactCapIsCounted) {
     ASSERT_EQ(lines.size(), 1u);
     EXPECT_TRUE(contains(lines[0].text, "IMPACT CAP: 4 steps reached 20 impacts per sphere")) << lines[0].text;
     EXPECT_TRUE(contains(lines[0].hint, "Raise ε")) << lines[0].hint;
+    EXPECT_TRUE(contains(lines[0].hint, "and a smaller h does not help")) << lines[0].hint;  // whole, not cut at 256 bytes
     EXPECT_NEAR(sim.world().position[0].z, kRadius, 1e-9);  // projected: still on the floor
 
     scene.params.epsilon = 0.1;  // the resting contact is static: one impact a step

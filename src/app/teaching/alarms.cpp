@@ -11,9 +11,12 @@ namespace {
 
 constexpr double kMinEnergyScale = 1e-12;  // J: a world at rest in zero gravity
 
+// The text at any length (the impact-cap hint is over 256 bytes).
 std::string formatted(const char* format, double a, double b = 0.0, double c = 0.0) {
-    char text[256];
-    std::snprintf(text, sizeof text, format, a, b, c);
+    const int length = std::snprintf(nullptr, 0, format, a, b, c);
+    std::string text(std::size_t(std::max(length, 0)) + 1, '\0');
+    std::snprintf(text.data(), text.size(), format, a, b, c);
+    text.pop_back();
     return text;
 }
 

@@ -30,8 +30,7 @@ glm::dvec3 predictPlane(const glm::dvec3& v, const glm::dvec3& n, bool isStatic,
 // momentum response, the continuous method, and slide 14's global solvers (their alpha and
 // mu act on each contact's relative tangential velocity after the normal solve).
 bool relativeFriction(const physics::Params& params) {
-    return physics::frictionOnRelativeVelocity(params) || params.solver == physics::Solver::Lcp ||
-           params.solver == physics::Solver::GeneralizedReflections;
+    return physics::frictionOnRelativeVelocity(params) || physics::solvesGlobally(params.solver);
 }
 
 // Why: the name of what makes relativeFriction true.
@@ -185,7 +184,8 @@ void planeLines(const ContactExplanation& e, const physics::Params& p, int boxPl
 void pairLines(const ContactExplanation& e, const physics::Params& p, std::vector<Line>& lines) {
     const bool lecture = p.response == physics::ResponseModel::LectureAttenuation;
     add(lines, Line::Kind::Heading,
-        format("Sphere 1 = #%u and sphere 2 = #%d, %s", e.sphere, e.other, passName(e.pass, p.passes, e.solvedTogether).c_str()));
+        format("Sphere 1 = #%u and sphere 2 = #%d, %s", e.sphere, e.other,
+               passName(e.pass, p.passes, e.solvedTogether).c_str()));
     instantLine(lines, e, p);
     if (!std::isfinite(e.mass[1])) {
         add(lines, Line::Kind::Note,
@@ -313,8 +313,7 @@ ContactExplanation explainContact(const physics::ContactEvent& event, const phys
         e.normalSpeed = e.before[1].normal - e.before[0].normal;
         e.staticContact = std::abs(e.normalSpeed) <= params.epsilon;
         e.impulse = 2.0 * reducedMass(e.mass[0], e.mass[1]) * e.normalSpeed;
-        const bool global = params.solver == physics::Solver::Lcp || params.solver == physics::Solver::GeneralizedReflections;
-        e.undamped = global && e.staticContact && !(event.solvedImpulse > 0.0);
+        e.undamped = physics::solvesGlobally(params.solver) && e.staticContact && !(event.solvedImpulse > 0.0);
         predictPair(event.velocityBefore, e.mass, event.normal, e.staticContact, e.undamped, params, e.predicted);
         if (!std::isfinite(e.mass[1])) {  // the shock sweep against a frozen sphere: projected by d, also
             e.reflected = false;            // under reflection (a resting contact does not bounce)

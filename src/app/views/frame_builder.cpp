@@ -104,8 +104,7 @@ ui::Readouts makeReadouts(const Simulation& simulation, const ui::FrameTimes& ti
     r.continuous = simulation.params().method == physics::Method::Continuous;
     r.untilConverged = simulation.params().solver == physics::Solver::UntilConverged;
     r.passCap = simulation.params().passes;
-    r.globalSolve = simulation.params().solver == physics::Solver::Lcp ||
-                    simulation.params().solver == physics::Solver::GeneralizedReflections;
+    r.globalSolve = physics::solvesGlobally(simulation.params().solver);
     r.reflections = simulation.params().solver == physics::Solver::GeneralizedReflections;
     r.shock = simulation.params().shock == physics::ShockPropagation::On && physics::sweepsLevels(simulation.params().method);
     r.cappedSinceRestart = simulation.alarms().count(AlarmKind::EventCap);
