@@ -9,6 +9,10 @@ namespace render {
 
 struct RenderStyle;
 
+// Largest point sprite drawn (spheres, dots), px: below every implementation's limit.
+// Larger ones are few enough for quads.
+constexpr float kMaxPointPixels = 64.0f;
+
 struct FrameContext {
     glm::mat4 view{1.0f};
     glm::mat4 projection{1.0f};

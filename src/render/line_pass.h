@@ -1,5 +1,6 @@
 #pragma once
-// Internal to spheres_render: segments and dots as anti-aliased screen-space quads.
+// Internal to spheres_render: segments as anti-aliased screen-space quads, dots as
+// anti-aliased points.
 #include <string>
 #include <vector>
 
@@ -16,8 +17,13 @@ class LinePass {
     // depthBias: NDC depth pulled towards the eye; depthTest false draws on top of all.
     void draw(const std::vector<OverlayLine>& lines, const FrameContext& frame, bool depthTest,
               float depthBias);
+    // Dots, one point each (dot.vert), with the same blending and depth as draw().
+    void drawDots(const std::vector<OverlayPoint>& dots, const FrameContext& frame, bool depthTest,
+                  float depthBias);
 
   private:
+    std::string initDots();
+
     GlProgram program_;
     GLuint vertexArray_ = 0;
     GLuint cornerBuffer_ = 0;
@@ -26,9 +32,19 @@ class LinePass {
     GLint viewportSize_ = -1;
     GLint widthScale_ = -1;
     GLint depthBias_ = -1;
+    GlProgram dotProgram_;
+    GLuint dotVertexArray_ = 0;
+    GLuint dotBuffer_ = 0;  // OverlayPoint per instance
+    GLint dotViewProjection_ = -1;
+    GLint dotWidthScale_ = -1;
+    GLint dotDepthBias_ = -1;
 };
 
-// A dot as a zero-length round-capped segment.
+// Whether a dot may be drawn as a point: its whole disc inside the viewport (a point whose
+// centre leaves it is clipped whole) and not larger than kMaxPointPixels.
+bool fitsAsPoint(const OverlayPoint& dot, const FrameContext& frame);
+// A dot as a zero-length round-capped segment: where it does not fit as a point, and for
+// the culling of hidden marks.
 OverlayLine pointAsLine(const OverlayPoint& point);
 
 }  // namespace render

@@ -112,7 +112,8 @@ struct Renderer::Passes {
     PlanePass planes;
     SpherePass spheres;
     LinePass lines;
-    std::vector<OverlayLine> overlay;  // the last draw's overlay marks, those not hidden
+    std::vector<OverlayLine> overlay;   // the last draw's overlay lines, those not hidden
+    std::vector<OverlayPoint> dots;     // and its dots
 };
 
 Renderer::Renderer() = default;
@@ -133,7 +134,7 @@ std::string Renderer::init() {
 }
 
 std::size_t Renderer::drawnSpheres() const { return passes_ ? passes_->spheres.drawnSpheres() : 0; }
-std::size_t Renderer::drawnMarks() const { return passes_ ? passes_->overlay.size() : 0; }
+std::size_t Renderer::drawnMarks() const { return passes_ ? passes_->overlay.size() + passes_->dots.size() : 0; }
 
 void Renderer::shutdown() {
     if (!passes_) return;
@@ -251,14 +252,29 @@ void Renderer::draw(const FrameSnapshot& snapshot, const Camera& camera, int x, 
     // Depth-tested marks that no pixel can show (contacts deep in a pile) are left out,
     // as the hidden spheres are: the same image, fewer quads for a software rasteriser.
     const bool depthTested = !style.overlayOnTop, cullMarks = depthTested && cullHiddenMarks;
+    const auto shown = [&](const OverlayLine& line) {
+        return !cullMarks || !passes_->spheres.hidesMark(line, frame, kLineDepthBias);
+    };
     std::vector<OverlayLine>& overlay = passes_->overlay;
     overlay.clear();
-    const auto keep = [&](const OverlayLine& line) {
-        if (!cullMarks || !passes_->spheres.hidesMark(line, frame, kLineDepthBias)) overlay.push_back(line);
-    };
-    for (const OverlayLine& line : snapshot.lines) keep(line);
-    for (const OverlayPoint& point : snapshot.points) keep(pointAsLine(point));
+    for (const OverlayLine& line : snapshot.lines) {
+        if (shown(line)) overlay.push_back(line);
+    }
+    std::vector<OverlayPoint>& dots = passes_->dots;
+    dots.clear();
+    for (const OverlayPoint& point : snapshot.points) {
+        const OverlayLine asLine = pointAsLine(point);
+        if (!shown(asLine)) continue;
+        if (fitsAsPoint(point, frame)) {
+            dots.push_back(point);
+        } else {
+            // Drawn before the dots: a dot's outline, larger and at the same place, is
+            // never a point where the dot itself is not.
+            overlay.push_back(asLine);
+        }
+    }
     passes_->lines.draw(overlay, frame, depthTested, kLineDepthBias);
+    passes_->lines.drawDots(dots, frame, depthTested, kLineDepthBias);
 
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);

@@ -11,9 +11,6 @@ namespace render {
 namespace {
 
 constexpr float kCorners[] = {-1.0f, -1.0f, 1.0f, -1.0f, -1.0f, 1.0f, 1.0f, 1.0f};
-// Largest point sprite used, px: below every implementation's limit, and larger
-// spheres are few enough for squares.
-constexpr float kMaxPointPixels = 64.0f;
 
 static_assert(sizeof(SphereInstance) == 20, "SphereInstance must stay tightly packed");
 

@@ -479,6 +479,29 @@ TEST_P(Headless, OverlayLinesAndPointsAreDrawnWithTheirColour) {
               100);
 }
 
+// A dot is drawn as one point (dot.vert): a round disc of its diameter, anti-aliased at
+// its rim. A point whose centre leaves the viewport would be clipped whole: a dot whose
+// disc crosses the viewport's edge is drawn as a zero-length segment, its inner part shown.
+TEST_P(Headless, ADotIsARoundDiscOfItsSizeAndShowsAtTheViewportsEdgeToo) {
+    const render::Camera camera = frontCamera({0, 0, 0}, 3.0f);
+    const glm::vec2 size(160, 120);
+    const float x0 = camera.project({0, 0, 0}, size).x, perMetre = camera.project({1, 0, 0}, size).x - x0;  // px
+    const glm::u8vec4 green{0, 255, 0, 255};
+    render::FrameSnapshot snapshot;
+    snapshot.addPoint({0, 0, 0}, green, 12.0f);                           // radius 6 px, in the middle
+    snapshot.addPoint({(-2.0f - x0) / perMetre, 0, 0.3f}, green, 16.0f);  // centre 2 px left of the edge
+    const render::Image image = draw(snapshot, camera, 160, 120);
+    const vec3 centre = camera.project({0, 0, 0}, size);
+    for (const float angle : {0.0f, 0.8f, 1.6f, 2.4f, 3.9f, 5.5f}) {
+        const glm::vec2 along(std::cos(angle), std::sin(angle));
+        const auto at = [&](float pixels) { return pixelAt(image, centre + vec3(pixels * along, 0.0f)); };
+        EXPECT_LE(channelSpread(at(4.5f), green), 10) << "inside the disc, angle " << angle;
+        EXPECT_GT(channelSpread(at(8.0f), green), 100) << "outside it, angle " << angle;
+    }
+    const int edgeRow = static_cast<int>(camera.project({0, 0, 0.3f}, size).y);
+    EXPECT_LE(channelSpread(image.pixel(1, edgeRow), green), 10) << "the inner part of the dot at the edge";
+}
+
 TEST_P(Headless, DrawTouchesOnlyItsViewport) {
     render::OffscreenTarget target;
     ASSERT_EQ(target.resize(200, 100), "");
