@@ -210,6 +210,12 @@ void sceneSection(const scenes::Scene& scene, PanelState& state, const std::vect
 // Where the last frame's time went, and the last step's profile (window only).
 void frameTimings(const Readouts& r) {
     ImGui::Text("%.0f FPS   draw %.1f ms", r.timing.fps, r.timing.drawMs);
+    if (r.timing.antialiasedUpTo > 0) {
+        ImGui::TextDisabled("no anti-aliasing above %zu spheres", r.timing.antialiasedUpTo);
+        tooltip("A software GL (no graphics card) pays for each of the 4 samples per pixel: at 10 000 spheres they "
+                "doubled the time to draw. Above this many the view is drawn with one sample, and the spheres' edges "
+                "show their pixels.");
+    }
     ImGui::Text("stepping %.1f ms (%llu step%s)", r.timing.steppingMs,
                 static_cast<unsigned long long>(r.timing.stepsThisFrame), r.timing.stepsThisFrame == 1 ? "" : "s");
     tooltip("Wall time of the last frame: drawing the scene until the GL has finished it, and "

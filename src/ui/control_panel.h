@@ -3,6 +3,7 @@
 // so the UI, the CLI and the JSON agree), the run controls, the scene and the
 // readouts. It edits the scene's live parameters in place and returns the actions
 // that the app must carry out (restart, step, load a preset, ...).
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <utility>
@@ -70,6 +71,8 @@ struct FrameTimes {
     // ms from the start of drawing (snapshots, hidden spheres, draw calls) until the GL
     // has finished the scene.
     double drawMs = 0.0;
+    // Above this many spheres a view is drawn without anti-aliasing (0: every view had it).
+    std::size_t antialiasedUpTo = 0;
 };
 
 // What the app shows in the readouts; plain numbers, filled each frame.

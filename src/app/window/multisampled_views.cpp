@@ -13,6 +13,8 @@ constexpr int kContentGrid = 64;  // px: the content's target is rounded out to 
 
 }  // namespace
 
+bool antialiasedAt(std::size_t spheres) { return spheres <= kMostSpheresAntialiased; }
+
 glm::ivec4 roundOutToGrid(const glm::ivec4& rect, int width, int height, int grid) {
     if (rect.z <= 0 || rect.w <= 0) return glm::ivec4(0);
     const int x0 = rect.x / grid * grid;
@@ -25,6 +27,10 @@ glm::ivec4 roundOutToGrid(const glm::ivec4& rect, int width, int height, int gri
 void MultisampledViews::draw(render::Renderer& renderer, const render::FrameSnapshot& snapshot,
                              const render::Camera& camera, int k, const glm::ivec4& view) {
     if (view.z <= 0 || view.w <= 0) return;
+    if (!antialiasedAt(snapshot.sphereCount())) {
+        renderer.draw(snapshot, camera, view.x, view.y, view.z, view.w);
+        return;
+    }
     const glm::ivec4 content =
         straightIn_ ? glm::ivec4(0)
                     : roundOutToGrid(renderer.contentRect(snapshot, camera, view.z, view.w), view.z, view.w, kContentGrid);

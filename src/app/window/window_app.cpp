@@ -373,11 +373,13 @@ void WindowApp::drawScene(const ViewLayout& views) {
     glViewport(0, 0, size.x, size.y);
     glClearColor(ui::kBackdropColor[0], ui::kBackdropColor[1], ui::kBackdropColor[2], 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
+    timing_.antialiasedUpTo = 0;
     for (int k = 0; k < views.count; ++k) {
         const glm::ivec4& view = views.views[k];
         buildSnapshot(session_.run(k), panel_, snapshots_[k]);
         session_.appendSelection(k, camera_, snapshots_[k], explainedPartner(session_, input_.tools()));
         views_.draw(renderer_, snapshots_[k], camera_, k, view);
+        if (!antialiasedAt(snapshots_[k].sphereCount())) timing_.antialiasedUpTo = kMostSpheresAntialiased;
     }
     // A software GL draws after the calls return: time the drawing, not the calls. (On a
     // GPU this costs the overlap of one frame's GL work with the next one's CPU work.)
