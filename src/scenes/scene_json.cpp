@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <limits>
 #include <nlohmann/json.hpp>
@@ -655,13 +656,33 @@ Scene loadScene(const std::string& path) {
     return parseScene(text.str(), path);
 }
 
+namespace {
+
+// A state saved mid-run keeps its scene's text, which describes the run from its start:
+// the text says so, once however often the state is saved again.
+std::string savedDescription(const Scene& scene, const physics::World& world) {
+    if (!(world.time > 0.0)) return scene.description;
+    static const std::string kSaved = "Saved at t = ", kFromStart = " The scene's text, written for its start: ";
+    std::string original = scene.description;
+    if (original.rfind(kSaved, 0) == 0) {
+        const std::size_t k = original.find(kFromStart);
+        original = k == std::string::npos ? "" : original.substr(k + kFromStart.size());
+    }
+    char head[96];
+    std::snprintf(head, sizeof head, "%.3f s (solver step %llu).", world.time,
+                  static_cast<unsigned long long>(world.stepCount));
+    return kSaved + head + (original.empty() ? "" : kFromStart + original);
+}
+
+}  // namespace
+
 std::string sceneText(const Scene& scene, const physics::World& world) {
     checkFinite(world);
     std::ostringstream out;
     out << "{\n"
         << "  \"title\": " << dump(scene.title) << ",\n"
         << "  \"slide\": " << dump(scene.slide) << ",\n"
-        << "  \"description\": " << dump(scene.description) << ",\n"
+        << "  \"description\": " << dump(savedDescription(scene, world)) << ",\n"
         << "  \"box\": " << boxText(scene.box) << ",\n"
         << "  \"planes\": " << planesText(world.planes, std::size_t(world.boxPlaneCount)) << ",\n"
         << (scene.mirrors.empty() ? "" : "  \"mirror\": " + planesText(scene.mirrors, 0) + ",\n")

@@ -366,6 +366,72 @@ TEST(ContactExplanation, TheShockSweepsAnswerAgainstAFrozenSphereIsExplained) {
     EXPECT_TRUE(hasLine(lines, "the solver's result: the same"));
 }
 
+// Under lcp and generalized reflections two answers come after the passes (the 18th audit):
+// the solver's last answer, velocities only, moves no sphere (the window showed a d/2
+// projection); and the shock sweep answers pair by pair, slide 13's v <- mu v on the
+// sphere's own velocity (the window said lambda = 0 left it undamped, and counted mu's
+// share as the other contacts'). A stack of two on the floor, the upper one sliding.
+TEST(ContactExplanation, UnderTheGlobalSolversTheLastAnswerAndTheSweepAreExplainedAsTheyWere) {
+    for (const physics::Solver solver : {physics::Solver::Lcp, physics::Solver::GeneralizedReflections}) {
+        physics::Params params;
+        params.method = physics::Method::PositionBased;
+        params.solver = solver;
+        params.shock = physics::ShockPropagation::On;
+        params.passes = 1;
+        params.substeps = 1;
+        params.epsilon = 0.2;
+        params.mu = 0.9;
+        physics::World world;
+        world.planes.push_back({{0.0, 0.0, 0.0}, {0.0, 0.0, 1.0}});
+        world.boxPlaneCount = 1;
+        world.addSphere({0.0, 0.0, 0.1}, {0.0, 0.0, 0.0}, 0.1, 1.0);
+        world.addSphere({0.0, 0.0, 0.2995}, {0.5, 0.0, 0.0}, 0.1, 1.0);
+        world.recordContacts = true;
+        physics::step(world, params);
+        const physics::ContactEvent *last = nullptr, *sweep = nullptr;
+        for (const physics::ContactEvent& e : world.contacts) {
+            if (e.pass != params.passes || e.isPlane()) continue;
+            (e.solvedImpulse >= 0.0 ? last : sweep) = &e;
+        }
+        ASSERT_NE(last, nullptr);
+        const app::ContactExplanation answer = app::explainContact(*last, params);
+        EXPECT_EQ(answer.correction, app::PositionCorrection::VelocitiesOnly);
+        const auto answerLines = app::explanationLines(answer, params, 1);
+        EXPECT_TRUE(hasLine(answerLines, "velocities only, no position correction"));
+        EXPECT_FALSE(hasLine(answerLines, "d/2 u"));
+
+        ASSERT_NE(sweep, nullptr);
+        EXPECT_TRUE(std::isinf(sweep->massOf[1]));
+        const app::ContactExplanation e = app::explainContact(*sweep, params);
+        EXPECT_LT(e.mismatch, 1e-12);
+        EXPECT_GT(sweep->velocityBefore[0].x, 0.1);  // still sliding into the sweep
+        // Its own v <- mu v (to the approach removed along a normal the slide tilted by 0.3 mm / 0.2 m).
+        EXPECT_NEAR(sweep->velocityAfter[0].x, params.mu * sweep->velocityBefore[0].x, 1e-4);
+        const auto lines = app::explanationLines(e, params, 1);
+        EXPECT_TRUE(hasLine(lines, "then friction v \u2190 \u03bc v"));
+        EXPECT_FALSE(hasLine(lines, "\u03bb = 0"));
+        EXPECT_TRUE(hasLine(lines, "the solver's result: the same"));
+        EXPECT_TRUE(hasLine(lines, "sphere 2 is frozen and does not move"));
+    }
+}
+
+// Simultaneous: each contact's answer is shown alone, and the window says that the pass adds
+// them up (preset 16's sphere #0 ends at (0, 0, 0.5), not its one contact's answer).
+TEST(ContactExplanation, ASimultaneousAnswerIsOneContactsShareOfThePass) {
+    scenes::Scene scene = scenes::loadScene(scenes::presetPath("16_bernoulli"));
+    ASSERT_EQ(scenes::applySetting(scene, "solver=simultaneous"), "");
+    physics::World world = scenes::buildWorld(scene);
+    world.recordContacts = true;
+    physics::step(world, scene.params);
+    ASSERT_FALSE(world.contacts.empty());
+    const physics::ContactEvent& event = world.contacts.front();
+    const app::ContactExplanation e = app::explainContact(event, scene.params);
+    EXPECT_LT(e.mismatch, 1e-12);
+    const auto lines = app::explanationLines(e, scene.params, 6);
+    EXPECT_TRUE(hasLine(lines, "the solver's answer to this contact: the same"));
+    EXPECT_TRUE(hasLine(lines, "changes of all its contacts added up"));
+}
+
 // The cradle under generalized reflections, one time step of 4 solver steps: the contacts
 // a solve answered together are those of its solver step and pass only (each was listed
 // three times, with lambda 0 and 2, when the log's solver steps were mixed). The struck

@@ -385,6 +385,28 @@ physics::World reloaded(const Scene& scene, const physics::World& world, Scene* 
     return scenes::buildWorld(back);
 }
 
+// A state saved mid-run keeps its scene's text, which describes the run from the start
+// (the 18th audit: 03's "the moving one stops dead" beside two spheres long past it): the
+// text says when it was saved, once, however often it is saved again. At t = 0 it is the
+// scene's own.
+TEST(SaveLoad, AStateSavedMidRunSaysWhenItsTextStarts) {
+    const Scene scene = scenes::loadScene(scenes::presetPath("03_head_on"));
+    physics::World world = scenes::buildWorld(scene);
+    Scene atStart;
+    reloaded(scene, world, &atStart);
+    EXPECT_EQ(atStart.description, scene.description);
+    for (int s = 0; s < 91; ++s) physics::step(world, scene.params);
+    Scene saved;
+    physics::World again = reloaded(scene, world, &saved);
+    const std::string head = "Saved at t = 1.517 s (solver step 364). The scene's text, written for its start: ";
+    EXPECT_EQ(saved.description, head + scene.description);
+    physics::step(again, saved.params);
+    Scene savedTwice;
+    reloaded(saved, again, &savedTwice);
+    EXPECT_EQ(savedTwice.description,
+              "Saved at t = 1.533 s (solver step 368). The scene's text, written for its start: " + scene.description);
+}
+
 TEST(SaveLoad, RoundTripIsBitIdentical) {
     const Scene scene = scenes::loadScene(scenes::presetPath("11_pile"));
     physics::World world = scenes::buildWorld(scene);

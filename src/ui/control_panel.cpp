@@ -199,7 +199,8 @@ void sceneSection(const scenes::Scene& scene, PanelState& state, const std::vect
     ImGui::SameLine();
     if (ImGui::Button("Save state")) actions.saveState = true;
     tooltip("Saves the current positions, velocities and parameters as a new scene file in the output folder "
-            "(never over an existing file); Load reads it back.");
+            "(never over an existing file) and puts its path in the field above: Load reads it back. Its text "
+            "says when it was saved.");
     fileNotice(state, PanelState::FileButton::Scene);
     if (!state.outputFolder.empty()) {
         wrappedColored(ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled), "files go to " + state.outputFolder);

@@ -164,7 +164,8 @@ std::string escapeHint(const physics::Params& params) {
     }
     return "without projection (slide 7) a wall only turns the velocity: a sphere pushed on by gravity "
            "or by its neighbours sinks through it, a fast one is outside for a step before the wall turns it "
-           "back, and a thin wall it crosses within a step is never met; switch method to position, or lower h";
+           "back, and a thin wall it crosses within a step is never met; switch method to position (a lower h only "
+           "slows the sinking: it goes on)";
 }
 
 std::string heldInMidAirHint(const physics::Params& params) {
@@ -213,7 +214,9 @@ bool Alarms::checkStep(const physics::World& world, const physics::Params& param
     }
     const double scale = energyScale(world, params, before);
     if (energyCreated(before, after, scale, params, energySlack(world, params))) {
-        fire(AlarmKind::EnergyCreated, world.time, relativeEnergyRise(before, after, scale), energyHint(params));
+        // Shown as a share of E~ before the step, as a student computes it from the plot
+        // (the scale only decides whether it is a rise at all).
+        fire(AlarmKind::EnergyCreated, world.time, relativeEnergyRise(before, after, std::abs(before)), energyHint(params));
     }
     // Fires when more spheres are outside than ever before (most stay there).
     outsideNow_ = physics::spheresOutsideBox(world, 0.0);
@@ -273,13 +276,13 @@ std::vector<AlarmLine> Alarms::lines(double now) const {
     if (const State& s = state(AlarmKind::EnergyCreated); s.count > 0) {
         const std::string times = s.count == 1 ? "once" : std::to_string(s.count) + " times";
         lines.push_back({AlarmKind::EnergyCreated,
-                         formatted("ENERGY CREATED (α, β ≤ 1): E~ rose by up to %.2g %% in one step, ", 100.0 * s.worst) +
-                             times + formatted(", last at t = %.2f s", s.lastTime),
+                         formatted("ENERGY CREATED (α, β ≤ 1): E~ rose by up to %.2g %% of itself in one step, ", 100.0 * s.worst) +
+                             times + formatted(", last at t = %.3f s", s.lastTime),
                          s.hint, lit(AlarmKind::EnergyCreated)});
     }
     if (const State& s = state(AlarmKind::Penetration); s.count > 0) {
         lines.push_back({AlarmKind::Penetration,
-                         formatted("PENETRATION: up to %.1f %% of r (alarm above %.0f %%), last at t = %.2f s",
+                         formatted("PENETRATION: up to %.1f %% of r (alarm above %.0f %%), last at t = %.3f s",
                                    100.0 * s.worst, 100.0 * kPenetrationTolerance, s.lastTime),
                          s.hint, lit(AlarmKind::Penetration)});
     }
@@ -298,7 +301,7 @@ std::vector<AlarmLine> Alarms::lines(double now) const {
     if (const State& s = state(AlarmKind::EventCap); s.count > 0) {
         lines.push_back({AlarmKind::EventCap,
                          formatted("IMPACT CAP: %.0f steps reached %.0f impacts per sphere and were projected from there, "
-                                   "last at t = %.2f s",
+                                   "last at t = %.3f s",
                                    double(s.count), s.worst, s.lastTime),
                          s.hint, lit(AlarmKind::EventCap)});
     }

@@ -27,22 +27,23 @@ glm::dvec3 predictPlane(const glm::dvec3& v, const glm::dvec3& n, bool isStatic,
 // Slides 11-13 for two spheres, in the chosen response model.
 // Whether a static pair's mu acts on the spheres' relative tangential velocity (equal and
 // opposite impulses) rather than on each sphere's own velocity (slide 13's v <- mu v): the
-// momentum response, the continuous method, and slide 14's global solvers (their alpha and
-// mu act on each contact's relative tangential velocity after the normal solve).
-bool relativeFriction(const physics::Params& params) {
-    return physics::frictionOnRelativeVelocity(params) || physics::solvesGlobally(params.solver);
+// momentum response, the continuous method, and a contact slide 14's global solvers answered
+// (their alpha and mu act on each contact's relative tangential velocity after the normal
+// solve). The shock sweep answers its contacts pair by pair, in the chosen response.
+bool relativeFriction(const physics::Params& params, bool solvedTogether) {
+    return physics::frictionOnRelativeVelocity(params) || solvedTogether;
 }
 
 // Why: the name of what makes relativeFriction true.
-const char* relativeFrictionCause(const physics::Params& params) {
-    if (params.solver == physics::Solver::Lcp) return "lcp";
-    if (params.solver == physics::Solver::GeneralizedReflections) return "generalized reflections";
+const char* relativeFrictionCause(const physics::Params& params, bool solvedTogether) {
+    if (solvedTogether && params.solver == physics::Solver::Lcp) return "lcp";
+    if (solvedTogether && params.solver == physics::Solver::GeneralizedReflections) return "generalized reflections";
     if (params.response == physics::ResponseModel::MomentumConserving) return "the momentum-conserving response";
     return "the continuous method";
 }
 
 void predictPair(const glm::dvec3 v[2], const double m[2], const glm::dvec3& u, bool isStatic, bool undamped,
-                 const physics::Params& params, glm::dvec3 out[2]) {
+                 bool relative, const physics::Params& params, glm::dvec3 out[2]) {
     const double mass = reducedMass(m[0], m[1]);
     const double s = glm::dot(v[1] - v[0], u);  // m/s, approaching when > 0
     const bool lecture = params.response == physics::ResponseModel::LectureAttenuation;
@@ -51,12 +52,12 @@ void predictPair(const glm::dvec3 v[2], const double m[2], const glm::dvec3& u, 
         out[0] = v[0] + (jc / m[0]) * u;
         out[1] = v[1] - (jc / m[1]) * u;
         if (undamped) return;
-        if (!relativeFriction(params)) {
+        if (!relative) {
             out[0] *= params.mu;
             if (std::isfinite(m[1])) out[1] *= params.mu;  // a frozen sphere keeps its velocity
         } else {
-            const glm::dvec3 relative = out[1] - out[0];
-            const glm::dvec3 impulse = (1.0 - params.mu) * mass * (relative - glm::dot(relative, u) * u);
+            const glm::dvec3 slip = out[1] - out[0];  // m/s
+            const glm::dvec3 impulse = (1.0 - params.mu) * mass * (slip - glm::dot(slip, u) * u);
             out[0] += impulse / m[0];
             out[1] -= impulse / m[1];
         }
@@ -102,7 +103,11 @@ std::string splitText(const char* name, const VelocitySplit& s, const char* n) {
 }
 
 // Why a method moves no sphere after the response.
-const char* noCorrectionNote(const physics::Params& p) {
+const char* noCorrectionNote(const ContactExplanation& e, const physics::Params& p) {
+    if (e.correction == PositionCorrection::VelocitiesOnly) {
+        return "after the last pass: velocities only, no position correction (the last pass's projection came "
+               "before this answer)";
+    }
     switch (p.method) {
         case physics::Method::VelocityBased: return "velocity based: no projection; stage C cancels what still approaches";
         case physics::Method::Continuous: return "continuous: answered at the instant of contact, nothing to correct";
@@ -120,21 +125,28 @@ void instantLine(std::vector<Line>& lines, const ContactExplanation& e, const ph
 }
 
 void matchLine(std::vector<Line>& lines, const ContactExplanation& e, const physics::Params& p) {
-    if (p.solver == physics::Solver::Lcp) {
+    if (e.solvedTogether && p.solver == physics::Solver::Lcp) {
         add(lines, Line::Kind::Note,
             format("lcp (slide 14): solved together with every touching contact; the velocities after hold the "
                    "others' shares too (%.3g m/s from the formula for this contact alone)", e.mismatch));
         return;
     }
-    if (p.solver == physics::Solver::GeneralizedReflections) {
+    if (e.solvedTogether && p.solver == physics::Solver::GeneralizedReflections) {
         add(lines, Line::Kind::Note,
             format("generalized reflections (slide 14, Smith et al. 2012): solved together with the other approaching "
                    "contacts, round after round; the velocities after hold their shares too (%.3g m/s from the "
                    "formula for this contact alone)", e.mismatch));
         return;
     }
+    const bool simultaneous = p.solver == physics::Solver::Simultaneous && e.pass < p.passes;
     if (e.mismatch <= 1e-9 * std::max(1.0, glm::length(e.velocityBefore[0]) + glm::length(e.velocityBefore[1]))) {
-        add(lines, Line::Kind::Result, "the solver's result: the same");
+        add(lines, Line::Kind::Result, simultaneous ? "the solver's answer to this contact: the same" : "the solver's result: the same");
+        if (simultaneous) {
+            add(lines, Line::Kind::Note,
+                "simultaneous (slide 14): every contact of the pass is answered from the velocities at its start, and "
+                "each sphere ends the pass with the changes of all its contacts added up: with two contacts or more, "
+                "not the 'after' above (the inspector shows the sum)");
+        }
     } else {
         add(lines, Line::Kind::Note,
             format("the solver's result differs by %.3g m/s: a parameter changed since this step", e.mismatch));
@@ -177,7 +189,7 @@ void planeLines(const ContactExplanation& e, const physics::Params& p, int boxPl
     } else if (e.correction == PositionCorrection::Projection) {
         add(lines, Line::Kind::Formula, format("slide 8: p ← p + d n: the sphere moves %.4g m along n", e.shift[0]));
     } else {
-        add(lines, Line::Kind::Note, noCorrectionNote(p));
+        add(lines, Line::Kind::Note, noCorrectionNote(e, p));
     }
 }
 
@@ -219,7 +231,7 @@ void pairLines(const ContactExplanation& e, const physics::Params& p, std::vecto
     add(lines, Line::Kind::Formula, "before:  " + splitText("v₁", e.before[0], "u"));
     add(lines, Line::Kind::Formula, "         " + splitText("v₂", e.before[1], "u"));
     if (e.staticContact) {
-        if (relativeFriction(p)) {
+        if (relativeFriction(p, e.solvedTogether)) {
             add(lines, Line::Kind::Heading,
                 format("Slide 13, 2-b: no bounce, then μ damps the relative tangential velocity, μ = %.3g", p.mu));
         } else {
@@ -230,10 +242,10 @@ void pairLines(const ContactExplanation& e, const physics::Params& p, std::vecto
                    e.normalSpeed > 0.0 ? 0.5 * e.impulse : 0.0));
         if (e.undamped) {
             add(lines, Line::Kind::Note,
-                std::string(relativeFrictionCause(p)) + ": it did not push (λ = 0), so μ does not act on it");
-        } else if (relativeFriction(p)) {
+                std::string(relativeFrictionCause(p, true)) + ": it did not push (λ = 0), so μ does not act on it");
+        } else if (relativeFriction(p, e.solvedTogether)) {
             add(lines, Line::Kind::Note,
-                std::string(relativeFrictionCause(p)) +
+                std::string(relativeFrictionCause(p, e.solvedTogether)) +
                     ": equal and opposite impulses scale (v₂ − v₁)∥ by μ, so momentum is kept (slide 13's v ← μ v "
                     "would scale each sphere's own velocity)");
         }
@@ -267,7 +279,7 @@ void pairLines(const ContactExplanation& e, const physics::Params& p, std::vecto
             format("p₁ ← p₁ + d m₂/(m₁ + m₂) u,  p₂ ← p₂ − d m₁/(m₁ + m₂) u: sphere 1 moves %.4g m along u, "
                    "sphere 2 %.4g m along −u", e.shift[0], e.shift[1]));
     } else {
-        add(lines, Line::Kind::Note, noCorrectionNote(p));
+        add(lines, Line::Kind::Note, noCorrectionNote(e, p));
     }
 }
 
@@ -293,8 +305,9 @@ ContactExplanation explainContact(const physics::ContactEvent& event, const phys
     e.recordedBounce = event.bounce;
     e.solvedTogether = event.solvedImpulse >= 0.0;
     e.timeOfImpact = event.timeOfImpact;
-    e.reflected = params.method == physics::Method::Reflection;
-    const bool corrects = params.method == physics::Method::PositionBased || e.reflected;
+    const bool velocitiesOnly = e.solvedTogether && event.pass >= params.passes;
+    e.reflected = params.method == physics::Method::Reflection && !velocitiesOnly;
+    const bool corrects = (params.method == physics::Method::PositionBased || e.reflected) && !velocitiesOnly;
     const double moved = e.reflected ? (1.0 + params.beta) * event.depth : event.depth;  // m
     for (int k = 0; k < 2; ++k) {
         e.mass[k] = event.massOf[k];
@@ -309,17 +322,21 @@ ContactExplanation explainContact(const physics::ContactEvent& event, const phys
         e.predicted[0] = predictPlane(event.velocityBefore[0], event.normal, e.staticContact, params);
         e.correction = corrects ? PositionCorrection::Projection : PositionCorrection::None;
         e.shift[0] = corrects ? moved : 0.0;
+        if (velocitiesOnly) e.correction = PositionCorrection::VelocitiesOnly;
     } else {
         e.normalSpeed = e.before[1].normal - e.before[0].normal;
         e.staticContact = std::abs(e.normalSpeed) <= params.epsilon;
         e.impulse = 2.0 * reducedMass(e.mass[0], e.mass[1]) * e.normalSpeed;
-        e.undamped = physics::solvesGlobally(params.solver) && e.staticContact && !(event.solvedImpulse > 0.0);
-        predictPair(event.velocityBefore, e.mass, event.normal, e.staticContact, e.undamped, params, e.predicted);
+        e.undamped = e.solvedTogether && e.staticContact && !(event.solvedImpulse > 0.0);
+        predictPair(event.velocityBefore, e.mass, event.normal, e.staticContact, e.undamped,
+                    relativeFriction(params, e.solvedTogether), params, e.predicted);
         if (!std::isfinite(e.mass[1])) {  // the shock sweep against a frozen sphere: projected by d, also
             e.reflected = false;            // under reflection (a resting contact does not bounce)
             e.predicted[1] = event.velocityBefore[1];
             e.correction = corrects ? PositionCorrection::OffFrozen : PositionCorrection::None;
             e.shift[0] = corrects ? event.depth : 0.0;
+        } else if (velocitiesOnly) {
+            e.correction = PositionCorrection::VelocitiesOnly;
         } else if (!corrects) {
             e.correction = PositionCorrection::None;
         } else if (params.split == physics::PositionSplit::HalfHalf) {

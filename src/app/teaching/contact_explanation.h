@@ -30,6 +30,7 @@ enum class PositionCorrection {
     HalfHalf,      // two spheres: p1 <- p1 + d/2 u, p2 <- p2 - d/2 u (slide 13)
     MassWeighted,  // two spheres: the lighter one moves more
     OffFrozen,     // the shock sweep: sphere 1 moves d off the frozen sphere 2 (slide 14)
+    VelocitiesOnly,  // a global solver's answer after the last pass: the last projection came before
     None,          // velocity based, response only or continuous: no projection
 };
 

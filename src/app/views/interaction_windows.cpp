@@ -256,8 +256,10 @@ void drawExplainer(const Placement& placement, const ExplainerInput& input, Tool
     if (ImGui::ArrowButton("##next", ImGuiDir_Right)) state.explainIndex = (state.explainIndex + 1) % count;
     ImGui::SameLine();
     const physics::ContactEvent& event = events[static_cast<std::size_t>(state.explainIndex)];
-    ImGui::Text("%d of %d: %s", state.explainIndex + 1, count,
-                contactTitle(event, input.selected, input.boxPlaneCount, input.params->passes).c_str());
+    // Wrapped: "100 of 100: vs #834, after the last pass, velocities only, static" is
+    // wider than the window at 1280 px.
+    ui::textWrappedAtSpaces(std::to_string(state.explainIndex + 1) + " of " + std::to_string(count) + ": " +
+                            contactTitle(event, input.selected, input.boxPlaneCount, input.params->passes));
     if (!event.isPlane()) {  // which ring is which sphere
         const int partner = static_cast<int>(event.i) == input.selected ? event.other : static_cast<int>(event.i);
         ImGui::TextColored(kRingNoteColor, "ringed: #%d yellow, #%d magenta", input.selected, partner);
@@ -266,13 +268,17 @@ void drawExplainer(const Placement& placement, const ExplainerInput& input, Tool
     // The log holds a whole time step h: its `substeps` solver steps end at eventSteps.
     const unsigned long long last = input.eventSteps;
     const unsigned long long first = last + 1 - std::min<unsigned long long>(last, std::max(1, input.params->substeps));
+    char when[160];
     if (age > 0.0) {
-        ImGui::TextDisabled("in the time step to t = %.4f s (solver steps %llu-%llu), %.3g s ago", input.eventTime,
-                            first, last, age);
+        std::snprintf(when, sizeof when, "in the time step to t = %.4f s (solver steps %llu-%llu), %.3g s ago",
+                      input.eventTime, first, last, age);
     } else {
-        ImGui::TextDisabled("in the last time step, to t = %.4f s (solver steps %llu-%llu)", input.eventTime, first,
-                            last);
+        std::snprintf(when, sizeof when, "in the last time step, to t = %.4f s (solver steps %llu-%llu)", input.eventTime,
+                      first, last);
     }
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ui::textWrappedAtSpaces(when);
+    ImGui::PopStyleColor();
     ImGui::Separator();
     const ContactExplanation explanation = explainContact(event, *input.params);
     std::vector<ExplanationLine> lines = explanationLines(explanation, *input.params, input.boxPlaneCount);

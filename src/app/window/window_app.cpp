@@ -342,10 +342,11 @@ void WindowApp::apply(const ui::PanelActions& a) {
     if (a.preset >= 0) loadPreset(a.preset);
     if (!a.loadPath.empty()) loadFile(a.loadPath);
     if (a.saveState) {
-        writeOutput(ui::PanelState::FileButton::Scene, "state", "json", [&](const std::string& path) {
+        const std::string saved = writeOutput(ui::PanelState::FileButton::Scene, "state", "json", [&](const std::string& path) {
             scenes::saveScene(path, simulation_.scene(), simulation_.world());
             return true;
         });
+        if (!saved.empty()) panel_.scenePath = saved;  // Load reads it back
     }
     if (a.exportCsv) {
         writeOutput(ui::PanelState::FileButton::Plots, "plots", "csv",
