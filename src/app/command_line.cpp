@@ -65,7 +65,7 @@ void addCapture(CLI::App& cli, CaptureOptions& o) {
         ->capture_default_str();
     cap->add_flag("--present", o.present, "With --with-ui: the presentation layout (as F5 in the window)");
     cap->add_option("--compare", o.compare,
-                    "Side by side: a second view with these overrides, name=value[,name=value] (e.g. method=velocity)");
+                    "Side by side: more views with these overrides, name=value[,name=value] (e.g. method=velocity; several values of one name make a view each, at most 4 views)");
     cap->add_option("--overlay", o.overlay,
                     "Overlays, comma-separated: velocity, contacts, impulses, penetration, trails, graph (or all)");
     cap->add_option("--gl", o.gl, "Headless GL: osmesa, egl or auto (OSMesa first, then EGL)")->capture_default_str();
@@ -81,7 +81,7 @@ void addWindowOptions(CLI::App& cli, WindowAppOptions& o) {
     cli.add_option("--width", o.width, "Window width (screen coordinates)")->check(CLI::Range(320, 8192));
     cli.add_option("--height", o.height, "Window height (screen coordinates)")->check(CLI::Range(240, 8192));
     cli.add_option("--compare", o.compare,
-                   "Side by side: a second view with these overrides, name=value[,name=value] (e.g. method=velocity)");
+                   "Side by side: more views with these overrides, name=value[,name=value] (e.g. method=velocity; several values of one name make a view each, at most 4 views)");
     cli.add_option("--select", o.select, "Start with this sphere selected (the inspector open)")
         ->check(wholeNumberFrom(0));
     cli.add_flag("--explain", o.explain, "With --select: open \"explain this contact\"");

@@ -368,7 +368,15 @@ std::string parseValue(const Parameter& p, std::string_view text, double& value)
                "' is not a choice; choices: " + detail::joinNames(p.choices);
     }
     if (!parseNumber(text, value) || !std::isfinite(value)) {
-        return "value '" + std::string(text) + "' for " + std::string(p.name) + " is not a number";
+        // A decimal the whole text spells, too large or too small for a double (1e400):
+        // strtod reads it, out of range.
+        const std::string copy(text);
+        char* end = nullptr;
+        errno = 0;
+        std::strtod(copy.c_str(), &end);
+        const bool outOfRange = !copy.empty() && end == copy.c_str() + copy.size() && errno == ERANGE;
+        return "value '" + copy + "' for " + std::string(p.name) +
+               (outOfRange ? " is beyond what a number can hold (about 1e-308 to 1e308)" : " is not a number");
     }
     return {};
 }

@@ -105,3 +105,22 @@ TEST(ImpactReport, ElasticNeedsMuOneAndPositivityAllowsRounding) {
     approaching.add(left);
     EXPECT_EQ(verdictOf(approaching, slope, "positivity"), Verdict::Broken);
 }
+
+// The contacts' properties are measured around a step's K passes; the continuous method
+// meets its impacts one at a time within the step, and says so instead of a dash alone
+// (15's view B showed "- momentum - energy" beside a text about its kept energy). The
+// symmetry is the state's, measured under every method.
+TEST(ImpactReport, TheContinuousMethodSaysItsContactsAreNotMeasured) {
+    physics::Params continuous = elastic();
+    continuous.method = physics::Method::Continuous;
+    app::ImpactRecord record;
+    record.add(step(1.0, 1.0));
+    for (const app::PropertyVerdict& v : app::judgeProperties(record, {{0.0, 0.0}}, continuous)) {
+        if (v.name == "symmetry") {
+            EXPECT_EQ(v.verdict, Verdict::Kept);
+            continue;
+        }
+        EXPECT_EQ(v.verdict, Verdict::Untested) << v.name;
+        EXPECT_EQ(v.value, "not measured under the continuous method") << v.name;
+    }
+}

@@ -55,6 +55,30 @@ TEST(SideBySide, ARealOverrideMakesThemDifferAndTheyStepTogether) {
     EXPECT_NE(velocity.back().first, velocity.back().second);
 }
 
+// The views show the same instant, whatever their steps cost: in the window (a wall budget
+// a frame) the continuous gas of 15 fell 5 s behind the first view in 20 s (19th audit).
+// A view of another h steps to the first view's time, to half of its own step; so does O.
+TEST(SideBySide, ACostlierViewAndAViewOfAnotherStepKeepTheFirstViewsTime) {
+    for (const char* other : {"method=continuous", "h=0.004"}) {
+        const double h = std::string(other) == "h=0.004" ? 0.004 : kFrame;  // s, the second view's step
+        app::Simulation simulation(preset("15_fast_gas"));
+        simulation.wallBudget = 0.004;  // s a frame: the first view runs in slow motion
+        app::Session session(simulation);
+        ASSERT_EQ(session.startComparison({other}), "");
+        ASSERT_EQ(session.runCount(), 2);
+        for (int frame = 0; frame < 20; ++frame) {
+            session.advance(kFrame);
+            EXPECT_NEAR(session.run(1).world().time, session.run(0).world().time, 0.5 * h + 1e-12) << other << frame;
+        }
+        EXPECT_GT(session.run(0).world().time, 0.0);
+        session.run(0).paused = true;
+        const double before = session.run(0).world().time;
+        session.singleStep();
+        EXPECT_NEAR(session.run(0).world().time, before + kFrame, 1e-12);
+        EXPECT_NEAR(session.run(1).world().time, session.run(0).world().time, 0.5 * h + 1e-12) << other;
+    }
+}
+
 TEST(SideBySide, TheSecondRunIsTheSimulateCommandsRunWithTheOverride) {
     app::Simulation simulation(preset("pile", {"count=300"}));
     app::Session session(simulation);

@@ -164,6 +164,7 @@ TEST(ApplySetting, RefusesValuesThatAreNotNumbersOrChoices) {
     EXPECT_EQ(applySetting(scene, "alpha=0.5x"), "value '0.5x' for alpha is not a number");
     EXPECT_EQ(applySetting(scene, "alpha="), "value '' for alpha is not a number");
     EXPECT_EQ(applySetting(scene, "alpha=nan"), "value 'nan' for alpha is not a number");
+    EXPECT_EQ(applySetting(scene, "h=1e400"), "value '1e400' for h is beyond what a number can hold (about 1e-308 to 1e308)");
     EXPECT_EQ(applySetting(scene, "gravity=inf"), "value 'inf' for gravity is not a number");
     EXPECT_EQ(applySetting(scene, "method=fast"),
               "method = 'fast' is not a choice; choices: position, velocity, response-only, reflection, continuous");

@@ -416,7 +416,7 @@ void measuredClaims(const Readouts& r) {
     if (r.claimsInterrupted) {
         std::snprintf(header, sizeof header, "The text, measured: stopped (changed by hand)###claims");
     } else {
-        std::snprintf(header, sizeof header, "The text, measured: %d \u2713  %d \u2717  of %zu###claims", held,
+        std::snprintf(header, sizeof header, "The text, measured: %d \u2713 %d \u2717 of %zu###claims", held,
                       int(r.claims.size()) - held, r.claimsWatched);
     }
     const bool open = ImGui::CollapsingHeader(header);
@@ -463,7 +463,9 @@ PanelActions drawControlPanel(const scenes::Scene& scene, double& timeScale, con
         ImGui::SetScrollY(0.0f);
         state.scrollToTop = false;
     }
-    ImGui::PushItemWidth(ImGui::GetFontSize() * 9.5f);
+    // Room for the widest label beside each control ("multiple collisions"), also in the
+    // presentation layout's large type on a 1024 px screen.
+    ImGui::PushItemWidth(std::min(ImGui::GetFontSize() * 9.5f, 0.45f * ImGui::GetContentRegionAvail().x));
     sceneText(scene);
     measuredClaims(readouts);
     ImGui::Separator();

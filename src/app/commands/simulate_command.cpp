@@ -63,7 +63,7 @@ int runSimulate(const SimulateOptions& options) {
                 world.size(), seconds, options.steps > 0 ? 1e9 * seconds / sphereSteps : 0.0,
                 summarize(physics::measure(world, params)).c_str(),
                 physics::spheresOutsideBox(world, 0.0));
-    if (impacts.total.contacts > 0) {  // slide 14: what the contacts kept
+    if (impacts.total.contacts > 0 || params.method == physics::Method::Continuous) {  // slide 14: what the contacts kept
         std::vector<physics::MirrorAsymmetry> mirrors;
         for (const physics::Plane& m : scene.mirrors) mirrors.push_back(physics::mirrorAsymmetry(world, m));
         std::printf("properties: %s\n", propertiesLine(judgeProperties(impacts, mirrors, params)).c_str());

@@ -92,23 +92,25 @@ int Session::advance(double realSeconds) {
     const double piece = slice ? 0.5 * primary_.params().timeStep / scale : realSeconds;  // s
     int steps = 0, otherSteps = 0;
     const auto start = std::chrono::steady_clock::now();
+    // The views share the frame's budget: the first steps within its share, and the others
+    // then step to its time, so that all show the same instant (a costlier view slows the
+    // frame, it never falls behind: the continuous gas of 15 lagged 5 s in 20).
+    const double budget = primary_.wallBudget;  // s
+    primary_.wallBudget = budget / runCount();
     // Until a step has run the budget does not stop it: a frame whose drawing alone spends
     // the budget still steps once (else a heavy scene would stand still).
     auto withinBudget = [&] {
-        return steps == 0 ||
-               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() <= primary_.wallBudget;
+        return steps == 0 || std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() <= budget;
     };
     for (double left = realSeconds; left > 0.0 && steps < Simulation::kMaxStepsPerFrame && withinBudget();) {
         const double seconds = std::min(piece, left);
         left = slice ? left - seconds : 0.0;
         const int ran = primary_.advance(seconds);
-        for (int k = 1; k < runCount(); ++k) {
-            run(k).wallBudget = primary_.wallBudget;
-            otherSteps += run(k).advance(seconds);
-        }
+        for (int k = 1; k < runCount(); ++k) otherSteps += run(k).catchUpTo(primary_.world().time);
         steps += ran;
         if (ran > 0) noteContacts();
     }
+    primary_.wallBudget = budget;
     if (steps > 0 || otherSteps > 0) {
         std::fill(stale_.begin(), stale_.end(), 0);
         keep();
@@ -118,7 +120,8 @@ int Session::advance(double realSeconds) {
 
 void Session::singleStep() {
     prepareToStep();
-    for (int k = 0; k < runCount(); ++k) run(k).singleStep();
+    primary_.singleStep();
+    for (int k = 1; k < runCount(); ++k) run(k).catchUpTo(primary_.world().time);
     std::fill(stale_.begin(), stale_.end(), 0);
     noteContacts();
     keep();

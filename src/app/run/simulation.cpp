@@ -111,6 +111,20 @@ int Simulation::advance(double realSeconds) {
     return steps;
 }
 
+int Simulation::catchUpTo(double time) {
+    const double h = scene_.params.timeStep;
+    int steps = 0;
+    while (world_.time + 0.5 * h <= time && steps < kMostCatchUpSteps) {
+        if (!beforeStep() || !guardedStep()) break;
+        afterStep();
+        ++steps;
+    }
+    accumulator_ = 0.0;
+    behind_ = false;
+    if (steps > 0) measureNow();
+    return steps;
+}
+
 void Simulation::singleStep() {
     if (beforeStep() && guardedStep()) afterStep();
     measureNow();

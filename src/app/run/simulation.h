@@ -35,6 +35,12 @@ public:
     // dropped (the "spiral of death" guard) and behindRealTime() says so.
     // Returns the number of steps run. Does nothing while paused.
     int advance(double realSeconds);
+    // Steps of h, with no wall budget, while a step ends no later than `time` (s) plus half
+    // of one: a side-by-side view keeps up with the first, however much more its steps
+    // cost; paused or not (the first view decides). At most kMostCatchUpSteps per call, and
+    // none once a value is not finite (its alarm). Returns the steps run.
+    int catchUpTo(double time);
+    static constexpr int kMostCatchUpSteps = 4096;
     void singleStep();  // one step of h, paused or not
 
     const scenes::Scene& scene() const { return scene_; }

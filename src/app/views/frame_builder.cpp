@@ -67,7 +67,8 @@ std::string restitutionNote(const Simulation& simulation) {
     const physics::World& world = simulation.world();
     if (floorPlane(world, simulation.params()) < 0) return "(no floor under gravity)";
     if (measuredSpheres(world, simulation.selectedSphere()).empty()) {
-        return "(measured up to " + std::to_string(kMaxMeasuredSpheres) + " spheres)";
+        // More spheres than the meter follows: the value beside is the β² set, not a measure.
+        return "(not measured above " + std::to_string(kMaxMeasuredSpheres) + " spheres: select one to measure it)";
     }
     if (!world.recordContacts) return "(not measured above " + std::to_string(kMaxRecordSpheres) + " spheres)";
     if (simulation.restitution().tooSlowCount() > 0) {

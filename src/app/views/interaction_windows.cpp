@@ -134,9 +134,10 @@ void drawTimelineBar(const glm::vec4& scene, const TimelineInfo& timeline, bool 
     ImGui::SameLine();
     bool compare = compareOn;
     if (ImGui::Checkbox("Side by side (V)", &compare)) actions.toggleCompare = true;
-    tooltip("Two views of the same initial state, stepping together: left the panel's parameters, right the same "
-            "with the name=value overrides given here (e.g. method=velocity, or order=reversed,passes=1). "
-            "Turning it on restarts both.");
+    tooltip("Views of the same initial state, stepping together (each shows the same instant; a costlier view "
+            "slows them all): A the panel's parameters, the others the same with the name=value overrides given "
+            "here (e.g. method=velocity; method=reflection,continuous makes a view per value; four views at most). "
+            "Turning it on restarts them all.");
     ImGui::SameLine();
     ImGui::SetNextItemWidth(std::max(ImGui::GetContentRegionAvail().x, ImGui::GetFontSize() * 6.0f));
     if (ImGui::InputTextWithHint("##compare", "name=value,...", &state.compareText,
