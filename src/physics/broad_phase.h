@@ -29,8 +29,9 @@ std::uint64_t findPairsGrid(const World& world, double margin, Workspace& worksp
 // any sphere, within `margin` of touching now, each once, sorted by i then j; returns the
 // distance tests made. The other spheres are looked up in the last grid build's cells
 // around each mover: each must be within (the build's reach - margin) of where the build
-// saw it, so that one cell around is far enough. Movers are tested with each other.
-std::uint64_t findMoverPairs(const World& world, double margin, Workspace& ws);
+// saw it, so that one cell around is far enough. Movers are tested with each other. The
+// same pairs on any number of threads.
+std::uint64_t findMoverPairs(const World& world, double margin, Workspace& ws, int threads = 1);
 
 double maxRadius(const World& world);  // m, 0 for an empty world
 

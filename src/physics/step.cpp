@@ -114,7 +114,7 @@ void keepPairsWithinReach(World& world, double margin, int threads, std::vector<
     out.clear();
     for (const TaskScratch& task : ws.tasks) out.insert(out.end(), task.pairs.begin(), task.pairs.end());
     if (!anyMover) return;
-    stats.pairTests += findMoverPairs(world, margin, ws);
+    stats.pairTests += findMoverPairs(world, margin, ws, threads);
     const std::size_t kept = out.size();
     out.insert(out.end(), ws.moverPairs.begin(), ws.moverPairs.end());
     std::inplace_merge(out.begin(), out.begin() + std::ptrdiff_t(kept), out.end(), inIndexOrder);

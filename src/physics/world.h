@@ -214,6 +214,7 @@ struct Workspace {
     GridShape gridAtBuild;
     std::vector<std::uint32_t> cellOfSphere;
     std::vector<std::uint32_t> cellStart;   // counting-sort offsets, one per cell + 1
+    std::vector<std::uint32_t> cellCounts;  // scratch of that sort: per thread, per cell
     std::vector<std::uint32_t> sphereByCell;  // then a few slots of padding
     std::vector<glm::dvec4> cellOrdered;      // centre (m) and radius (m), in sphereByCell order
     std::vector<std::uint32_t> pairStart;   // counting-sort offsets, one per sphere + 1
