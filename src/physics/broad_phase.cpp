@@ -254,10 +254,16 @@ void sortByFirstSphere(std::size_t n, const std::vector<TaskScratch>& parts, Wor
     ws.pairs.resize(total);
     countingSort(n, groups, pairsOf, ws.pairStart, ws.pairCounts,
                  [&](const SpherePair& pair, std::uint32_t slot) { ws.pairs[slot] = pair; });
+    // Each thread takes the spheres of an equal share of the pairs (a landing pile's first
+    // numbers, landed, hold most of them).
     const std::vector<std::uint32_t>& start = ws.pairStart;
+    const auto firstSphereOfShare = [&](int t) {
+        const Range share = rangeOf(total, t, threads);
+        return std::uint32_t(std::lower_bound(start.begin(), start.end() - 1, share.begin) - start.begin());
+    };
     runTasks(threads, threads, [&](int t) {
-        const Range range = rangeOf(n, t, threads);
-        for (std::uint32_t i = range.begin; i < range.end; ++i) {
+        const std::uint32_t end = t + 1 == threads ? std::uint32_t(n) : firstSphereOfShare(t + 1);
+        for (std::uint32_t i = firstSphereOfShare(t); i < end; ++i) {
             sortBySecondSphere(ws.pairs.data() + start[i], ws.pairs.data() + start[i + 1]);
         }
     });
