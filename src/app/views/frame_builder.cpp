@@ -67,8 +67,9 @@ std::string restitutionNote(const Simulation& simulation) {
     const physics::World& world = simulation.world();
     if (floorPlane(world, simulation.params()) < 0) return "(no floor under gravity)";
     if (measuredSpheres(world, simulation.selectedSphere()).empty()) {
-        // More spheres than the meter follows: the value beside is the β² set, not a measure.
-        return "(not measured over " + std::to_string(kMaxMeasuredSpheres) + " spheres: select one)";
+        // More spheres than the meter follows (the tooltip: or the selected sphere): the value
+        // beside is the β² set, not a measure.
+        return "(not measured over " + std::to_string(kMaxMeasuredSpheres) + " spheres)";
     }
     if (!world.recordContacts) return "(not measured above " + std::to_string(kMaxRecordSpheres) + " spheres)";
     if (simulation.restitution().tooSlowCount() > 0) {
