@@ -1,6 +1,7 @@
 #include "scenes/overrides.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <string_view>
 
 #include "scenes/parameters.h"
@@ -41,7 +42,19 @@ std::string checkOverrides(const Scene& scene, const std::vector<std::string>& o
     return "";
 }
 
-std::string overrideLabel(const Scene& scene, const std::vector<std::string>& overrides) {
+namespace {
+
+std::string shownValue(const Parameter& parameter, const Scene& scene, bool exact) {
+    std::string value = formatValue(parameter, scene);
+    if (exact || parameter.kind == ParameterKind::Choice || value.size() <= 9) return value;
+    char shorter[32];
+    std::snprintf(shorter, sizeof shorter, "%.6g", parameter.get(scene));
+    return shorter;
+}
+
+}  // namespace
+
+std::string overrideLabel(const Scene& scene, const std::vector<std::string>& overrides, bool exact) {
     std::string label;
     std::vector<std::string> seen;
     for (const std::string& setting : overrides) {
@@ -50,7 +63,7 @@ std::string overrideLabel(const Scene& scene, const std::vector<std::string>& ov
         if (!parameter || std::find(seen.begin(), seen.end(), name) != seen.end()) continue;
         seen.push_back(name);
         if (!label.empty()) label += ", ";
-        label += name + " = " + formatValue(*parameter, scene);
+        label += name + " = " + shownValue(*parameter, scene, exact);
     }
     return label;
 }
@@ -106,7 +119,7 @@ std::string overrideVariants(const Scene& scene, const std::vector<std::string>&
     for (const std::vector<std::string>& variant : all) {
         Scene copy = scene;
         for (const std::string& setting : variant) applySetting(copy, setting);
-        if (overrideLabel(copy, variant) != overrideLabel(scene, variant)) differing.push_back(variant);
+        if (overrideLabel(copy, variant, true) != overrideLabel(scene, variant, true)) differing.push_back(variant);
     }
     if (!differing.empty()) all = std::move(differing);
     if (int(all.size()) > kMostViews - 1) {

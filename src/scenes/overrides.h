@@ -37,8 +37,10 @@ inline std::string checkCompare(const Scene& scene, const std::vector<std::strin
 std::string checkOverrides(const Scene& scene, const std::vector<std::string>& overrides);
 
 // What a view shows about its parameters: "method = velocity, order = reversed",
-// the overridden names with their values in `scene`.
-std::string overrideLabel(const Scene& scene, const std::vector<std::string>& overrides);
+// the overridden names with their values in `scene`; `exact` numbers to the last digit
+// (for comparing two scenes), else to 6 significant digits (h = 0.0166667, not
+// 0.016666666666666666).
+std::string overrideLabel(const Scene& scene, const std::vector<std::string>& overrides, bool exact = false);
 
 // The name of a "name=value" setting, trimmed.
 std::string settingName(std::string_view setting);

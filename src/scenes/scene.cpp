@@ -301,10 +301,26 @@ std::size_t builtSphereCount(const Scene& scene) {
     return count;
 }
 
-std::string withCount(std::string text, const Scene& scene) {
-    const std::string count = std::to_string(builtSphereCount(scene));
+namespace {
+
+std::string replaceCount(std::string text, std::size_t spheres) {
+    const std::string count = std::to_string(spheres);
     for (std::size_t at = text.find("{count}"); at != std::string::npos; at = text.find("{count}", at + count.size())) {
         text.replace(at, 7, count);
+    }
+    return text;
+}
+
+}  // namespace
+
+std::string withCount(std::string text, const Scene& scene) { return replaceCount(std::move(text), builtSphereCount(scene)); }
+
+std::string describedText(const Scene& scene) {
+    const std::size_t now = builtSphereCount(scene);
+    std::string text = replaceCount(scene.description, now);
+    if (scene.textCount != 0 && now != scene.textCount && !text.empty()) {
+        text += " (The figures in this text were measured with " + std::to_string(scene.textCount) +
+                " spheres; this run has " + std::to_string(now) + ".)";
     }
     return text;
 }

@@ -636,6 +636,7 @@ Scene parseScene(std::string_view text, const std::string& filename) {
     Scene scene;
     try {
         scene = reader.read(root);
+        scene.textCount = builtSphereCount(scene);
         buildWorld(scene);  // overlaps, spheres outside the box, regions that cannot hold count
         stampClaimVariants(scene);
     } catch (const SceneError& e) {

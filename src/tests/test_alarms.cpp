@@ -384,7 +384,7 @@ TEST(Alarms, TheSimultaneousSolversEnergyIsNamed) {
     EXPECT_NEAR(sim.alarms().worst(AlarmKind::EnergyCreated), 0.75, 1e-9);
     const app::AlarmLine line = sim.alarms().lines(sim.world().time)[0];
     EXPECT_TRUE(contains(line.hint, "simultaneous solver"));
-    EXPECT_TRUE(contains(line.text, "rose by up to 75 % of itself in one step, once, last at t = 0.017 s")) << line.text;
+    EXPECT_TRUE(contains(line.text, "rose by up to 75 % of itself in one time step h, once, last at t = 0.017 s")) << line.text;
 }
 
 // Spheres falling together touch statically (their relative speed is 0). With the

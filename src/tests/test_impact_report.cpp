@@ -2,7 +2,10 @@
 // (app/teaching/impact_report.h): a check mark only where the property holds.
 #include <gtest/gtest.h>
 
+#include "app/run/scene_source.h"
+#include "app/run/simulation.h"
 #include "app/teaching/impact_report.h"
+#include "app/views/frame_builder.h"
 
 namespace {
 
@@ -123,4 +126,15 @@ TEST(ImpactReport, TheContinuousMethodSaysItsContactsAreNotMeasured) {
         EXPECT_EQ(v.verdict, Verdict::Untested) << v.name;
         EXPECT_EQ(v.value, "not measured under the continuous method") << v.name;
     }
+}
+
+// The readouts show the five properties under the continuous method too, each saying it is
+// not measured (the 20th audit found the section missing: no contact was ever measured).
+TEST(ImpactReport, TheReadoutsSayTheContinuousMethodMeasuresNoContact) {
+    app::Simulation simulation(app::loadSceneWithSettings("16_bernoulli", {"method=continuous"}));
+    for (int k = 0; k < 3; ++k) simulation.singleStep();
+    const ui::Readouts readouts = app::makeReadouts(simulation, ui::FrameTimes{});
+    ASSERT_EQ(readouts.properties.size(), 5u);
+    EXPECT_EQ(readouts.properties[0].name, "momentum");
+    EXPECT_EQ(readouts.properties[0].value, "not measured under the continuous method");
 }

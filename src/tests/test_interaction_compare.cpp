@@ -117,6 +117,10 @@ TEST(SideBySide, OverridesAreSplitCheckedAndLabelled) {
     EXPECT_NE(app::checkOverrides(scene, {"beta=2"}).find("beta=2"), std::string::npos);
     EXPECT_NE(app::checkOverrides(scene, {}), "");
     EXPECT_EQ(app::overrideLabel(scene, {"method=velocity", "order=reversed"}), "method = position, order = index");
+    // Six significant digits in a view's label (it read h = 0.016666666666666666), every
+    // digit where two scenes are compared.
+    EXPECT_EQ(app::overrideLabel(scene, {"h=0.01"}), "h = 0.0166667");
+    EXPECT_EQ(app::overrideLabel(scene, {"h=0.01"}, true), "h = 0.016666666666666666");
     app::Simulation simulation(scene);
     app::Session session(simulation);
     EXPECT_NE(session.startComparison({"beta=7"}), "");

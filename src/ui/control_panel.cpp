@@ -403,7 +403,7 @@ void sceneText(const scenes::Scene& scene) {
         textWrappedAtSpaces(scene.slide);
         ImGui::PopStyleColor();
     }
-    if (!scene.description.empty()) textWrappedAtSpaces(scenes::withCount(scene.description, scene));
+    if (!scene.description.empty()) textWrappedAtSpaces(scenes::describedText(scene));
 }
 
 // Under the text: its claims as this run measured them (scenes/claims.h), folded under a

@@ -110,7 +110,7 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_open(const char* name, const char* sett
         const scenes::Scene& s = v.simulation->scene();
         return answer({{"title", scenes::withCount(s.title, s)},
                        {"slide", s.slide},
-                       {"description", scenes::withCount(s.description, s)},
+                       {"description", scenes::describedText(s)},
                        {"side_by_side", !s.compare.empty()}});
     } catch (const std::exception& e) {
         return answer({{"error", e.what()}});

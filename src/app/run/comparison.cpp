@@ -60,7 +60,9 @@ std::string Comparison::primaryLabel(const scenes::Scene& primary) const {
 
 bool Comparison::changesNothing(const scenes::Scene& primary) const {
     for (const Run& run : runs_) {
-        if (overrideLabel(primary, run.overrides) != overrideLabel(run.simulation->scene(), run.overrides)) return false;
+        if (overrideLabel(primary, run.overrides, true) != overrideLabel(run.simulation->scene(), run.overrides, true)) {
+            return false;
+        }
     }
     return true;
 }

@@ -276,7 +276,7 @@ std::vector<AlarmLine> Alarms::lines(double now) const {
     if (const State& s = state(AlarmKind::EnergyCreated); s.count > 0) {
         const std::string times = s.count == 1 ? "once" : std::to_string(s.count) + " times";
         lines.push_back({AlarmKind::EnergyCreated,
-                         formatted("ENERGY CREATED (α, β ≤ 1): E~ rose by up to %.2g %% of itself in one step, ", 100.0 * s.worst) +
+                         formatted("ENERGY CREATED (α, β ≤ 1): E~ rose by up to %.2g %% of itself in one time step h, ", 100.0 * s.worst) +
                              times + formatted(", last at t = %.3f s", s.lastTime),
                          s.hint, lit(AlarmKind::EnergyCreated)});
     }

@@ -145,7 +145,8 @@ void matchLine(std::vector<Line>& lines, const ContactExplanation& e, const phys
             add(lines, Line::Kind::Note,
                 "simultaneous (slide 14): every contact of the pass is answered from the velocities at its start, and "
                 "each sphere ends the pass with the changes of all its contacts added up: with two contacts or more, "
-                "not the 'after' above (the inspector shows the sum)");
+                "not the 'after' above (the next pass starts from that sum; the inspector shows the velocity after "
+                "the whole step)");
         }
     } else {
         add(lines, Line::Kind::Note,

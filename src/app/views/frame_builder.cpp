@@ -110,7 +110,9 @@ ui::Readouts makeReadouts(const Simulation& simulation, const ui::FrameTimes& ti
     r.reflections = simulation.params().solver == physics::Solver::GeneralizedReflections;
     r.shock = simulation.params().shock == physics::ShockPropagation::On && physics::sweepsLevels(simulation.params().method);
     r.cappedSinceRestart = simulation.alarms().count(AlarmKind::EventCap);
-    if (simulation.impacts().total.contacts > 0) {
+    // Shown once contacts were measured, and under the continuous method, which says it
+    // measures none of them (its symmetry is the state's).
+    if (simulation.impacts().total.contacts > 0 || simulation.params().method == physics::Method::Continuous) {
         std::vector<physics::MirrorAsymmetry> mirrors;
         for (const physics::Plane& m : simulation.scene().mirrors) {
             mirrors.push_back(physics::mirrorAsymmetry(simulation.world(), m));
