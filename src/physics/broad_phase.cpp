@@ -55,6 +55,10 @@ GridShape chooseGrid(const World& world, double margin, int threads) {
     }
 }
 
+// The most groups a counting sort counts apart: each keeps a count per bucket (4 bytes a
+// cell of the grid, four cells a sphere: 16 MB a group at 1M spheres).
+constexpr int kMostSortGroups = 8;
+
 // Stable counting sort into buckets [0, buckets), on `groups` threads: forEachItem(g,
 // visit) calls visit(key, item) for group g's items, in their order, and place(item, slot)
 // puts an item at its slot. Group g counts its items apart (counts[g * buckets + b]), then
@@ -121,11 +125,12 @@ void sortByCell(const World& world, const GridShape& grid, Workspace& ws, int th
     });
     ws.sphereByCell.resize(n + kLanes - 1);
     ws.cellOrdered.resize(n + kLanes - 1);
+    const int groups = std::min(threads, kMostSortGroups);
     const auto spheresOf = [&](int g, const auto& visit) {  // a range of sphere numbers each
-        const Range spheres = rangeOf(n, g, threads);
+        const Range spheres = rangeOf(n, g, groups);
         for (std::uint32_t i = spheres.begin; i < spheres.end; ++i) visit(ws.cellOfSphere[i], i);
     };
-    countingSort(std::size_t(grid.dims.x) * grid.dims.y * grid.dims.z, threads, spheresOf, ws.cellStart,
+    countingSort(std::size_t(grid.dims.x) * grid.dims.y * grid.dims.z, groups, spheresOf, ws.cellStart,
                  ws.cellCounts, [&](std::uint32_t i, std::uint32_t slot) {
                      ws.sphereByCell[slot] = i;
                      ws.cellOrdered[slot] = glm::dvec4(world.position[i], world.radius[i]);
@@ -235,8 +240,6 @@ void sortBySecondSphere(SpherePair* first, SpherePair* last) {
     }
 }
 
-// The most groups sortByFirstSphere counts apart: each keeps a count per sphere.
-constexpr int kMostSortGroups = 8;
 
 // pairs <- the tasks' pairs (task after task), in index order: a counting sort by first
 // sphere (each group of consecutive tasks counted apart, countingSort), then each sphere's
