@@ -311,7 +311,8 @@ std::vector<Parameter> makeTable() {
              {emitPeriodOf, setEmitPeriod})),
         onlyWith(hasGenerator, restart(integer("count", "N  spheres", 0, kMaxGeneratedCount, 100,
                         "Number of spheres the scene's first generator places. Applies on "
-                        "restart.",
+                        "restart. The panel's slider reaches 100 000: Ctrl+click it and type, or "
+                        "--set, for more.",
                         {countOf, setCount}))),
         onlyWith(hasGenerator, restart(real("radius", "r  sphere radius", "m", 0.005, 0.5, Generator{}.radiusMax,
                      "The largest radius of the generated spheres (all generators); setting it gives every "
@@ -322,7 +323,8 @@ std::vector<Parameter> makeTable() {
                         "positions, radii (so masses, where set by density) and velocities, "
                         "the emitted spheres' radii and velocities, and the shuffled pair "
                         "order (a generator given its own seed in the file keeps it). Same "
-                        "seed, same run. Applies on restart.",
+                        "seed, same run. Applies on restart. The panel's slider reaches 100 000: "
+                        "Ctrl+click it and type, or --set, for more.",
                         {seedOf, setSeed})),
     };
 }

@@ -362,6 +362,7 @@ std::vector<glm::vec4> UiOverlay::draw() {
 Json parameterValues(const scenes::Scene& scene) {
     Json values = Json::object();
     for (const scenes::Parameter& p : scenes::parameterTable()) {
+        if (!p.availableIn(scene)) continue;  // an emitter's period in a scene without one, ...
         const std::string name(p.name);
         const double value = p.get(scene);
         if (p.kind == scenes::ParameterKind::Choice) {

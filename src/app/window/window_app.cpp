@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstdio>
 #include <ctime>
+#include <filesystem>
 #include <memory>
 #include <vector>
 
@@ -59,6 +60,8 @@ private:
     void apply(const ui::PanelActions& actions);
     void loadPreset(int index);
     void loadFile(const std::string& path);
+    // The preset whose file `path` names (any spelling of its path), or -1.
+    int presetIndexOf(const std::string& path) const;
     void notify(ui::PanelState::FileButton at, const std::string& text, bool error);
     template <class Write>
     std::string writeOutput(ui::PanelState::FileButton at, const char* stem, const char* extension, const Write& write);
@@ -104,9 +107,7 @@ WindowApp::WindowApp(std::unique_ptr<platform::Window> window, scenes::Scene sce
     simulation_.wallBudget = kSlowestFrameSeconds;
     panel_.scenePath = resolveScenePath(options.scene);
     panel_.outputFolder = outputFolder();
-    for (std::size_t k = 0; k < presets_.size(); ++k) {
-        if (scenes::presetPath(presets_[k]) == panel_.scenePath) panel_.presetIndex = static_cast<int>(k);
-    }
+    panel_.presetIndex = presetIndexOf(panel_.scenePath);
     // --compare, or else the scene's own "compare" (checked by the loader).
     const std::vector<std::string>& compare = options.compare.empty() ? simulation_.scene().compare : options.compare;
     if (!compare.empty()) {
@@ -278,13 +279,21 @@ void WindowApp::loadPreset(int index) {
     panel_.presetIndex = index;
 }
 
+int WindowApp::presetIndexOf(const std::string& path) const {
+    for (std::size_t k = 0; k < presets_.size(); ++k) {
+        std::error_code error;
+        if (std::filesystem::equivalent(scenes::presetPath(presets_[k]), path, error)) return static_cast<int>(k);
+    }
+    return -1;
+}
+
 void WindowApp::loadFile(const std::string& path) {
     try {
         const double timeScale = simulation_.timeScale;
         simulation_.setScene(scenes::loadScene(path));
         simulation_.timeScale = timeScale;
         panel_.scenePath = path;
-        panel_.presetIndex = -1;
+        panel_.presetIndex = presetIndexOf(path);  // a preset's file by any path: [ and ] go on from it
         panel_.scrollToTop = true;
         panel_.refusal.clear();
         panel_.pendingName.clear();  // a slider held while the scene changed edits nothing
