@@ -380,6 +380,19 @@ std::string parseValue(const Parameter& p, std::string_view text, double& value)
         return "value '" + copy + "' for " + std::string(p.name) +
                (outOfRange ? " is beyond what a number can hold (about 1e-308 to 1e308)" : " is not a number");
     }
+    // A whole number past 2^53 reads as its nearest double (the seed's 9007199254740993 as
+    // ...992, inside the range): the digits typed must be the value kept.
+    if (p.kind == ParameterKind::Integer && std::abs(value) >= 9007199254740992.0) {
+        const std::string copy(text);
+        char* end = nullptr;
+        errno = 0;
+        const long long exact = std::strtoll(copy.c_str(), &end, 10);
+        const bool whole = end == copy.c_str() + copy.size() && errno == 0;
+        if (whole && static_cast<long long>(value) != exact) {  // (9.007199254740992e15 is 2^53 itself)
+            return std::string(p.name) + " = " + copy + " is out of range [" + formatNumber(p.min) + ", " +
+                   formatNumber(p.max) + "]";
+        }
+    }
     return {};
 }
 

@@ -165,6 +165,9 @@ TEST(ApplySetting, RefusesValuesThatAreNotNumbersOrChoices) {
     EXPECT_EQ(applySetting(scene, "alpha="), "value '' for alpha is not a number");
     EXPECT_EQ(applySetting(scene, "alpha=nan"), "value 'nan' for alpha is not a number");
     EXPECT_EQ(applySetting(scene, "h=1e400"), "value '1e400' for h is beyond what a number can hold (about 1e-308 to 1e308)");
+    // The seed's largest is 2^53; one more read as the nearest double was 2^53 again.
+    EXPECT_EQ(applySetting(scene, "seed=9007199254740992"), "");
+    EXPECT_EQ(applySetting(scene, "seed=9007199254740993"), "seed = 9007199254740993 is out of range [0, 9007199254740992]");
     EXPECT_EQ(applySetting(scene, "gravity=inf"), "value 'inf' for gravity is not a number");
     EXPECT_EQ(applySetting(scene, "method=fast"),
               "method = 'fast' is not a choice; choices: position, velocity, response-only, reflection, continuous");
