@@ -107,7 +107,7 @@ bool orange(glm::u8vec4 p) { return p.x > 200 && p.y > 120 && p.y < 190 && p.z <
 // pile stays; F12 then writes a screenshot and Esc ends the session (exit 0).
 // Keys are held for 0.3 s: ImGui misses a key pressed and released within one frame.
 // The panel is scrolled down three wheel notches first (the pile's text is long), so
-// (88, 677) is the N slider at 1280x800 and UI scale 1: a change to the panel above it (the
+// (88, 694) is the N slider at 1280x800 and UI scale 1: a change to the panel above it (the
 // pile's text, its measured claims' line, a new control) moves it, and this test then
 // fails, not passes.
 TEST(WindowInteraction, ACountThePileCannotHoldIsRefusedUnderItsSliderAndTheWindowStays) {
@@ -120,7 +120,7 @@ TEST(WindowInteraction, ACountThePileCannotHoldIsRefusedUnderItsSliderAndTheWind
                   "w=$(timeout 30 xdotool search --sync --onlyvisible --name 'Rigid Spheres')\n"
                   "xdotool windowfocus --sync $w; sleep 3\n"
                   "xdotool mousemove 200 500 sleep 0.3 click --repeat 3 --delay 30 5 sleep 1\n"
-                  "xdotool mousemove 88 677 sleep 0.3 keydown ctrl click 1 keyup ctrl sleep 0.5 key ctrl+a\n"
+                  "xdotool mousemove 88 694 sleep 0.3 keydown ctrl click 1 keyup ctrl sleep 0.5 key ctrl+a\n"
                   "xdotool type --delay 50 7483\n"  // type takes every argument after it as text
                   "xdotool keydown Return sleep 0.3 keyup Return sleep 0.5 mousemove 700 300 sleep 2 \\\n"
                   "  keydown F12 sleep 0.3 keyup F12 sleep 2 keydown Escape sleep 0.3 keyup Escape\n"
@@ -131,8 +131,8 @@ TEST(WindowInteraction, ACountThePileCannotHoldIsRefusedUnderItsSliderAndTheWind
     ASSERT_TRUE(fs::exists(shot)) << "F12 wrote no screenshot: the window was gone";
     const render::Image image = load(shot.string());
     // The refusal, in orange, under the N slider (the panel's lower left).
-    EXPECT_GT(fraction(image, 5, 687, 420, 757, orange), 0.02);
-    EXPECT_LT(fraction(image, 5, 40, 420, 662, orange), 0.001) << "orange elsewhere in the panel";
+    EXPECT_GT(fraction(image, 5, 704, 420, 774, orange), 0.02);
+    EXPECT_LT(fraction(image, 5, 40, 420, 679, orange), 0.001) << "orange elsewhere in the panel";
     // The pile (its lattice, paused) is still there, in the view.
     EXPECT_GT(fraction(image, kSceneX0 + 180, 220, 940, 480, saturated), 0.2);
 }

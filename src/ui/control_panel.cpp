@@ -463,9 +463,9 @@ PanelActions drawControlPanel(const scenes::Scene& scene, double& timeScale, con
         ImGui::SetScrollY(0.0f);
         state.scrollToTop = false;
     }
-    // Room for the widest label beside each control ("multiple collisions"), also in the
+    // Room for the widest label beside each control ("ε static-contact speed (m/s)"), also in the
     // presentation layout's large type on a 1024 px screen.
-    ImGui::PushItemWidth(std::min(ImGui::GetFontSize() * 9.5f, 0.45f * ImGui::GetContentRegionAvail().x));
+    ImGui::PushItemWidth(std::min(ImGui::GetFontSize() * 9.5f, 0.4f * ImGui::GetContentRegionAvail().x));
     sceneText(scene);
     measuredClaims(readouts);
     ImGui::Separator();
