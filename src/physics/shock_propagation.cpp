@@ -119,13 +119,16 @@ void findLevels(const World& world, ContactGraph& graph, const std::vector<doubl
 
 // The sweep's contacts in the order it visits them: graph.inside, the pairs inside each
 // level (by level, then by number), and graph.below, each sphere's neighbours one level
-// down (for byLevel's s-th sphere: below[belowStart[s], belowStart[s + 1])).
+// down (for byLevel's s-th sphere: below[belowStart[s], belowStart[s + 1])); and
+// graph.beside, its neighbours in its own level (pressAgain's).
 void findSweepOrder(ContactGraph& graph) {
     const std::size_t levels = graph.levelStart.size() - 1;
     graph.inside.clear();
     graph.below.clear();
+    graph.beside.clear();
     graph.insideStart.assign(levels + 1, 0);
     graph.belowStart.assign(graph.byLevel.size() + 1, 0);
+    graph.besideStart.assign(graph.byLevel.size() + 1, 0);
     graph.slotOf.resize(graph.level.size());
     graph.moved.assign(graph.level.size(), 0);
     for (std::size_t k = 0; k < levels; ++k) {
@@ -134,10 +137,14 @@ void findSweepOrder(ContactGraph& graph) {
             graph.slotOf[i] = s;
             for (std::uint32_t e = graph.edgeStart[i]; e < graph.edgeStart[i + 1]; ++e) {
                 const std::uint32_t j = graph.neighbour[e];
-                if (graph.level[j] == graph.level[i] && i < j) graph.inside.push_back({i, j});
+                if (graph.level[j] == graph.level[i]) {
+                    graph.beside.push_back(j);
+                    if (i < j) graph.inside.push_back({i, j});
+                }
                 if (graph.level[j] == graph.level[i] - 1) graph.below.push_back(j);
             }
             graph.belowStart[s + 1] = std::uint32_t(graph.below.size());
+            graph.besideStart[s + 1] = std::uint32_t(graph.beside.size());
         }
         graph.insideStart[k + 1] = std::uint32_t(graph.inside.size());
     }
@@ -205,9 +212,10 @@ class Sweep {
             ++stats_.shockRounds;
             pressed.clear();  // the level's contacts of the spheres just moved, each once
             for (const std::uint32_t i : moved) {
-                for (std::uint32_t e = graph_.edgeStart[i]; e < graph_.edgeStart[i + 1]; ++e) {
-                    const std::uint32_t j = graph_.neighbour[e];
-                    if (graph_.level[j] != std::int32_t(k) || (graph_.moved[j] && j < i)) continue;
+                const std::uint32_t s = graph_.slotOf[i];
+                for (std::uint32_t b = graph_.besideStart[s]; b < graph_.besideStart[s + 1]; ++b) {
+                    const std::uint32_t j = graph_.beside[b];
+                    if (graph_.moved[j] && j < i) continue;
                     const SpherePair pair{std::min(i, j), std::max(i, j)};
                     if (overlap(pair) > kSettledOverlap) pressed.push_back(pair);
                 }
@@ -216,10 +224,14 @@ class Sweep {
         }
     }
 
-    // The pair's overlap as a fraction of the smaller radius, 0 if it does not touch.
+    // The pair's overlap as a fraction of the smaller radius, 0 if it does not touch (the
+    // depth as touching() finds it, without the normal).
     double overlap(const SpherePair& pair) const {
-        SphereContact contact;
-        return touching(world_, pair, contact) ? contact.depth / std::min(world_.radius[pair.i], world_.radius[pair.j]) : 0.0;
+        const glm::dvec3 delta = world_.position[pair.i] - world_.position[pair.j];
+        const double reach = world_.radius[pair.i] + world_.radius[pair.j];  // m
+        const double distanceSquared = glm::dot(delta, delta);              // m^2
+        if (distanceSquared > reach * reach) return 0.0;
+        return (reach - std::sqrt(distanceSquared)) / std::min(world_.radius[pair.i], world_.radius[pair.j]);
     }
 
     // Both spheres in the level: the passes' own response (static contacts) and split.

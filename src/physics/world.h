@@ -158,6 +158,8 @@ struct ContactGraph {
     std::vector<std::uint32_t> insideStart;  // level k: inside[insideStart[k], insideStart[k + 1])
     std::vector<std::uint32_t> below;        // byLevel[s]'s neighbours one level down:
     std::vector<std::uint32_t> belowStart;   //   below[belowStart[s], belowStart[s + 1])
+    std::vector<std::uint32_t> beside;       // byLevel[s]'s neighbours in its own level:
+    std::vector<std::uint32_t> besideStart;  //   beside[besideStart[s], besideStart[s + 1])
     std::vector<std::uint32_t> slotOf;       // per sphere with a level: its s in byLevel
     std::vector<SpherePair> pressed;         // scratch: a level's contacts answered again
     std::vector<std::uint8_t> moved;         // scratch: per sphere, moved in this round
