@@ -713,6 +713,102 @@ TEST_P(Headless, ImGuiFollowsDisplayFramebufferScale) {
     EXPECT_EQ(image.pixel(250, 200), glm::u8vec4(0, 0, 128, 255));
 }
 
+// The panel layer: the first window is kept drawn in a texture and copied, and only what
+// changed is drawn again. Frames where one line of text changes, then nothing, then a
+// line is added above the last: each image is the one drawn straight in, pixel for
+// pixel, the view beside the window (drawn by "the scene", here a red clear) is left as
+// it was, and the texture is drawn again only around the changed line. A line on top
+// moves all of it: then it is drawn straight in.
+TEST_P(Headless, ThePanelLayerDrawsWhatDrawingStraightInDrawsAndOnlyTheChangedLineAgain) {
+    const int width = 240, height = 160;
+    const glm::vec3 backdrop(0.09f, 0.10f, 0.12f);
+    const glm::ivec4 view(120, 0, 120, 160);  // x, y, width, height from the top left
+    ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr;
+    io.DisplaySize = ImVec2(width, height);
+    io.DeltaTime = 1.0f / 60.0f;
+    ui::ImGuiGlRenderer imguiRenderer;
+    ASSERT_EQ(imguiRenderer.init(), "");
+    render::OffscreenTarget target;
+    ASSERT_EQ(target.resize(width, height), "");
+    const auto frame = [&](const char* time, bool extraLine, bool lineOnTop = false) {
+        imguiRenderer.newFrame();
+        ImGui::NewFrame();
+        ImGui::SetNextWindowPos(ImVec2(0, 0));
+        ImGui::SetNextWindowSize(ImVec2(120, 160));  // its border reaches into the view's first column
+        ImGui::Begin("panel", nullptr, ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoSavedSettings);
+        if (lineOnTop) ImGui::Text("MID-AIR");
+        ImGui::Text("Rigid spheres");
+        ImGui::Text("t = %s s", time);
+        ImGui::Button("Pause (P)");
+        for (int line = 1; line <= 4; ++line) ImGui::Text("line %d", line);
+        if (extraLine) ImGui::Text("one more line");
+        ImGui::End();
+        ImGui::Render();
+    };
+    const auto draw = [&](bool layered) {
+        target.bind();
+        glClearColor(backdrop.x, backdrop.y, backdrop.z, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
+        glEnable(GL_SCISSOR_TEST);  // the scene: its view red
+        glScissor(view.x, height - view.y - view.w, view.z, view.w);
+        glClearColor(1.0f, 0.0f, 0.0f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
+        glDisable(GL_SCISSOR_TEST);
+        const ui::Backdrop beneath{backdrop, {glm::vec4(view)}};
+        imguiRenderer.render(ImGui::GetDrawData(), layered ? &beneath : nullptr);
+        return target.read();
+    };
+    const auto sameImage = [](const render::Image& a, const render::Image& b) {
+        int differ = 0;
+        for (int y = 0; y < a.height; ++y) {
+            for (int x = 0; x < a.width; ++x) differ += a.pixel(x, y) != b.pixel(x, y) ? 1 : 0;
+        }
+        return differ;
+    };
+    frame("1.000", false);
+    frame("1.000", false);  // a new window may skip drawing on its very first frame
+    const render::Image first = draw(true);
+    EXPECT_EQ(sameImage(first, draw(false)), 0);
+    draw(true);  // an empty layer first, then the same frame: nothing drawn again
+    EXPECT_EQ(imguiRenderer.panelLayerStats().redrawn.w, 0.0f);
+    frame("2.517", false);
+    const render::Image layered = draw(true);
+    const ui::PanelLayerStats changed = imguiRenderer.panelLayerStats();
+    EXPECT_EQ(sameImage(layered, draw(false)), 0);
+    EXPECT_TRUE(changed.copied);
+    EXPECT_GT(changed.redrawn.z * changed.redrawn.w, 0.0f);
+    EXPECT_LT(changed.redrawn.w, 0.25f * height) << "only the time's line";
+    EXPECT_EQ(layered.pixel(200, 80), glm::u8vec4(255, 0, 0, 255)) << "the view left as the scene drew it";
+    draw(true);  // the same frame again: nothing drawn again
+    EXPECT_TRUE(imguiRenderer.panelLayerStats().copied);
+    EXPECT_EQ(imguiRenderer.panelLayerStats().redrawn.z * imguiRenderer.panelLayerStats().redrawn.w, 0.0f);
+    frame("2.517", true);  // a line more at the end
+    const render::Image grown = draw(true);
+    const ui::PanelLayerStats added = imguiRenderer.panelLayerStats();
+    EXPECT_EQ(sameImage(grown, draw(false)), 0);
+    EXPECT_TRUE(added.copied);
+    EXPECT_GT(added.redrawn.y, changed.redrawn.y + changed.redrawn.w) << "the lines above stay";
+    EXPECT_LT(added.redrawn.w, 0.5f * height);
+    imguiRenderer.invalidateFontTexture();  // then all of it again
+    frame("2.517", true);
+    draw(true);
+    EXPECT_EQ(imguiRenderer.panelLayerStats().redrawn, glm::vec4(0, 0, width, height));
+    frame("2.517", true, true);  // a line on top moves all below it: drawn straight in
+    const render::Image moved = draw(true);
+    EXPECT_FALSE(imguiRenderer.panelLayerStats().copied);
+    EXPECT_EQ(sameImage(moved, draw(false)), 0);
+    // A view beneath the window's left edge: drawn straight in, no layer.
+    const ui::Backdrop covered{backdrop, {glm::vec4(0, 40, 40, 40)}};
+    target.bind();
+    imguiRenderer.render(ImGui::GetDrawData(), &covered);
+    EXPECT_FALSE(imguiRenderer.panelLayerStats().copied);
+    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+    imguiRenderer.shutdown();
+    ImGui::DestroyContext();
+}
+
 INSTANTIATE_TEST_SUITE_P(Backends, Headless,
                          ::testing::Values(platform::HeadlessBackend::OSMesa,
                                            platform::HeadlessBackend::EGL),

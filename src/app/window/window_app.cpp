@@ -82,6 +82,7 @@ private:
     render::FrameSnapshot snapshots_[kMostViews];  // one per view
     MultisampledViews views_;  // each view's content drawn anti-aliased, then copied in
     ui::ImGuiGlRenderer imguiRenderer_;
+    ui::Backdrop backdrop_;  // what the scene left beneath the UI this frame
     ui::PanelState panel_;
     InteractionInput input_;
     std::vector<std::string> presets_;
@@ -384,6 +385,12 @@ void WindowApp::drawScene(const ViewLayout& views) {
     glClearColor(ui::kBackdropColor[0], ui::kBackdropColor[1], ui::kBackdropColor[2], 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
     timing_.antialiasedUpTo = 0;
+    backdrop_.colour = glm::vec3(ui::kBackdropColor[0], ui::kBackdropColor[1], ui::kBackdropColor[2]);
+    backdrop_.drawn.clear();  // where the views are, from the top left: the panel is kept drawn beside them
+    for (int k = 0; k < views.count; ++k) {
+        const glm::ivec4& view = views.views[k];
+        backdrop_.drawn.emplace_back(view.x, size.y - view.y - view.w, view.z, view.w);
+    }
     for (int k = 0; k < views.count; ++k) {
         const glm::ivec4& view = views.views[k];
         buildSnapshot(session_.run(k), panel_, snapshots_[k]);
@@ -433,7 +440,7 @@ void WindowApp::frame(double dt) {
     const ToolActions tools = drawInteractionWindows(session_, placed, labels_, input_.tools());
     ImGui::Render();
     profile_.lap(FrameProfile::Layout);
-    imguiRenderer_.render(ImGui::GetDrawData());
+    imguiRenderer_.render(ImGui::GetDrawData(), &backdrop_);
     if (options_.frames > 0) glFinish();  // measured: the UI's drawing, not only its calls
     profile_.lap(FrameProfile::UiRender);
     apply(actions);
