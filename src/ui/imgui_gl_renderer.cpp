@@ -316,13 +316,19 @@ void ImGuiGlRenderer::renderList(const ImDrawList& list, const ImDrawData& drawD
             command.UserCallback(&list, &command);
             continue;
         }
-        // Clip rectangle in framebuffer pixels, cut to the limit.
-        const float x0 = std::max((command.ClipRect.x - origin.x) * scale.x, limit.x);
-        const float y0 = std::max((command.ClipRect.y - origin.y) * scale.y, limit.y);
-        const float x1 = std::min((command.ClipRect.z - origin.x) * scale.x, limit.z);
-        const float y1 = std::min((command.ClipRect.w - origin.y) * scale.y, limit.w);
+        // Clip rectangle in whole framebuffer pixels, GL's rows from the bottom (the same
+        // pixels whatever the limit, at any scale), then cut to the limit.
+        const float x0 = (command.ClipRect.x - origin.x) * scale.x;
+        const float y0 = (command.ClipRect.y - origin.y) * scale.y;
+        const float x1 = (command.ClipRect.z - origin.x) * scale.x;
+        const float y1 = (command.ClipRect.w - origin.y) * scale.y;
         if (x1 <= x0 || y1 <= y0) continue;
-        scissorTo({x0, y0, x1, y1}, framebufferHeight);
+        const GLint left = std::max(GLint(x0), GLint(limit.x));
+        const GLint right = std::min(GLint(x0) + GLint(x1 - x0), GLint(limit.z));
+        const GLint bottom = std::max(GLint(float(framebufferHeight) - y1), framebufferHeight - GLint(limit.w));
+        const GLint top = std::min(GLint(float(framebufferHeight) - y1) + GLint(y1 - y0), framebufferHeight - GLint(limit.y));
+        if (right <= left || top <= bottom) continue;
+        glScissor(left, bottom, right - left, top - bottom);
         glBindTexture(GL_TEXTURE_2D, toGl(command.GetTexID()));
         glDrawElementsBaseVertex(
             GL_TRIANGLES, static_cast<GLsizei>(command.ElemCount), kIndexType,
@@ -362,7 +368,9 @@ bool ImGuiGlRenderer::drawFromLayer(const ImDrawData& drawData, const Backdrop& 
                                     int framebufferHeight) {
     const ImDrawList& list = *drawData.CmdLists[0];
     const std::optional<LayerCopy> copy = layerCopy(list, drawData, beneath, framebufferWidth, framebufferHeight);
-    if (straightFrames_ > 0 || !copy || !resizeLayer(framebufferWidth, framebufferHeight)) {
+    GLint multisampled = 0;  // a blit into a multisampled frame would fail
+    glGetIntegerv(GL_SAMPLE_BUFFERS, &multisampled);
+    if (straightFrames_ > 0 || multisampled != 0 || !copy || !resizeLayer(framebufferWidth, framebufferHeight)) {
         straightFrames_ = std::max(straightFrames_ - 1, 0);
         forgetLayer();
         return false;
@@ -448,7 +456,7 @@ glm::vec4 ImGuiGlRenderer::staleArea(const ImDrawList& list, const ImDrawData& d
 }
 
 bool ImGuiGlRenderer::resizeLayer(int width, int height) {
-    if (layerFramebuffer_ != 0 && layerSize_ == glm::ivec2(width, height)) return true;
+    if (layerFramebuffer_ != 0 && layerSize_ == glm::ivec2(width, height)) return layerComplete_;
     forgetLayer();
     GLint previousTexture = 0, previousFramebuffer = 0;
     glGetIntegerv(GL_TEXTURE_BINDING_2D, &previousTexture);
@@ -462,7 +470,8 @@ bool ImGuiGlRenderer::resizeLayer(int width, int height) {
     const bool complete = glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
     glBindTexture(GL_TEXTURE_2D, static_cast<GLuint>(previousTexture));
     glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(previousFramebuffer));
-    layerSize_ = complete ? glm::ivec2(width, height) : glm::ivec2(0);
+    layerSize_ = glm::ivec2(width, height);  // not tried again at this size when incomplete
+    layerComplete_ = complete;
     return complete;
 }
 

@@ -110,6 +110,7 @@ class ImGuiGlRenderer {
     GLuint layerTexture_ = 0;
     GLuint layerFramebuffer_ = 0;
     glm::ivec2 layerSize_{0};
+    bool layerComplete_ = false;  // its framebuffer at layerSize_
     DrawListCopy layerList_;     // what the layer holds
     DrawListCopy drawnList_;     // this frame's, compared with it
     glm::vec3 layerBackdrop_{-1.0f};
