@@ -713,6 +713,66 @@ TEST_P(Headless, ImGuiFollowsDisplayFramebufferScale) {
     EXPECT_EQ(image.pixel(250, 200), glm::u8vec4(0, 0, 128, 255));
 }
 
+// An ImGui context, our renderer and a target of width x height px at a framebuffer
+// scale, for the panel layer's tests. draw() clears the target to the backdrop, the view
+// (x, y, width, height px from the top left) red as the scene would, and draws ImGui's
+// last frame through the layer or straight in.
+struct PanelLayerRig {
+    PanelLayerRig(int w, int h, float scale, glm::ivec4 sceneView) : width(w), height(h), view(sceneView) {
+        ImGui::CreateContext();
+        ImGuiIO& io = ImGui::GetIO();
+        io.IniFilename = nullptr;
+        io.DisplaySize = ImVec2(float(w) / scale, float(h) / scale);
+        io.DisplayFramebufferScale = ImVec2(scale, scale);
+        io.DeltaTime = 1.0f / 60.0f;
+        EXPECT_EQ(renderer.init(), "");
+        EXPECT_EQ(target.resize(w, h), "");
+    }
+    ~PanelLayerRig() {
+        renderer.shutdown();
+        ImGui::DestroyContext();
+    }
+    void beginWindow(ImVec2 position, ImVec2 size) {  // in ImGui units
+        renderer.newFrame();
+        ImGui::NewFrame();
+        ImGui::SetNextWindowPos(position);
+        ImGui::SetNextWindowSize(size);
+        ImGui::Begin("panel", nullptr, ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoSavedSettings);
+    }
+    void endWindow() {
+        ImGui::End();
+        ImGui::Render();
+    }
+    render::Image draw(bool layered) {
+        target.bind();
+        glClearColor(backdrop.x, backdrop.y, backdrop.z, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(view.x, height - view.y - view.w, view.z, view.w);
+        glClearColor(1.0f, 0.0f, 0.0f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
+        glDisable(GL_SCISSOR_TEST);
+        const ui::Backdrop beneath{backdrop, {glm::vec4(view)}};
+        renderer.render(ImGui::GetDrawData(), layered ? &beneath : nullptr);
+        return target.read();
+    }
+    const ui::PanelLayerStats& stats() const { return renderer.panelLayerStats(); }
+
+    const int width, height;  // px
+    const glm::ivec4 view;
+    const glm::vec3 backdrop{0.09f, 0.10f, 0.12f};
+    ui::ImGuiGlRenderer renderer;
+    render::OffscreenTarget target;
+};
+
+int differingPixels(const render::Image& a, const render::Image& b) {
+    int differ = 0;
+    for (int y = 0; y < a.height; ++y) {
+        for (int x = 0; x < a.width; ++x) differ += a.pixel(x, y) != b.pixel(x, y) ? 1 : 0;
+    }
+    return differ;
+}
+
 // The panel layer: the first window is kept drawn in a texture and copied, and only what
 // changed is drawn again. Frames where one line of text changes, then nothing, then a
 // line is added above the last: each image is the one drawn straight in, pixel for
@@ -720,93 +780,55 @@ TEST_P(Headless, ImGuiFollowsDisplayFramebufferScale) {
 // it was, and the texture is drawn again only around the changed line. A line on top
 // moves all of it: then it is drawn straight in.
 TEST_P(Headless, ThePanelLayerDrawsWhatDrawingStraightInDrawsAndOnlyTheChangedLineAgain) {
-    const int width = 240, height = 160;
-    const glm::vec3 backdrop(0.09f, 0.10f, 0.12f);
-    const glm::ivec4 view(120, 0, 120, 160);  // x, y, width, height from the top left
-    ImGui::CreateContext();
-    ImGuiIO& io = ImGui::GetIO();
-    io.IniFilename = nullptr;
-    io.DisplaySize = ImVec2(width, height);
-    io.DeltaTime = 1.0f / 60.0f;
-    ui::ImGuiGlRenderer imguiRenderer;
-    ASSERT_EQ(imguiRenderer.init(), "");
-    render::OffscreenTarget target;
-    ASSERT_EQ(target.resize(width, height), "");
+    PanelLayerRig rig(240, 160, 1.0f, glm::ivec4(120, 0, 120, 160));
     const auto frame = [&](const char* time, bool extraLine, bool lineOnTop = false) {
-        imguiRenderer.newFrame();
-        ImGui::NewFrame();
-        ImGui::SetNextWindowPos(ImVec2(0, 0));
-        ImGui::SetNextWindowSize(ImVec2(120, 160));  // its border reaches into the view's first column
-        ImGui::Begin("panel", nullptr, ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoSavedSettings);
+        rig.beginWindow(ImVec2(0, 0), ImVec2(120, 160));  // its border reaches into the view's first column
         if (lineOnTop) ImGui::Text("MID-AIR");
         ImGui::Text("Rigid spheres");
         ImGui::Text("t = %s s", time);
         ImGui::Button("Pause (P)");
         for (int line = 1; line <= 4; ++line) ImGui::Text("line %d", line);
         if (extraLine) ImGui::Text("one more line");
-        ImGui::End();
-        ImGui::Render();
-    };
-    const auto draw = [&](bool layered) {
-        target.bind();
-        glClearColor(backdrop.x, backdrop.y, backdrop.z, 1.0f);
-        glClear(GL_COLOR_BUFFER_BIT);
-        glEnable(GL_SCISSOR_TEST);  // the scene: its view red
-        glScissor(view.x, height - view.y - view.w, view.z, view.w);
-        glClearColor(1.0f, 0.0f, 0.0f, 1.0f);
-        glClear(GL_COLOR_BUFFER_BIT);
-        glDisable(GL_SCISSOR_TEST);
-        const ui::Backdrop beneath{backdrop, {glm::vec4(view)}};
-        imguiRenderer.render(ImGui::GetDrawData(), layered ? &beneath : nullptr);
-        return target.read();
-    };
-    const auto sameImage = [](const render::Image& a, const render::Image& b) {
-        int differ = 0;
-        for (int y = 0; y < a.height; ++y) {
-            for (int x = 0; x < a.width; ++x) differ += a.pixel(x, y) != b.pixel(x, y) ? 1 : 0;
-        }
-        return differ;
+        rig.endWindow();
     };
     frame("1.000", false);
     frame("1.000", false);  // a new window may skip drawing on its very first frame
-    const render::Image first = draw(true);
-    EXPECT_EQ(sameImage(first, draw(false)), 0);
-    draw(true);  // an empty layer first, then the same frame: nothing drawn again
-    EXPECT_EQ(imguiRenderer.panelLayerStats().redrawn.w, 0.0f);
+    const render::Image first = rig.draw(true);
+    EXPECT_EQ(differingPixels(first, rig.draw(false)), 0);
+    rig.draw(true);  // an empty layer first, then the same frame: nothing drawn again
+    EXPECT_EQ(rig.stats().redrawn.w, 0.0f);
     frame("2.517", false);
-    const render::Image layered = draw(true);
-    const ui::PanelLayerStats changed = imguiRenderer.panelLayerStats();
-    EXPECT_EQ(sameImage(layered, draw(false)), 0);
+    const render::Image layered = rig.draw(true);
+    const ui::PanelLayerStats changed = rig.stats();
+    EXPECT_EQ(differingPixels(layered, rig.draw(false)), 0);
     EXPECT_TRUE(changed.copied);
     EXPECT_GT(changed.redrawn.z * changed.redrawn.w, 0.0f);
-    EXPECT_LT(changed.redrawn.w, 0.25f * height) << "only the time's line";
+    EXPECT_LT(changed.redrawn.w, 0.25f * rig.height) << "only the time's line";
     EXPECT_EQ(layered.pixel(200, 80), glm::u8vec4(255, 0, 0, 255)) << "the view left as the scene drew it";
-    draw(true);  // the same frame again: nothing drawn again
-    EXPECT_TRUE(imguiRenderer.panelLayerStats().copied);
-    EXPECT_EQ(imguiRenderer.panelLayerStats().redrawn.z * imguiRenderer.panelLayerStats().redrawn.w, 0.0f);
+    rig.draw(true);  // the same frame again: nothing drawn again
+    EXPECT_TRUE(rig.stats().copied);
+    EXPECT_EQ(rig.stats().redrawn.z * rig.stats().redrawn.w, 0.0f);
     frame("2.517", true);  // a line more at the end
-    const render::Image grown = draw(true);
-    const ui::PanelLayerStats added = imguiRenderer.panelLayerStats();
-    EXPECT_EQ(sameImage(grown, draw(false)), 0);
+    const render::Image grown = rig.draw(true);
+    const ui::PanelLayerStats added = rig.stats();
+    EXPECT_EQ(differingPixels(grown, rig.draw(false)), 0);
     EXPECT_TRUE(added.copied);
     EXPECT_GT(added.redrawn.y, changed.redrawn.y + changed.redrawn.w) << "the lines above stay";
-    EXPECT_LT(added.redrawn.w, 0.5f * height);
-    imguiRenderer.invalidateFontTexture();  // then all of it again
+    EXPECT_LT(added.redrawn.w, 0.5f * rig.height);
+    rig.renderer.invalidateFontTexture();  // then all of it again
     frame("2.517", true);
-    draw(true);
-    EXPECT_EQ(imguiRenderer.panelLayerStats().redrawn, glm::vec4(0, 0, width, height));
+    rig.draw(true);
+    EXPECT_EQ(rig.stats().redrawn, glm::vec4(0, 0, rig.width, rig.height));
     frame("2.517", true, true);  // a line on top moves all below it: drawn straight in
-    const render::Image moved = draw(true);
-    EXPECT_FALSE(imguiRenderer.panelLayerStats().copied);
-    EXPECT_EQ(sameImage(moved, draw(false)), 0);
+    const render::Image moved = rig.draw(true);
+    EXPECT_FALSE(rig.stats().copied);
+    EXPECT_EQ(differingPixels(moved, rig.draw(false)), 0);
     // A view beneath the window's left edge: drawn straight in, no layer.
-    const ui::Backdrop covered{backdrop, {glm::vec4(0, 40, 40, 40)}};
-    target.bind();
-    imguiRenderer.render(ImGui::GetDrawData(), &covered);
-    EXPECT_FALSE(imguiRenderer.panelLayerStats().copied);
+    const ui::Backdrop covered{rig.backdrop, {glm::vec4(0, 40, 40, 40)}};
+    rig.target.bind();
+    rig.renderer.render(ImGui::GetDrawData(), &covered);
+    EXPECT_FALSE(rig.stats().copied);
     EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
-    imguiRenderer.shutdown();
-    ImGui::DestroyContext();
 }
 
 // At a framebuffer scale of 1.5 the window's edges fall between pixels: the parts drawn
@@ -814,56 +836,21 @@ TEST_P(Headless, ThePanelLayerDrawsWhatDrawingStraightInDrawsAndOnlyTheChangedLi
 // pixels to the part drawn again, so that a clip rectangle whose fractions differ at
 // its two ends covers the same columns either way; this window does not show that case.)
 TEST_P(Headless, ThePanelLayerAtAFractionalScaleDrawsWhatDrawingStraightInDraws) {
-    const float scale = 1.5f;
-    const int width = 240, height = 160;  // px
-    ImGui::CreateContext();
-    ImGuiIO& io = ImGui::GetIO();
-    io.IniFilename = nullptr;
-    io.DisplaySize = ImVec2(width / scale, height / scale);
-    io.DisplayFramebufferScale = ImVec2(scale, scale);
-    io.DeltaTime = 1.0f / 60.0f;
-    ui::ImGuiGlRenderer imguiRenderer;
-    ASSERT_EQ(imguiRenderer.init(), "");
-    render::OffscreenTarget target;
-    ASSERT_EQ(target.resize(width, height), "");
-    const glm::vec3 backdrop(0.09f, 0.10f, 0.12f);
-    const auto frame = [&](int step) {
-        imguiRenderer.newFrame();
-        ImGui::NewFrame();
-        ImGui::SetNextWindowPos(ImVec2(3, 7));  // 4.5, 10.5 px
-        ImGui::SetNextWindowSize(ImVec2(101, 95));
-        ImGui::Begin("panel", nullptr, ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoSavedSettings);
+    PanelLayerRig rig(240, 160, 1.5f, glm::ivec4(0));
+    for (int step = 0; step < 5; ++step) {
+        rig.beginWindow(ImVec2(3, 7), ImVec2(101, 95));  // from 4.5, 10.5 px
         ImGui::Text("Rigid spheres");
         ImGui::Text("%d solver steps", 1000 + 37 * step);
         ImGui::Button("Pause (P)");
-        ImGui::End();
-        ImGui::Render();
-    };
-    const auto draw = [&](bool layered) {
-        target.bind();
-        glClearColor(backdrop.x, backdrop.y, backdrop.z, 1.0f);
-        glClear(GL_COLOR_BUFFER_BIT);
-        const ui::Backdrop beneath{backdrop, {}};
-        imguiRenderer.render(ImGui::GetDrawData(), layered ? &beneath : nullptr);
-        return target.read();
-    };
-    for (int step = 0; step < 5; ++step) {
-        frame(step);
-        const render::Image layered = draw(true);
-        const ui::PanelLayerStats stats = imguiRenderer.panelLayerStats();
-        const render::Image straight = draw(false);
-        int differ = 0;
-        for (int y = 0; y < height; ++y) {
-            for (int x = 0; x < width; ++x) differ += layered.pixel(x, y) != straight.pixel(x, y) ? 1 : 0;
-        }
-        EXPECT_EQ(differ, 0) << "step " << step;
+        rig.endWindow();
+        const render::Image layered = rig.draw(true);
+        const ui::PanelLayerStats stats = rig.stats();
+        EXPECT_EQ(differingPixels(layered, rig.draw(false)), 0) << "step " << step;
         EXPECT_TRUE(stats.copied) << "step " << step;
         if (step >= 2) {
-            EXPECT_LT(stats.redrawn.w, 0.3f * height) << "step " << step;
+            EXPECT_LT(stats.redrawn.w, 0.3f * rig.height) << "step " << step;
         }
     }
-    imguiRenderer.shutdown();
-    ImGui::DestroyContext();
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, Headless,
