@@ -90,22 +90,29 @@ bool levelZero(const World& world, std::uint32_t i, const std::vector<double>* c
 void findLevels(const World& world, ContactGraph& graph, const std::vector<double>* clearance) {
     const std::size_t n = world.size();
     std::vector<std::uint32_t>& queue = graph.queue;  // breadth-first order
-    queue.clear();
-    graph.level.assign(n, -1);
+    queue.resize(n + 1);  // each sphere once, and a slot written past the last
+    graph.level.resize(n);
+    // The queue is written without a branch on whether a sphere is met for the first time
+    // (as good as random: a mispredicted branch per edge cost more than the search).
+    std::size_t tail = 0;
     for (std::uint32_t i = 0; i < n; ++i) {
-        if (!levelZero(world, i, clearance)) continue;
-        graph.level[i] = 0;
-        queue.push_back(i);
+        const bool zero = levelZero(world, i, clearance);
+        graph.level[i] = zero ? 0 : -1;
+        queue[tail] = i;
+        tail += zero;
     }
-    for (std::size_t head = 0; head < queue.size(); ++head) {
+    for (std::size_t head = 0; head < tail; ++head) {
         const std::uint32_t i = queue[head];
+        const std::int32_t above = graph.level[i] + 1;
         for (std::uint32_t e = graph.edgeStart[i]; e < graph.edgeStart[i + 1]; ++e) {
             const std::uint32_t j = graph.neighbour[e];
-            if (graph.level[j] >= 0) continue;
-            graph.level[j] = graph.level[i] + 1;
-            queue.push_back(j);
+            const bool first = graph.level[j] < 0;
+            graph.level[j] = first ? above : graph.level[j];
+            queue[tail] = j;
+            tail += first;
         }
     }
+    queue.resize(tail);
     const std::size_t levels = queue.empty() ? 0 : std::size_t(graph.level[queue.back()]) + 1;
     graph.levelStart.assign(levels + 1, 0);
     for (const std::uint32_t i : queue) ++graph.levelStart[std::size_t(graph.level[i]) + 1];
@@ -123,31 +130,41 @@ void findLevels(const World& world, ContactGraph& graph, const std::vector<doubl
 // graph.beside, its neighbours in its own level (pressAgain's).
 void findSweepOrder(ContactGraph& graph) {
     const std::size_t levels = graph.levelStart.size() - 1;
-    graph.inside.clear();
-    graph.below.clear();
-    graph.beside.clear();
+    // Each neighbour is written to every list and kept where it belongs (no branch: which
+    // list a neighbour belongs to is as good as random).
+    const std::size_t edges = graph.neighbour.size();
+    graph.inside.resize(edges / 2 + 1);
+    graph.below.resize(edges + 1);
+    graph.beside.resize(edges + 1);
     graph.insideStart.assign(levels + 1, 0);
     graph.belowStart.assign(graph.byLevel.size() + 1, 0);
     graph.besideStart.assign(graph.byLevel.size() + 1, 0);
     graph.slotOf.resize(graph.level.size());
     graph.moved.assign(graph.level.size(), 0);
+    std::uint32_t inside = 0, below = 0, beside = 0;
     for (std::size_t k = 0; k < levels; ++k) {
         for (std::uint32_t s = graph.levelStart[k]; s < graph.levelStart[k + 1]; ++s) {
             const std::uint32_t i = graph.byLevel[s];
+            const std::int32_t level = graph.level[i];
             graph.slotOf[i] = s;
             for (std::uint32_t e = graph.edgeStart[i]; e < graph.edgeStart[i + 1]; ++e) {
                 const std::uint32_t j = graph.neighbour[e];
-                if (graph.level[j] == graph.level[i]) {
-                    graph.beside.push_back(j);
-                    if (i < j) graph.inside.push_back({i, j});
-                }
-                if (graph.level[j] == graph.level[i] - 1) graph.below.push_back(j);
+                const bool same = graph.level[j] == level;
+                graph.inside[inside] = {i, j};
+                inside += same && i < j;
+                graph.beside[beside] = j;
+                beside += same;
+                graph.below[below] = j;
+                below += graph.level[j] == level - 1;
             }
-            graph.belowStart[s + 1] = std::uint32_t(graph.below.size());
-            graph.besideStart[s + 1] = std::uint32_t(graph.beside.size());
+            graph.belowStart[s + 1] = below;
+            graph.besideStart[s + 1] = beside;
         }
-        graph.insideStart[k + 1] = std::uint32_t(graph.inside.size());
+        graph.insideStart[k + 1] = inside;
     }
+    graph.inside.resize(inside);
+    graph.below.resize(below);
+    graph.beside.resize(beside);
 }
 
 bool isStatic(double normalSpeed, const Params& params) { return std::abs(normalSpeed) <= params.epsilon; }
@@ -193,45 +210,54 @@ class Sweep {
     // in all. Only the few that need it: a whole level's contacts cost as much as a pass.
     void pressAgain(std::uint32_t k) {
         std::vector<SpherePair>& pressed = graph_.pressed;
-        pressed.clear();
+        // Pairs are kept without a branch (pressed[count] written, count moved on if kept):
+        // which are still pressed is as good as random.
+        std::size_t count = 0;
+        pressed.resize(graph_.insideStart[k + 1] - graph_.insideStart[k]);
         for (std::uint32_t c = graph_.insideStart[k]; c < graph_.insideStart[k + 1]; ++c) {
-            if (overlap(graph_.inside[c]) > kSettledOverlap) pressed.push_back(graph_.inside[c]);
+            pressed[count] = graph_.inside[c];
+            count += pressedDeeper(graph_.inside[c]);
         }
+        pressed.resize(count);
         std::vector<std::uint32_t>& moved = graph_.queue;  // free again: the levels are found
         for (int round = 1; round < kMostLevelRounds && !pressed.empty(); ++round) {
             for (const SpherePair& pair : pressed) inside(pair, false);
             moved.clear();
+            std::size_t besides = 0;  // of the moved spheres
             for (const SpherePair& pair : pressed) {
                 for (const std::uint32_t i : {pair.i, pair.j}) {
                     if (graph_.moved[i]) continue;
                     graph_.moved[i] = 1;
                     moved.push_back(i);
                     onFrozen(graph_.slotOf[i], false, 1, stats_);  // the level's rounds repeat it
+                    besides += graph_.besideStart[graph_.slotOf[i] + 1] - graph_.besideStart[graph_.slotOf[i]];
                 }
             }
             ++stats_.shockRounds;
-            pressed.clear();  // the level's contacts of the spheres just moved, each once
+            // The level's contacts of the spheres just moved, each once.
+            count = 0;
+            pressed.resize(besides);
             for (const std::uint32_t i : moved) {
                 const std::uint32_t s = graph_.slotOf[i];
                 for (std::uint32_t b = graph_.besideStart[s]; b < graph_.besideStart[s + 1]; ++b) {
                     const std::uint32_t j = graph_.beside[b];
-                    if (graph_.moved[j] && j < i) continue;
                     const SpherePair pair{std::min(i, j), std::max(i, j)};
-                    if (overlap(pair) > kSettledOverlap) pressed.push_back(pair);
+                    pressed[count] = pair;
+                    count += !(graph_.moved[j] && j < i) & pressedDeeper(pair);
                 }
             }
+            pressed.resize(count);
             for (const std::uint32_t i : moved) graph_.moved[i] = 0;
         }
     }
 
-    // The pair's overlap as a fraction of the smaller radius, 0 if it does not touch (the
-    // depth as touching() finds it, without the normal).
-    double overlap(const SpherePair& pair) const {
+    // Whether the pair overlaps by more than kSettledOverlap of the smaller radius (its
+    // depth as touching() finds it, without the normal; apart, the depth is below 0).
+    bool pressedDeeper(const SpherePair& pair) const {
         const glm::dvec3 delta = world_.position[pair.i] - world_.position[pair.j];
         const double reach = world_.radius[pair.i] + world_.radius[pair.j];  // m
-        const double distanceSquared = glm::dot(delta, delta);              // m^2
-        if (distanceSquared > reach * reach) return 0.0;
-        return (reach - std::sqrt(distanceSquared)) / std::min(world_.radius[pair.i], world_.radius[pair.j]);
+        const double depth = reach - std::sqrt(glm::dot(delta, delta));     // m
+        return depth / std::min(world_.radius[pair.i], world_.radius[pair.j]) > kSettledOverlap;
     }
 
     // Both spheres in the level: the passes' own response (static contacts) and split.
@@ -278,6 +304,7 @@ class Sweep {
 
     // Returns the overlap (m) it found.
     double onFrozenSphere(std::uint32_t i, std::uint32_t frozen, bool velocities, StepStats& stats) {
+        if (moves_ && !velocities) return pushOffFrozenSphere(i, frozen);
         SphereContact contact;  // u from the frozen sphere to i
         if (!touching(world_, SpherePair{i, frozen}, contact)) return 0.0;
         if (velocities && isStatic(glm::dot(world_.velocity[frozen] - world_.velocity[i], contact.u), params_)) {
@@ -288,6 +315,25 @@ class Sweep {
             lowerClearance(i, contact.depth);
         }
         return contact.depth;
+    }
+
+    // onFrozenSphere's positions only, as touching() and moveOffFrozenSphere do them but
+    // without a branch on whether the two touch (as good as random in a pile's rounds):
+    // apart, the sphere is left where it is. Returns the overlap (m), 0 if apart.
+    double pushOffFrozenSphere(std::uint32_t i, std::uint32_t frozen) {
+        glm::dvec3& p = world_.position[i];
+        const glm::dvec3 delta = p - world_.position[frozen];
+        const double reach = world_.radius[i] + world_.radius[frozen];  // m
+        const double distanceSquared = glm::dot(delta, delta);        // m^2
+        const double distance = std::sqrt(distanceSquared);           // m
+        const glm::dvec3 u = distance > 0.0 ? delta * (1.0 / distance) : glm::dvec3(0.0, 0.0, 1.0);
+        const bool touches = distanceSquared <= reach * reach;
+        const double depth = touches ? reach - distance : 0.0;  // m
+        glm::dvec3 moved = p;
+        moveOffFrozenSphere(moved, u, depth);
+        p = glm::dvec3(touches ? moved.x : p.x, touches ? moved.y : p.y, touches ? moved.z : p.z);
+        lowerClearance(i, depth);
+        return depth;
     }
 
     void onPlanes(std::uint32_t i, bool velocities, StepStats& stats) {
