@@ -1,5 +1,6 @@
 #include "app/run/simulation.h"
 
+#include <algorithm>
 #include <chrono>
 #include <exception>
 #include <functional>
@@ -22,7 +23,7 @@ void Simulation::startFrom(physics::World world) {
     accumulator_ = 0.0;
     lastStats_ = {};
     impacts_ = {};
-    behind_ = false;
+    behindFor_ = 0.0;
     history_.clear();
     overlays_.reset();
     ghosts_.reset();
@@ -85,7 +86,10 @@ void Simulation::updateRecording() {
 }
 
 int Simulation::advance(double realSeconds) {
-    if (paused) return 0;
+    if (paused) {
+        behindFor_ = 0.0;  // nothing is behind while paused
+        return 0;
+    }
     // A step is due when the accumulator holds h up to rounding: without the slack,
     // frames of exactly h would now and then run no step and then two.
     const double h = scene_.params.timeStep;
@@ -105,8 +109,9 @@ int Simulation::advance(double realSeconds) {
         lastStep = std::chrono::duration<double>(now - stepStart).count();
         if (std::chrono::duration<double>(now - start).count() + lastStep > wallBudget) break;
     }
-    behind_ = !paused && accumulator_ >= due;
-    if (behind_ || paused) accumulator_ = 0.0;
+    const bool behind = !paused && accumulator_ >= due;
+    behindFor_ = behind ? kBehindHoldSeconds : paused ? 0.0 : std::max(0.0, behindFor_ - realSeconds);
+    if (behind || paused) accumulator_ = 0.0;
     if (steps > 0) measureNow();
     return steps;
 }
@@ -120,7 +125,7 @@ int Simulation::catchUpTo(double time) {
         ++steps;
     }
     accumulator_ = 0.0;
-    behind_ = false;
+    behindFor_ = 0.0;
     if (steps > 0) measureNow();
     return steps;
 }
