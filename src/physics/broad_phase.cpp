@@ -359,25 +359,47 @@ std::uint64_t moverPairsWithStayers(const World& world, double margin, const Wor
     return tests;
 }
 
+// ws.moverCells <- where each cell's movers start in ws.moversByCell, by the cell's
+// number: a table of open addressing (linear probing), at least twice as big as the cells.
+void tableMoverCells(Workspace& ws) {
+    const std::vector<Workspace::MoverInCell>& byCell = ws.moversByCell;
+    std::size_t size = 16;
+    while (size < 2 * byCell.size()) size *= 2;
+    ws.moverCells.assign(size, 0);
+    for (std::uint32_t k = 0; k < byCell.size(); ++k) {
+        if (k > 0 && byCell[k].cell == byCell[k - 1].cell) continue;
+        std::size_t slot = byCell[k].cell & (size - 1);
+        while (ws.moverCells[slot] != 0) slot = (slot + 1) & (size - 1);
+        ws.moverCells[slot] = (std::uint64_t(byCell[k].cell) + 1) << 32 | k;
+    }
+}
+
+// The first of ws.moversByCell in a cell of [first, last]; moversByCell.size() if none.
+std::uint32_t firstMoverIn(const Workspace& ws, std::uint32_t first, std::uint32_t last) {
+    const std::size_t mask = ws.moverCells.size() - 1;
+    for (std::uint32_t cell = first; cell <= last; ++cell) {
+        for (std::size_t slot = cell & mask; ws.moverCells[slot] != 0; slot = (slot + 1) & mask) {
+            if (ws.moverCells[slot] >> 32 == std::uint64_t(cell) + 1) return std::uint32_t(ws.moverCells[slot]);
+        }
+    }
+    return std::uint32_t(ws.moversByCell.size());
+}
+
 // The movers' pairs with each other: ws.moversByCell (sorted by the build grid's cell they
 // are in now, then by number) from `range`, each against the movers of the cells around it,
 // each pair once. Appends to `out`, returns the distance tests.
 std::uint64_t moverPairsWithMovers(const World& world, double margin, const Workspace& ws, Range range,
                                    std::vector<SpherePair>& out) {
-    using MoverInCell = Workspace::MoverInCell;
-    const std::vector<MoverInCell>& byCell = ws.moversByCell;
-    const auto before = [](const MoverInCell& a, const MoverInCell& b) {
-        return a.cell != b.cell ? a.cell < b.cell : a.sphere < b.sphere;
-    };
+    const std::vector<Workspace::MoverInCell>& byCell = ws.moversByCell;
     std::uint64_t tests = 0;
     for (std::uint32_t k = range.begin; k < range.end; ++k) {
-        const MoverInCell& mover = byCell[k];
+        const Workspace::MoverInCell& mover = byCell[k];
         forRowsAround(ws.gridAtBuild, ws.gridAtBuild.cellAt(mover.cell), [&](std::uint32_t first, std::uint32_t last) {
-            const auto from = std::lower_bound(byCell.begin(), byCell.end(), MoverInCell{first, 0}, before);
-            for (auto other = from; other != byCell.end() && other->cell <= last; ++other) {
-                if (other->sphere <= mover.sphere) continue;
+            for (std::uint32_t other = firstMoverIn(ws, first, last); other < byCell.size() && byCell[other].cell <= last;
+                 ++other) {
+                if (byCell[other].sphere <= mover.sphere) continue;
                 ++tests;
-                const SpherePair pair{mover.sphere, other->sphere};
+                const SpherePair pair{mover.sphere, byCell[other].sphere};
                 if (withinReach(world, pair, margin)) out.push_back(pair);
             }
         });
@@ -402,6 +424,7 @@ std::uint64_t findMoverPairs(const World& world, double margin, Workspace& ws, i
     std::sort(byCell.begin(), byCell.end(), [](const MoverInCell& a, const MoverInCell& b) {
         return a.cell != b.cell ? a.cell < b.cell : a.sphere < b.sphere;
     });
+    tableMoverCells(ws);
     threads = std::max(threads, 1);
     const int tasks = threads > 1 ? 4 * threads : 1;
     ws.tasks.resize(std::size_t(tasks));

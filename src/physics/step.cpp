@@ -51,11 +51,30 @@ struct Extent {
     double radiusSum = 0.0;  // m
 };
 
+// In kExtentLanes independent running maxima and sums, joined at the end: one chain of
+// additions through every radius took 0.19 ms a step at 64k spheres. The sum only tells
+// whether the radii changed since the broad phase's build (compared with itself), and
+// its lanes do not depend on the thread count.
+constexpr std::size_t kExtentLanes = 8;
+
 Extent extentOf(const World& world) {
+    const std::vector<double>& radius = world.radius;  // m
+    double most[kExtentLanes] = {}, sum[kExtentLanes] = {};
+    const std::size_t whole = radius.size() - radius.size() % kExtentLanes;
+    for (std::size_t i = 0; i < whole; i += kExtentLanes) {
+        for (std::size_t lane = 0; lane < kExtentLanes; ++lane) {
+            most[lane] = std::max(most[lane], radius[i + lane]);
+            sum[lane] += radius[i + lane];
+        }
+    }
+    for (std::size_t i = whole; i < radius.size(); ++i) {
+        most[0] = std::max(most[0], radius[i]);
+        sum[0] += radius[i];
+    }
     Extent e;
-    for (double r : world.radius) {
-        e.maxRadius = std::max(e.maxRadius, r);
-        e.radiusSum += r;
+    for (std::size_t lane = 0; lane < kExtentLanes; ++lane) {
+        e.maxRadius = std::max(e.maxRadius, most[lane]);
+        e.radiusSum += sum[lane];
     }
     return e;
 }
@@ -101,23 +120,29 @@ void keepPairsWithinReach(World& world, double margin, int threads, std::vector<
     const bool anyMover = !ws.movers.empty();
     const int tasks = threads > 1 ? 4 * threads : 1;
     ws.tasks.resize(std::size_t(tasks));
+    std::vector<std::size_t> keptStart(std::size_t(tasks) + 1, 0);  // task t's kept pairs; then where they go in out
     runTasks(threads, tasks, [&](int t) {
         const Range range = rangeOf(ws.pairs.size(), t, tasks);
         // Each pair written and counted when kept, without a branch: about half of the
         // cached pairs are within the margin, as good as at random.
-        std::vector<SpherePair>& kept = ws.tasks[std::size_t(t)].pairs;
-        kept.resize(range.end - range.begin);
+        std::vector<SpherePair>& candidates = ws.tasks[std::size_t(t)].kept;
+        if (candidates.size() < range.end - range.begin) candidates.resize(range.end - range.begin);
         std::size_t count = 0;
         for (std::uint32_t k = range.begin; k < range.end; ++k) {
             const SpherePair pair = ws.pairs[k];
             const bool moves = anyMover && (ws.isMover[pair.i] | ws.isMover[pair.j]);
-            kept[count] = pair;
+            candidates[count] = pair;
             count += !moves & withinReach(world, pair, margin);
         }
-        kept.resize(count);
+        keptStart[std::size_t(t) + 1] = count;
     });
-    out.clear();
-    for (const TaskScratch& task : ws.tasks) out.insert(out.end(), task.pairs.begin(), task.pairs.end());
+    for (int t = 0; t < tasks; ++t) keptStart[std::size_t(t) + 1] += keptStart[std::size_t(t)];
+    out.resize(keptStart.back());
+    runTasks(threads, tasks, [&](int t) {  // joined on the threads too (0.1 ms at 64k)
+        const std::size_t begin = keptStart[std::size_t(t)], end = keptStart[std::size_t(t) + 1];
+        const SpherePair* first = ws.tasks[std::size_t(t)].kept.data();
+        std::copy(first, first + (end - begin), out.begin() + std::ptrdiff_t(begin));
+    });
     if (!anyMover) return;
     stats.pairTests += findMoverPairs(world, margin, ws, threads);
     const std::size_t kept = out.size();

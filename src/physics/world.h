@@ -87,7 +87,8 @@ struct WallContact {
 // What one parallel task of the broad phase writes. A cache line of its own, so that
 // two threads appending to their vectors never write to the same line.
 struct alignas(64) TaskScratch {
-    std::vector<SpherePair> pairs;        // the pairs this task found or kept
+    std::vector<SpherePair> pairs;        // the pairs this task found
+    std::vector<SpherePair> kept;         // the cached pairs it kept, at the front; only grows
     std::vector<std::uint32_t> partners;  // candidates of one sphere, only grows
 };
 
@@ -212,6 +213,7 @@ struct Workspace {
         std::uint32_t cell, sphere;
     };
     std::vector<MoverInCell> moversByCell;  // scratch
+    std::vector<std::uint64_t> moverCells;  // scratch: open addressing, (cell + 1) << 32 | its first in moversByCell
     // The grid of the last grid build, and the spheres in it as they were then.
     GridShape gridAtBuild;
     std::vector<std::uint32_t> cellOfSphere;
