@@ -93,22 +93,30 @@ bool cacheServes(World& world, const Extent& extent, double margin, int threads)
     }
     const double slack = 0.5 * (ws.reachAtBuild - margin);  // m
     ws.isMover.resize(world.size());
+    std::vector<std::size_t> moverStart(std::size_t(threads) + 1, 0);  // task t's movers; then where they go
     runTasks(threads, threads, [&](int t) {
         const Range range = rangeOf(world.size(), t, threads);
+        std::size_t count = 0;
         for (std::uint32_t i = range.begin; i < range.end; ++i) {
             const glm::dvec3 move = world.position[i] - ws.positionsAtBuild[i];
             ws.isMover[i] = !(glm::dot(move, move) <= slack * slack);  // a NaN moves
+            count += ws.isMover[i];
         }
+        moverStart[std::size_t(t) + 1] = count;
     });
-    ws.movers.clear();
+    for (int t = 0; t < threads; ++t) moverStart[std::size_t(t) + 1] += moverStart[std::size_t(t)];
     // Below a few thousand spheres a new build costs less than the movers' searches (the
     // 1k pile ran 10 % slower with them): a mover there means a build.
     const std::size_t most = world.size() >= kParallelMinSpheres ? world.size() / kMostMoversPerSphere : 0;
-    for (std::uint32_t i = 0; i < world.size(); ++i) {
-        if (!ws.isMover[i]) continue;
-        if (ws.movers.size() == most) return false;
-        ws.movers.push_back(i);
-    }
+    ws.movers.resize(moverStart.back() > most ? 0 : moverStart.back());
+    if (moverStart.back() > most) return false;
+    runTasks(threads, threads, [&](int t) {  // listed on the threads too, in index order
+        const Range range = rangeOf(world.size(), t, threads);
+        std::size_t next = moverStart[std::size_t(t)];
+        for (std::uint32_t i = range.begin; i < range.end; ++i) {
+            if (ws.isMover[i]) ws.movers[next++] = i;
+        }
+    });
     return true;
 }
 
