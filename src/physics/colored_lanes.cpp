@@ -237,6 +237,12 @@ std::uint32_t separateColorInLanes(World& world, const Params& params, const Sph
                                    bool respond, int width) {
     // The overflow colour's pairs may share a sphere: one at a time, by the caller.
     if (first >= overflowRange(world.workspace).begin) return first;
+    return separateSideBySide(world, params, pairs, first, last, stats, pass, positionFactor, respond, width);
+}
+
+std::uint32_t separateSideBySide(World& world, const Params& params, const SpherePair* pairs, std::uint32_t first,
+                                 std::uint32_t last, StepStats& stats, int pass, double positionFactor, bool respond,
+                                 int width) {
     static const int widest = laneWidths().back();
     switch (width == 0 ? widest : width) {
 #ifdef SPHERES_WIDE_LANES

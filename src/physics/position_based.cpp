@@ -19,13 +19,14 @@ namespace {
 void particlesVelocityAndPosition(World& world, const Params& params, StepStats& stats,
                                   int pass, PositionResponse response, bool respond) {
     std::vector<double>& clearance = world.workspace.wallClearance;  // m
-    const bool inLanes = params.order == PairOrder::Colored && !world.recordContacts;
-    forEachPairInPassOrder(world, params, stats, [&](const SpherePair* pairs, std::uint32_t first,
-                                                     std::uint32_t last, StepStats& s) {
+    const bool byWavefronts = passesByWavefronts(world, params);
+    const bool inLanes = byWavefronts || (params.order == PairOrder::Colored && !world.recordContacts);
+    const auto visit = [&](const SpherePair* pairs, std::uint32_t first, std::uint32_t last, StepStats& s) {
         std::uint32_t k = first;
-        if (inLanes) {  // a colour's pairs, several side by side (colored_lanes.cpp)
-            k = separateColorInLanes(world, params, pairs, first, last, s, pass,
-                                     positionResponseDistance(response, 1.0, params), respond);
+        if (inLanes) {  // a wavefront's or a colour's pairs, several side by side (colored_lanes.cpp)
+            const double factor = positionResponseDistance(response, 1.0, params);
+            k = byWavefronts ? separateSideBySide(world, params, pairs, first, last, s, pass, factor, respond)
+                             : separateColorInLanes(world, params, pairs, first, last, s, pass, factor, respond);
         }
         for (; k < last; ++k) {
             const SpherePair& pair = pairs[k];
@@ -39,7 +40,12 @@ void particlesVelocityAndPosition(World& world, const Params& params, StepStats&
             clearance[pair.i] -= moved.first;
             clearance[pair.j] -= moved.second;
         }
-    });
+    };
+    if (byWavefronts) {
+        forEachWavefront(world, params, stats, visit);
+    } else {
+        forEachPairInPassOrder(world, params, stats, visit);
+    }
 }
 
 // A sphere whose wall clearance is above 0 touches no plane: passed by.

@@ -379,8 +379,13 @@ void findOrderedPairs(World& world, const Params& params, StepStats& stats) {
     reorder(world, params.order);
     const int passThreads = threadsFor(world, params);
     ws.shareThreads = 1;
-    // The colored order shares out each colour as it goes (forEachColor).
-    if (passThreads > 1 && params.order != PairOrder::Colored) sharePairsOut(world, passThreads);
+    // The colored order shares out each colour as it goes (forEachColor), and so do the
+    // position stages' wavefronts (forEachWavefront).
+    if (passesByWavefronts(world, params)) {
+        findWavefronts(world);
+    } else if (passThreads > 1 && params.order != PairOrder::Colored) {
+        sharePairsOut(world, passThreads);
+    }
 }
 
 namespace {

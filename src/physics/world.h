@@ -254,6 +254,12 @@ struct Workspace {
     std::vector<SpherePair> colorSorted;        // scratch: the pairs placed colour by colour
     std::vector<std::uint32_t> colorNext;       // scratch: where each colour's next pair goes
     std::vector<double> slabSample;  // m: scratch of the share-out, coordinates that place its slabs
+    // The lecture's orders wavefront by wavefront (wavefronts.cpp): wavefront w's pairs at
+    // wavefrontOrder[wavefrontStart[w], wavefrontStart[w + 1]), each in pass order.
+    std::vector<SpherePair> wavefrontOrder;
+    std::vector<std::uint32_t> wavefrontStart;
+    std::vector<std::uint32_t> wavefrontOfPair;  // scratch: per pair in pass order
+    std::vector<std::uint32_t> wavefrontNext;    // scratch: per sphere, then per wavefront
     // The contacts of a step whose positions stay put while its passes run (velocity
     // based, response only): found once, used by every pass (findContacts).
     std::vector<std::uint8_t> pairTouches;     // per pair, in the order the passes visit them

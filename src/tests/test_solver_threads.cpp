@@ -353,7 +353,8 @@ TEST(SharedPairs, WaitForThePairThatMetTheirSpheresBefore) {
     const physics::World landed = run(pile({}), 60);
     for (const char* order : {"index", "shuffled"}) {
         physics::World world = landed;
-        const physics::Params params = pile({std::string("order=") + order, "threads=3"}).params;
+        // The velocity method: the position stages run their pairs by wavefronts instead.
+        const physics::Params params = pile({std::string("order=") + order, "threads=3", "method=velocity"}).params;
         physics::StepStats stats;
         physics::findOrderedPairs(world, params, stats);
         const physics::Workspace& ws = world.workspace;
@@ -403,7 +404,7 @@ struct ShareOut {
 };
 ShareOut shareOutOf(physics::World world) {
     world.workspace = physics::Workspace{};
-    const physics::Params params = pile({"threads=2"}).params;
+    const physics::Params params = pile({"threads=2", "method=velocity"}).params;  // as above
     physics::StepStats stats;
     physics::findOrderedPairs(world, params, stats);
     const physics::Workspace& ws = world.workspace;

@@ -1,0 +1,87 @@
+// The lecture's pair orders run wavefront by wavefront (wavefronts.cpp): the wavefronts
+// themselves, and the pass order's state, bit for bit, from the position stages that run
+// them several pairs side by side and on threads.
+#include <gtest/gtest.h>
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "physics/diagnostics.h"
+#include "physics/solver_stages.h"
+#include "physics/step.h"
+#include "scenes/parameters.h"
+#include "scenes/presets.h"
+#include "scenes/scene.h"
+#include "scenes/scene_json.h"
+
+namespace {
+
+// The pile preset (1000 spheres) after "name=value" settings.
+scenes::Scene pile(std::initializer_list<std::string> settings) {
+    scenes::Scene scene = scenes::loadScene(scenes::presetPath("11_pile"));
+    for (const std::string& setting : settings) EXPECT_EQ(scenes::applySetting(scene, setting), "") << setting;
+    return scene;
+}
+
+}  // namespace
+
+// No two pairs of a wavefront share a sphere, and each sphere meets its pairs in pass
+// order: a pair's wavefront is later than those of its spheres' earlier pairs.
+TEST(Wavefronts, NoTwoPairsOfAWavefrontShareASphereAndEachSphereMeetsItsPairsInPassOrder) {
+    for (const char* order : {"index", "reversed", "shuffled"}) {
+        const scenes::Scene scene = pile({std::string("order=") + order});
+        physics::World world = scenes::buildWorld(scene);
+        for (int k = 0; k < 90; ++k) physics::step(world, scene.params);  // 1.5 s: landing
+        physics::StepStats stats;
+        physics::findOrderedPairs(world, scene.params, stats);
+        ASSERT_TRUE(physics::passesByWavefronts(world, scene.params) || physics::laneWidths().back() < 4);
+        physics::findWavefronts(world);
+        const physics::Workspace& ws = world.workspace;
+        ASSERT_EQ(ws.wavefrontOrder.size(), ws.visitOrder.size());
+        ASSERT_GT(ws.wavefrontStart.size(), 10u) << order;
+        std::vector<int> wavefrontOf(ws.visitOrder.size());
+        std::vector<int> lastWavefront(world.size(), -1);  // of each sphere's latest pair in pass order
+        std::map<std::pair<std::uint32_t, std::uint32_t>, int> wavefrontOfPair;
+        for (std::size_t w = 0; w + 1 < ws.wavefrontStart.size(); ++w) {
+            std::vector<bool> met(world.size(), false);
+            for (std::uint32_t k = ws.wavefrontStart[w]; k < ws.wavefrontStart[w + 1]; ++k) {
+                const physics::SpherePair pair = ws.wavefrontOrder[k];
+                EXPECT_FALSE(met[pair.i] || met[pair.j]) << order << ": wavefront " << w;
+                met[pair.i] = met[pair.j] = true;
+                wavefrontOfPair[{pair.i, pair.j}] = int(w);
+            }
+        }
+        ASSERT_EQ(wavefrontOfPair.size(), ws.visitOrder.size()) << "each pair once";
+        for (const physics::SpherePair& pair : ws.visitOrder) {
+            const int w = wavefrontOfPair.at({pair.i, pair.j});
+            EXPECT_GT(w, lastWavefront[pair.i]) << order;
+            EXPECT_GT(w, lastWavefront[pair.j]) << order;
+            lastWavefront[pair.i] = lastWavefront[pair.j] = w;
+        }
+    }
+}
+
+// Position based and reflection in the lecture's orders, by wavefronts on one and two
+// threads, against one pair at a time in pass order (a contact log turns the wavefronts
+// off): the same state after every step.
+TEST(Wavefronts, TheLecturesOrdersReachTheStateOfOnePairAtATime) {
+    for (const char* method : {"position", "reflection"}) {
+        for (const char* order : {"index", "reversed", "shuffled"}) {
+            for (const char* threads : {"1", "2"}) {
+                const scenes::Scene scene = pile({std::string("method=") + method, std::string("order=") + order,
+                                                  "count=10000", "radius=0.0232", std::string("threads=") + threads});
+                physics::World wavefronts = scenes::buildWorld(scene), onePair = wavefronts;
+                onePair.recordContacts = true;
+                for (int k = 0; k < 40; ++k) {
+                    physics::step(wavefronts, scene.params);
+                    physics::step(onePair, scene.params);
+                    onePair.contacts.clear();
+                    ASSERT_EQ(physics::stateHash(wavefronts), physics::stateHash(onePair))
+                        << method << ", " << order << ", " << threads << " threads, step " << k;
+                }
+                EXPECT_EQ(physics::passesByWavefronts(wavefronts, scene.params), physics::laneWidths().back() >= 4);
+            }
+        }
+    }
+}
