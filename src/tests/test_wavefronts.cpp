@@ -62,26 +62,30 @@ TEST(Wavefronts, NoTwoPairsOfAWavefrontShareASphereAndEachSphereMeetsItsPairsInP
     }
 }
 
-// Position based and reflection in the lecture's orders, by wavefronts on one and two
-// threads, against one pair at a time in pass order (a contact log turns the wavefronts
-// off): the same state after every step.
+// Position based and reflection in the lecture's orders (and passes until converged), by
+// wavefronts on one and two threads, against one pair at a time in pass order (a contact
+// log turns the wavefronts off): the same state after every step.
 TEST(Wavefronts, TheLecturesOrdersReachTheStateOfOnePairAtATime) {
-    for (const char* method : {"position", "reflection"}) {
-        for (const char* order : {"index", "reversed", "shuffled"}) {
-            for (const char* threads : {"1", "2"}) {
-                const scenes::Scene scene = pile({std::string("method=") + method, std::string("order=") + order,
-                                                  "count=10000", "radius=0.0232", std::string("threads=") + threads});
-                physics::World wavefronts = scenes::buildWorld(scene), onePair = wavefronts;
-                onePair.recordContacts = true;
-                for (int k = 0; k < 40; ++k) {
-                    physics::step(wavefronts, scene.params);
-                    physics::step(onePair, scene.params);
-                    onePair.contacts.clear();
-                    ASSERT_EQ(physics::stateHash(wavefronts), physics::stateHash(onePair))
-                        << method << ", " << order << ", " << threads << " threads, step " << k;
-                }
-                EXPECT_EQ(physics::passesByWavefronts(wavefronts, scene.params), physics::laneWidths().back() >= 4);
+    const std::vector<std::vector<std::string>> cases = {
+        {"method=position", "order=index"},    {"method=position", "order=reversed"},
+        {"method=position", "order=shuffled"}, {"method=reflection", "order=index"},
+        {"method=reflection", "order=reversed"}, {"method=reflection", "order=shuffled"},
+        {"method=position", "order=index", "solver=until-converged", "passes=20"}};
+    for (const std::vector<std::string>& settings : cases) {
+        for (const char* threads : {"1", "2"}) {
+            scenes::Scene scene = pile({"count=10000", "radius=0.0232", std::string("threads=") + threads});
+            for (const std::string& setting : settings) EXPECT_EQ(scenes::applySetting(scene, setting), "") << setting;
+            physics::World wavefronts = scenes::buildWorld(scene), onePair = wavefronts;
+            onePair.recordContacts = true;
+            for (int k = 0; k < 40; ++k) {
+                physics::step(wavefronts, scene.params);
+                physics::step(onePair, scene.params);
+                onePair.contacts.clear();
+                ASSERT_EQ(physics::stateHash(wavefronts), physics::stateHash(onePair))
+                    << settings[0] << ", " << settings[1] << (settings.size() > 2 ? ", " + settings[2] : "") << ", "
+                    << threads << " threads, step " << k;
             }
+            EXPECT_EQ(physics::passesByWavefronts(wavefronts, scene.params), physics::laneWidths().back() >= 4);
         }
     }
 }
