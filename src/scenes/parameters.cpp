@@ -291,12 +291,13 @@ std::vector<Parameter> makeTable() {
                             "8192 spheres, where a second thread starts to pay, and one below; "
                             "auto tries one thread now and then and keeps it while more were "
                             "slower (other programs busy on the cores). "
-                            "The result is the same, bit for bit, for any thread count, in each pair order: "
-                            "each thread takes the pairs of its slab of the box, and waits where "
-                            "a sphere met another thread's pair last, so each sphere still meets "
-                            "its partners in the pair order (in the colored order, threads share "
-                            "each colour's pairs and never wait). Scenes under 4096 spheres use one "
-                            "thread whatever the count.",
+                            "The result is the same, bit for bit, for any thread count, in each pair order. "
+                            "The position stages visit the pairs wavefront by wavefront (on CPUs with AVX2 or "
+                            "AVX-512): no two pairs of a wavefront share a sphere, each sphere meets its "
+                            "partners in the pair order, and threads share a wavefront's pairs without waiting "
+                            "(in the colored order, a colour's). Otherwise each thread takes the pairs of its "
+                            "slab of the box, and waits where a sphere met another thread's pair last. "
+                            "Scenes under 4096 spheres use one thread whatever the count.",
                             param<&Params::threads>())),
         choice("broadphase", "broad phase", {"grid", "allpairs"},
                static_cast<double>(kDefaults.broadPhase),
