@@ -229,7 +229,7 @@ std::vector<int> laneWidths();
 // A colour or wavefront with fewer pairs than this is visited on one thread: handing it
 // out would cost more than it saves (a run of the team costs a few microseconds). The 16k
 // pile's wavefronts hold about 500 pairs: at 2048, its index order gained 1.16x from a
-// second thread, at 512 1.35x (the colored order the same at both; 256 did no better).
+// second thread, at 512 1.28-1.36x (the colored order the same at both; 256 did no better).
 constexpr std::uint32_t kColorShareMin = 512;
 // Tasks per thread of a colour, taken as they come, so that a thread slowed by another
 // process leaves its part to the others.
