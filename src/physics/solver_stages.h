@@ -278,16 +278,16 @@ void forEachColor(World& world, const Params& params, StepStats& stats, const Vi
 }
 
 // The lecture's pair orders (index, reversed, shuffled) wavefront by wavefront
-// (wavefronts.cpp): wavefront w holds each pair that comes, in pass order, after w pairs
-// that share a sphere with it one after the other, and no two of its pairs share a
-// sphere. Visited wavefront after wavefront, every sphere meets its pairs in pass order,
-// and pairs that share no sphere do not change each other: the pass order's result, bit
-// for bit, with a wavefront's pairs several side by side, and shared between threads.
-// The pile has 30 to 140 wavefronts from 1k to 64k spheres.
+// (wavefronts.cpp): a pair's wavefront is the length of the longest chain of earlier
+// pairs, in pass order, that leads to it, each sharing a sphere with the next; no two
+// pairs of a wavefront share a sphere. Visited wavefront after wavefront, every sphere
+// meets its pairs in pass order, and pairs that share no sphere do not change each other:
+// the pass order's result, bit for bit, with a wavefront's pairs several side by side and
+// shared between threads. The pile has 30 to 140 wavefronts from 1k to 64k spheres.
 //
 // Whether the position based pair stage runs by wavefronts: the lecture's orders, the
-// sequential velocity stage, no contact log, and a CPU with 4 lanes or more (2 lanes
-// cost what they save).
+// sequential solvers (the global ones answer velocities by their own order), no contact
+// log, and a CPU with 4 lanes or more (2 lanes cost what they save).
 bool passesByWavefronts(const World& world, const Params& params);
 // Workspace::wavefrontOrder and wavefrontStart from visitOrder.
 void findWavefronts(World& world);
