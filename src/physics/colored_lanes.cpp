@@ -200,10 +200,74 @@ LANES_INLINE std::uint32_t separateInLanes(World& world, const Params& params, c
     return k;
 }
 
+// shock_propagation.cpp's pushOffFrozenSphere for W spheres side by side: each pushed off
+// the frozen spheres below it (graph.below), one after another, positions only, with the
+// same operations in the same order as the one-sphere code. A lane whose sphere has no
+// frozen sphere left at a turn is masked (pushed by 0).
+template <int W>
+LANES_INLINE void pushOffFrozenInLanes(World& world, const ContactGraph& graph, const std::uint32_t* spheres,
+                                       bool lowerClearance) {
+    using Value = typename Lanes<W>::Value;
+    using Mask = typename Lanes<W>::Mask;
+    using Vec = typename Lanes<W>::Vec;
+    std::uint32_t i[W], first[W], count[W], most = 0;
+    for (int l = 0; l < W; ++l) {
+        i[l] = spheres[l];
+        const std::uint32_t s = graph.slotOf[i[l]];
+        first[l] = graph.belowStart[s];
+        count[l] = graph.belowStart[s + 1] - first[l];
+        most = count[l] > most ? count[l] : most;
+    }
+    glm::dvec3* position = world.position.data();
+    const double* radius = world.radius.data();
+    double* clearance = world.workspace.wallClearance.data();
+    const Value zero = splat<Value>(0.0);
+    Vec p = gather<W>(position, i);
+    const Value r = gather<W>(radius, i);  // m
+    Value lowered = lowerClearance ? gather<W>(clearance, i) : zero;  // m
+    for (std::uint32_t b = 0; b < most; ++b) {
+        std::uint32_t frozen[W];
+        Mask active;
+        for (int l = 0; l < W; ++l) {
+            active[l] = b < count[l] ? -1 : 0;
+            frozen[l] = b < count[l] ? graph.below[first[l] + b] : i[l];
+        }
+        const Vec delta = sub(p, gather<W>(position, frozen));
+        const Value reach = r + gather<W>(radius, frozen);  // m
+        const Value distanceSquared = dot(delta, delta);   // m^2
+        Value distance;                                    // m
+        for (int l = 0; l < W; ++l) distance[l] = std::sqrt(distanceSquared[l]);
+        const Value inverse = 1.0 / distance;
+        const Mask apart = distance > 0.0;
+        const Vec u{apart ? delta.x * inverse : zero, apart ? delta.y * inverse : zero,
+                    apart ? delta.z * inverse : splat<Value>(1.0)};
+        const Mask touches = active & (distanceSquared <= reach * reach);
+        const Value depth = touches ? reach - distance : zero;  // m
+        p = choose(touches, add(p, scale(depth, u)), p);
+        lowered = lowered - depth;
+    }
+    scatter<W>(position, i, p);
+    if (lowerClearance) {
+        for (int l = 0; l < W; ++l) clearance[i[l]] = lowered[l];
+    }
+}
+
+template <int W>
+LANES_INLINE void pushOffFrozenSideBySide(World& world, const ContactGraph& graph, const std::uint32_t* spheres,
+                                          std::size_t count, bool lowerClearance) {
+    std::size_t k = 0;
+    for (; k + W <= count; k += W) pushOffFrozenInLanes<W>(world, graph, spheres + k, lowerClearance);
+    for (; k < count; ++k) pushOffFrozenInLanes<1>(world, graph, spheres + k, lowerClearance);
+}
+
 // One function per width, each compiled for the instructions it needs.
 std::uint32_t separateIn2Lanes(World& world, const Params& params, const SpherePair* pairs, std::uint32_t first,
                                std::uint32_t last, StepStats& stats, int pass, double factor, bool respond) {
     return separateInLanes<2>(world, params, pairs, first, last, stats, pass, factor, respond);
+}
+void pushOffFrozenIn2Lanes(World& world, const ContactGraph& graph, const std::uint32_t* spheres, std::size_t count,
+                           bool lowerClearance) {
+    pushOffFrozenSideBySide<2>(world, graph, spheres, count, lowerClearance);
 }
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__EMSCRIPTEN__)
 #define SPHERES_WIDE_LANES 1
@@ -218,6 +282,16 @@ __attribute__((target("avx512f"))) std::uint32_t separateIn8Lanes(World& world, 
                                                                   std::uint32_t last, StepStats& stats, int pass,
                                                                   double factor, bool respond) {
     return separateInLanes<8>(world, params, pairs, first, last, stats, pass, factor, respond);
+}
+__attribute__((target("avx2"))) void pushOffFrozenIn4Lanes(World& world, const ContactGraph& graph,
+                                                           const std::uint32_t* spheres, std::size_t count,
+                                                           bool lowerClearance) {
+    pushOffFrozenSideBySide<4>(world, graph, spheres, count, lowerClearance);
+}
+__attribute__((target("avx512f"))) void pushOffFrozenIn8Lanes(World& world, const ContactGraph& graph,
+                                                              const std::uint32_t* spheres, std::size_t count,
+                                                              bool lowerClearance) {
+    pushOffFrozenSideBySide<8>(world, graph, spheres, count, lowerClearance);
 }
 #endif
 
@@ -250,6 +324,19 @@ std::uint32_t separateSideBySide(World& world, const Params& params, const Spher
         case 4: return separateIn4Lanes(world, params, pairs, first, last, stats, pass, positionFactor, respond);
 #endif
         default: return separateIn2Lanes(world, params, pairs, first, last, stats, pass, positionFactor, respond);
+    }
+}
+
+void pushOffFrozenSideBySide(World& world, const ContactGraph& graph, const std::uint32_t* spheres,
+                             std::size_t count, bool lowerClearance, int width) {
+    static const int widest = laneWidths().back();
+    switch (width == 0 ? widest : width) {
+#ifdef SPHERES_WIDE_LANES
+        case 8: return pushOffFrozenIn8Lanes(world, graph, spheres, count, lowerClearance);
+        case 4: return pushOffFrozenIn4Lanes(world, graph, spheres, count, lowerClearance);
+#endif
+        case 1: return pushOffFrozenSideBySide<1>(world, graph, spheres, count, lowerClearance);
+        default: return pushOffFrozenIn2Lanes(world, graph, spheres, count, lowerClearance);
     }
 }
 

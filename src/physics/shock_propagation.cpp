@@ -229,10 +229,13 @@ class Sweep {
                     if (graph_.moved[i]) continue;
                     graph_.moved[i] = 1;
                     moved.push_back(i);
-                    onFrozen(graph_.slotOf[i], false, 1, stats_);  // the level's rounds repeat it
                     besides += graph_.besideStart[graph_.slotOf[i] + 1] - graph_.besideStart[graph_.slotOf[i]];
                 }
             }
+            // Each moved sphere off the frozen spheres below it once (the level's rounds
+            // repeat it), then off its planes: onFrozen's later rounds, side by side.
+            pushOffFrozenSideBySide(world_, graph_, moved.data(), moved.size(), clearanceKept());
+            for (const std::uint32_t i : moved) onPlanes(i, false, stats_);
             ++stats_.shockRounds;
             // The level's contacts of the spheres just moved, each once.
             count = 0;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "physics/diagnostics.h"
+#include "physics/solver_stages.h"
 #include "physics/step.h"
 #include "physics_fixtures.h"
 #include "scenes/parameters.h"
@@ -446,4 +447,38 @@ TEST(ShockPropagation, TheGraphOfAWorldThatLostSpheresSinceItsLastStepIsEmpty) {
     EXPECT_EQ(graph.level, (std::vector<std::int32_t>{0, -1, -1, -1, -1}));
     physics::step(world, lecture(ShockPropagation::On, 1));
     EXPECT_EQ(world.workspace.contactGraph.level, (std::vector<std::int32_t>{0, 1, 2, 3, 4}));
+}
+
+// The sweep's pushes off the frozen level, several spheres side by side (colored_lanes.cpp):
+// every lane width the CPU runs moves the spheres of a level, and lowers their wall
+// clearances, as one sphere at a time does, bit for bit (the state hashes check the widest
+// against the sweep's own code before it).
+TEST(ShockPropagation, ThePushesOffTheFrozenLevelSideBySideAreThoseOfOneSphereAtATime) {
+    scenes::Scene scene = scenes::loadScene(scenes::presetPath("11_pile"));
+    for (const char* setting : {"count=10000", "radius=0.0232", "threads=1", "shock=on"}) {
+        ASSERT_EQ(scenes::applySetting(scene, setting), "") << setting;
+    }
+    physics::World world = scenes::buildWorld(scene);
+    for (int k = 0; k < 150; ++k) physics::step(world, scene.params);  // 2.5 s: landing
+    const physics::ContactGraph& graph = world.workspace.contactGraph;
+    ASSERT_GT(graph.levelStart.size(), 6u);
+    for (const std::uint32_t level : {1u, 3u, 5u}) {
+        const std::vector<std::uint32_t> spheres(graph.byLevel.begin() + graph.levelStart[level],
+                                                 graph.byLevel.begin() + graph.levelStart[level + 1]);
+        ASSERT_GT(spheres.size(), 20u) << "level " << level;
+        // The level sunk by 1 % of its radii, so that most of its spheres touch the level below.
+        physics::World sunk = world;
+        for (const std::uint32_t i : spheres) sunk.position[i].z -= 0.01 * sunk.radius[i];
+        physics::World one = sunk;
+        physics::pushOffFrozenSideBySide(one, graph, spheres.data(), spheres.size(), true, 1);
+        int moved = 0;
+        for (const std::uint32_t i : spheres) moved += one.position[i] != sunk.position[i];
+        EXPECT_GT(moved, int(spheres.size()) / 2) << "level " << level;
+        for (const int width : physics::laneWidths()) {
+            physics::World lanes = sunk;
+            physics::pushOffFrozenSideBySide(lanes, graph, spheres.data(), spheres.size(), true, width);
+            EXPECT_EQ(lanes.position, one.position) << width << " lanes, level " << level;
+            EXPECT_EQ(lanes.workspace.wallClearance, one.workspace.wallClearance) << width << " lanes";
+        }
+    }
 }
