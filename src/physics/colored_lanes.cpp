@@ -206,7 +206,7 @@ LANES_INLINE std::uint32_t separateInLanes(World& world, const Params& params, c
 // frozen sphere left at a turn is masked (pushed by 0).
 template <int W>
 LANES_INLINE void pushOffFrozenInLanes(World& world, const ContactGraph& graph, const std::uint32_t* spheres,
-                                       bool lowerClearance) {
+                                       bool lowerClearance, std::uint8_t* again, double settled) {
     using Value = typename Lanes<W>::Value;
     using Mask = typename Lanes<W>::Mask;
     using Vec = typename Lanes<W>::Vec;
@@ -225,6 +225,8 @@ LANES_INLINE void pushOffFrozenInLanes(World& world, const ContactGraph& graph, 
     Vec p = gather<W>(position, i);
     const Value r = gather<W>(radius, i);  // m
     Value lowered = lowerClearance ? gather<W>(clearance, i) : zero;  // m
+    Value deepest = zero;  // m
+    Value pushed = zero;   // frozen spheres it was pushed off
     for (std::uint32_t b = 0; b < most; ++b) {
         std::uint32_t frozen[W];
         Mask active;
@@ -245,19 +247,29 @@ LANES_INLINE void pushOffFrozenInLanes(World& world, const ContactGraph& graph, 
         const Value depth = touches ? reach - distance : zero;  // m
         p = choose(touches, add(p, scale(depth, u)), p);
         lowered = lowered - depth;
+        deepest = deepest < depth ? depth : deepest;  // as std::max
+        pushed = depth > 0.0 ? pushed + 1.0 : pushed;
     }
     scatter<W>(position, i, p);
     if (lowerClearance) {
         for (int l = 0; l < W; ++l) clearance[i[l]] = lowered[l];
     }
+    if (again) {
+        for (int l = 0; l < W; ++l) again[l] = pushed[l] > 1.0 && deepest[l] > settled * r[l];
+    }
 }
 
 template <int W>
 LANES_INLINE void pushOffFrozenSideBySide(World& world, const ContactGraph& graph, const std::uint32_t* spheres,
-                                          std::size_t count, bool lowerClearance) {
+                                          std::size_t count, bool lowerClearance, std::uint8_t* again,
+                                          double settled) {
     std::size_t k = 0;
-    for (; k + W <= count; k += W) pushOffFrozenInLanes<W>(world, graph, spheres + k, lowerClearance);
-    for (; k < count; ++k) pushOffFrozenInLanes<1>(world, graph, spheres + k, lowerClearance);
+    for (; k + W <= count; k += W) {
+        pushOffFrozenInLanes<W>(world, graph, spheres + k, lowerClearance, again ? again + k : nullptr, settled);
+    }
+    for (; k < count; ++k) {
+        pushOffFrozenInLanes<1>(world, graph, spheres + k, lowerClearance, again ? again + k : nullptr, settled);
+    }
 }
 
 // One function per width, each compiled for the instructions it needs.
@@ -266,8 +278,8 @@ std::uint32_t separateIn2Lanes(World& world, const Params& params, const SphereP
     return separateInLanes<2>(world, params, pairs, first, last, stats, pass, factor, respond);
 }
 void pushOffFrozenIn2Lanes(World& world, const ContactGraph& graph, const std::uint32_t* spheres, std::size_t count,
-                           bool lowerClearance) {
-    pushOffFrozenSideBySide<2>(world, graph, spheres, count, lowerClearance);
+                           bool lowerClearance, std::uint8_t* again, double settled) {
+    pushOffFrozenSideBySide<2>(world, graph, spheres, count, lowerClearance, again, settled);
 }
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__EMSCRIPTEN__)
 #define SPHERES_WIDE_LANES 1
@@ -285,13 +297,15 @@ __attribute__((target("avx512f"))) std::uint32_t separateIn8Lanes(World& world, 
 }
 __attribute__((target("avx2"))) void pushOffFrozenIn4Lanes(World& world, const ContactGraph& graph,
                                                            const std::uint32_t* spheres, std::size_t count,
-                                                           bool lowerClearance) {
-    pushOffFrozenSideBySide<4>(world, graph, spheres, count, lowerClearance);
+                                                           bool lowerClearance, std::uint8_t* again,
+                                                           double settled) {
+    pushOffFrozenSideBySide<4>(world, graph, spheres, count, lowerClearance, again, settled);
 }
 __attribute__((target("avx512f"))) void pushOffFrozenIn8Lanes(World& world, const ContactGraph& graph,
                                                               const std::uint32_t* spheres, std::size_t count,
-                                                              bool lowerClearance) {
-    pushOffFrozenSideBySide<8>(world, graph, spheres, count, lowerClearance);
+                                                              bool lowerClearance, std::uint8_t* again,
+                                                              double settled) {
+    pushOffFrozenSideBySide<8>(world, graph, spheres, count, lowerClearance, again, settled);
 }
 #endif
 
@@ -328,15 +342,16 @@ std::uint32_t separateSideBySide(World& world, const Params& params, const Spher
 }
 
 void pushOffFrozenSideBySide(World& world, const ContactGraph& graph, const std::uint32_t* spheres,
-                             std::size_t count, bool lowerClearance, int width) {
+                             std::size_t count, bool lowerClearance, std::uint8_t* again, double settled,
+                             int width) {
     static const int widest = laneWidths().back();
     switch (width == 0 ? widest : width) {
 #ifdef SPHERES_WIDE_LANES
-        case 8: return pushOffFrozenIn8Lanes(world, graph, spheres, count, lowerClearance);
-        case 4: return pushOffFrozenIn4Lanes(world, graph, spheres, count, lowerClearance);
+        case 8: return pushOffFrozenIn8Lanes(world, graph, spheres, count, lowerClearance, again, settled);
+        case 4: return pushOffFrozenIn4Lanes(world, graph, spheres, count, lowerClearance, again, settled);
 #endif
-        case 1: return pushOffFrozenSideBySide<1>(world, graph, spheres, count, lowerClearance);
-        default: return pushOffFrozenIn2Lanes(world, graph, spheres, count, lowerClearance);
+        case 1: return pushOffFrozenSideBySide<1>(world, graph, spheres, count, lowerClearance, again, settled);
+        default: return pushOffFrozenIn2Lanes(world, graph, spheres, count, lowerClearance, again, settled);
     }
 }
 

@@ -141,6 +141,8 @@ void findSweepOrder(ContactGraph& graph) {
     graph.besideStart.assign(graph.byLevel.size() + 1, 0);
     graph.slotOf.resize(graph.level.size());
     graph.moved.assign(graph.level.size(), 0);
+    graph.again.resize(graph.byLevel.size());
+    graph.goesOn.resize(graph.byLevel.size());
     std::uint32_t inside = 0, below = 0, beside = 0;
     for (std::size_t k = 0; k < levels; ++k) {
         for (std::uint32_t s = graph.levelStart[k]; s < graph.levelStart[k + 1]; ++s) {
@@ -194,13 +196,13 @@ class Sweep {
         const std::uint32_t first = graph_.levelStart[k], count = graph_.levelStart[k + 1] - first;
         const int threads = count >= kParallelLevelSpheres ? threadsFor(world_, params_) : 1;
         if (threads == 1) {
-            for (std::uint32_t s = first; s < first + count; ++s) onFrozen(s, true, kMostFrozenRounds, stats_);
+            onFrozen(first, first + count, stats_);
             return;
         }
         const int tasks = 4 * threads;
         runCountedTasks(threads, tasks, stats_, [&](int t, StepStats& local) {
             const Range range = rangeOf(count, t, tasks);
-            for (std::uint32_t s = first + range.begin; s < first + range.end; ++s) onFrozen(s, true, kMostFrozenRounds, local);
+            onFrozen(first + range.begin, first + range.end, local);
         });
     }
 
@@ -287,30 +289,53 @@ class Sweep {
         if (clearanceKept()) world_.workspace.wallClearance[i] -= moved;
     }
 
-    // byLevel's s-th sphere off the frozen spheres below it, then off the planes (walls
-    // last: never crossed), in at most `rounds` rounds: a round that pushed it off one
-    // frozen sphere only, or none deeper than kSettledOverlap of its radius, is the last.
-    void onFrozen(std::uint32_t s, bool velocities, int rounds, StepStats& stats) {
-        const std::uint32_t i = graph_.byLevel[s];
-        for (int round = 0; round < (moves_ ? rounds : 1); ++round) {
-            double deepest = 0.0;  // m
-            int pushed = 0;
-            for (std::uint32_t b = graph_.belowStart[s]; b < graph_.belowStart[s + 1]; ++b) {
-                const double depth = onFrozenSphere(i, graph_.below[b], velocities && round == 0, stats);  // m
-                deepest = std::max(deepest, depth);
-                pushed += depth > 0.0;
+    // byLevel's spheres [begin, end) off the frozen spheres below them, then off their
+    // planes (walls last: never crossed), in at most kMostFrozenRounds rounds: a round that
+    // pushed a sphere off one frozen sphere only, or none deeper than kSettledOverlap of its
+    // radius, is its last. The first round answers the static contacts too, one sphere at a
+    // time; the later ones move them only, several side by side. Each sphere moves only
+    // itself, against spheres that no longer move: the rounds of one sphere may wait for
+    // those of the others.
+    void onFrozen(std::uint32_t begin, std::uint32_t end, StepStats& stats) {
+        std::uint32_t* again = graph_.again.data() + begin;  // the spheres whose rounds go on
+        std::uint8_t* goesOn = graph_.goesOn.data() + begin;
+        std::uint32_t count = 0;
+        for (std::uint32_t s = begin; s < end; ++s) {
+            again[count] = graph_.byLevel[s];
+            count += firstRoundOnFrozen(s, stats);
+        }
+        for (int round = 1; round < kMostFrozenRounds && count > 0; ++round) {
+            pushOffFrozenSideBySide(world_, graph_, again, count, clearanceKept(), goesOn, kSettledOverlap);
+            std::uint32_t left = 0;
+            for (std::uint32_t c = 0; c < count; ++c) {
+                onPlanes(again[c], false, stats);
+                again[left] = again[c];
+                left += goesOn[c];
             }
-            onPlanes(i, velocities && round == 0, stats);
-            if (pushed <= 1 || deepest <= kSettledOverlap * world_.radius[i]) return;
+            count = left;
         }
     }
 
-    // Returns the overlap (m) it found.
-    double onFrozenSphere(std::uint32_t i, std::uint32_t frozen, bool velocities, StepStats& stats) {
-        if (moves_ && !velocities) return pushOffFrozenSphere(i, frozen);
+    // byLevel's s-th sphere's first round: velocities (the static contacts), then positions.
+    // Returns whether it needs another.
+    bool firstRoundOnFrozen(std::uint32_t s, StepStats& stats) {
+        const std::uint32_t i = graph_.byLevel[s];
+        double deepest = 0.0;  // m
+        int pushed = 0;
+        for (std::uint32_t b = graph_.belowStart[s]; b < graph_.belowStart[s + 1]; ++b) {
+            const double depth = onFrozenSphere(i, graph_.below[b], stats);  // m
+            deepest = std::max(deepest, depth);
+            pushed += depth > 0.0;
+        }
+        onPlanes(i, true, stats);
+        return moves_ && pushed > 1 && deepest > kSettledOverlap * world_.radius[i];
+    }
+
+    // The first round's contact with a frozen sphere. Returns the overlap (m) it found.
+    double onFrozenSphere(std::uint32_t i, std::uint32_t frozen, StepStats& stats) {
         SphereContact contact;  // u from the frozen sphere to i
         if (!touching(world_, SpherePair{i, frozen}, contact)) return 0.0;
-        if (velocities && isStatic(glm::dot(world_.velocity[frozen] - world_.velocity[i], contact.u), params_)) {
+        if (isStatic(glm::dot(world_.velocity[frozen] - world_.velocity[i], contact.u), params_)) {
             respondToFrozenContact(world_, i, frozen, contact, params_, stats);
         }
         if (moves_) {
@@ -318,25 +343,6 @@ class Sweep {
             lowerClearance(i, contact.depth);
         }
         return contact.depth;
-    }
-
-    // onFrozenSphere's positions only, as touching() and moveOffFrozenSphere do them but
-    // without a branch on whether the two touch (as good as random in a pile's rounds):
-    // apart, the sphere is left where it is. Returns the overlap (m), 0 if apart.
-    double pushOffFrozenSphere(std::uint32_t i, std::uint32_t frozen) {
-        glm::dvec3& p = world_.position[i];
-        const glm::dvec3 delta = p - world_.position[frozen];
-        const double reach = world_.radius[i] + world_.radius[frozen];  // m
-        const double distanceSquared = glm::dot(delta, delta);        // m^2
-        const double distance = std::sqrt(distanceSquared);           // m
-        const glm::dvec3 u = distance > 0.0 ? delta * (1.0 / distance) : glm::dvec3(0.0, 0.0, 1.0);
-        const bool touches = distanceSquared <= reach * reach;
-        const double depth = touches ? reach - distance : 0.0;  // m
-        glm::dvec3 moved = p;
-        moveOffFrozenSphere(moved, u, depth);
-        p = glm::dvec3(touches ? moved.x : p.x, touches ? moved.y : p.y, touches ? moved.z : p.z);
-        lowerClearance(i, depth);
-        return depth;
     }
 
     void onPlanes(std::uint32_t i, bool velocities, StepStats& stats) {

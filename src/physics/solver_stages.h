@@ -226,10 +226,12 @@ std::uint32_t separateSideBySide(World& world, const Params& params, const Spher
 // The shock sweep's (shock_propagation.cpp) spheres[0, count) of one level, each pushed off
 // the frozen spheres below it in turn, positions only, several side by side: what its
 // one-sphere code gives, bit for bit. With `lowerClearance`, each push lowers the
-// sphere's wall clearance by its length. `width`: spheres side by side, 1 or one of
-// laneWidths(), 0 the widest.
+// sphere's wall clearance by its length. With `again`, again[k] <- whether spheres[k] was
+// pushed off more than one frozen sphere, one of them deeper than `settled` times its
+// radius. `width`: spheres side by side, 1 or one of laneWidths(), 0 the widest.
 void pushOffFrozenSideBySide(World& world, const ContactGraph& graph, const std::uint32_t* spheres,
-                             std::size_t count, bool lowerClearance, int width = 0);
+                             std::size_t count, bool lowerClearance, std::uint8_t* again = nullptr,
+                             double settled = 0.0, int width = 0);
 
 // The lane widths this CPU runs, ascending: 2, and 4 with AVX2, 8 with AVX-512.
 std::vector<int> laneWidths();

@@ -164,6 +164,8 @@ struct ContactGraph {
     std::vector<std::uint32_t> slotOf;       // per sphere with a level: its s in byLevel
     std::vector<SpherePair> pressed;         // scratch: a level's contacts answered again
     std::vector<std::uint8_t> moved;         // scratch: per sphere, moved in this round
+    std::vector<std::uint32_t> again;        // scratch: per slot, the spheres whose frozen rounds go on
+    std::vector<std::uint8_t> goesOn;        // scratch: per slot, whether a sphere's rounds go on
     std::vector<SpherePair> builtFrom;       // the candidate pairs the sweep's graph was found from
     std::vector<glm::dvec3> positionsBeforePasses;  // m, the position stages' (shock on)
     std::vector<SpherePair> pairsAfterPasses;  // their pairs within reach after the passes, in index order

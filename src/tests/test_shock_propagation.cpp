@@ -470,14 +470,20 @@ TEST(ShockPropagation, ThePushesOffTheFrozenLevelSideBySideAreThoseOfOneSphereAt
         physics::World sunk = world;
         for (const std::uint32_t i : spheres) sunk.position[i].z -= 0.01 * sunk.radius[i];
         physics::World one = sunk;
-        physics::pushOffFrozenSideBySide(one, graph, spheres.data(), spheres.size(), true, 1);
+        std::vector<std::uint8_t> againOne(spheres.size(), 2), againLanes(spheres.size(), 2);
+        physics::pushOffFrozenSideBySide(one, graph, spheres.data(), spheres.size(), true, againOne.data(), 1e-3, 1);
         int moved = 0;
         for (const std::uint32_t i : spheres) moved += one.position[i] != sunk.position[i];
         EXPECT_GT(moved, int(spheres.size()) / 2) << "level " << level;
+        const auto goOn = std::count(againOne.begin(), againOne.end(), 1);
+        EXPECT_GT(goOn, 0) << "level " << level;
+        EXPECT_LT(goOn, std::ptrdiff_t(spheres.size())) << "level " << level;
         for (const int width : physics::laneWidths()) {
             physics::World lanes = sunk;
-            physics::pushOffFrozenSideBySide(lanes, graph, spheres.data(), spheres.size(), true, width);
+            physics::pushOffFrozenSideBySide(lanes, graph, spheres.data(), spheres.size(), true, againLanes.data(), 1e-3,
+                                             width);
             EXPECT_EQ(lanes.position, one.position) << width << " lanes, level " << level;
+            EXPECT_EQ(againLanes, againOne) << width << " lanes, level " << level;
             EXPECT_EQ(lanes.workspace.wallClearance, one.workspace.wallClearance) << width << " lanes";
         }
     }
