@@ -200,10 +200,11 @@ LANES_INLINE std::uint32_t separateInLanes(World& world, const Params& params, c
     return k;
 }
 
-// shock_propagation.cpp's pushOffFrozenSphere for W spheres side by side: each pushed off
-// the frozen spheres below it (graph.below), one after another, positions only, with the
-// same operations in the same order as the one-sphere code. A lane whose sphere has no
-// frozen sphere left at a turn is masked (pushed by 0).
+// The shock sweep's push of a sphere off the frozen spheres below it (shock_propagation.cpp,
+// graph.below), one after another, positions only, for W spheres side by side: along the
+// line of centres by the overlap, as touching() and moveOffFrozenSphere find and move them,
+// with the same operations in the same order (W = 1 is the one-sphere code). A lane whose
+// sphere has no frozen sphere left at a turn is masked (pushed by 0).
 template <int W>
 LANES_INLINE void pushOffFrozenInLanes(World& world, const ContactGraph& graph, const std::uint32_t* spheres,
                                        bool lowerClearance, std::uint8_t* again, double settled) {
