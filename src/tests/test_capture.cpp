@@ -4,6 +4,7 @@
 // stepped the same way here.
 #include <gtest/gtest.h>
 
+#include "image_compare.h"
 #include "shaded_colour.h"
 #include <imgui.h>
 #include <sys/wait.h>
@@ -330,14 +331,6 @@ TEST_P(CaptureImages, FloorIsDrawnBelowTheSpheresAndHiddenByThem) {
     // Outside the box, at the same height on screen, the background is darker.
     const glm::u8vec4 background = image.pixel(2, static_cast<int>(floor.y));
     EXPECT_GT(capture_test::luminance(floorPixel), capture_test::luminance(background) + 40.0f);
-}
-
-int differingPixels(const render::Image& a, const render::Image& b) {
-    int count = 0;
-    for (int y = 0; y < a.height; ++y) {
-        for (int x = 0; x < a.width; ++x) count += a.pixel(x, y) != b.pixel(x, y) ? 1 : 0;
-    }
-    return count;
 }
 
 TEST_P(CaptureImages, FramesChangeWhileTheBallFallsAndNotWhenNothingMoves) {

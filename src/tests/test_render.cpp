@@ -4,6 +4,7 @@
 #include <glad/gl.h>
 #include <gtest/gtest.h>
 
+#include "image_compare.h"
 #include "shaded_colour.h"
 #include <imgui.h>
 
@@ -764,14 +765,6 @@ struct PanelLayerRig {
     ui::ImGuiGlRenderer renderer;
     render::OffscreenTarget target;
 };
-
-int differingPixels(const render::Image& a, const render::Image& b) {
-    int differ = 0;
-    for (int y = 0; y < a.height; ++y) {
-        for (int x = 0; x < a.width; ++x) differ += a.pixel(x, y) != b.pixel(x, y) ? 1 : 0;
-    }
-    return differ;
-}
 
 // The panel layer: the first window is kept drawn in a texture and copied, and only what
 // changed is drawn again. Frames where one line of text changes, then nothing, then a
