@@ -201,7 +201,7 @@ LANES_INLINE std::uint32_t separateInLanes(World& world, const Params& params, c
 }
 
 // The shock sweep's push of a sphere off the frozen spheres below it (shock_propagation.cpp,
-// graph.below), one after another, positions only, for W spheres side by side: along the
+// its run of graph.neighbour one level down), one after another, positions only, for W spheres side by side: along the
 // line of centres by the overlap, as touching() and moveOffFrozenSphere find and move them,
 // with the same operations in the same order (W = 1 is the one-sphere code). A lane whose
 // sphere has no frozen sphere left at a turn is masked (pushed by 0).
@@ -214,9 +214,8 @@ LANES_INLINE void pushOffFrozenInLanes(World& world, const ContactGraph& graph, 
     std::uint32_t i[W], first[W], count[W], most = 0;
     for (int l = 0; l < W; ++l) {
         i[l] = spheres[l];
-        const std::uint32_t s = graph.slotOf[i[l]];
-        first[l] = graph.belowStart[s];
-        count[l] = graph.belowStart[s + 1] - first[l];
+        first[l] = graph.edgeStart[i[l]];  // its run of neighbours one level down
+        count[l] = graph.belowCount[i[l]];
         most = count[l] > most ? count[l] : most;
     }
     glm::dvec3* position = world.position.data();
@@ -233,7 +232,7 @@ LANES_INLINE void pushOffFrozenInLanes(World& world, const ContactGraph& graph, 
         Mask active;
         for (int l = 0; l < W; ++l) {
             active[l] = b < count[l] ? -1 : 0;
-            frozen[l] = b < count[l] ? graph.below[first[l] + b] : i[l];
+            frozen[l] = b < count[l] ? graph.neighbour[first[l] + b] : i[l];
         }
         const Vec delta = sub(p, gather<W>(position, frozen));
         const Value reach = r + gather<W>(radius, frozen);  // m

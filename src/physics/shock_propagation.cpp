@@ -9,6 +9,7 @@
 //   3. level k is frozen.
 // The weight of a whole stack then reaches the floor in one sweep, instead of one sphere
 // per pass. Spheres that reach no plane (a cluster in free fall) keep what the passes did.
+// The graph, kept from step to step and updated where its pairs changed: contact_graph.cpp.
 //
 // What the sweep answers: every overlap, by projection (the frozen side not moved; with
 // the reflection method too: a resting contact does not bounce, and (1 + beta) d lifted
@@ -39,136 +40,6 @@ constexpr std::uint32_t kParallelLevelSpheres = 512;
 // where a sphere moved in them by more than this fraction of the margin.
 constexpr double kMoveThatFindsPairsAgain = 0.25;
 
-// graph.edgeStart and graph.neighbour: the candidate pairs, all within the margin of
-// touching. A pair the passes left a hair apart is an edge too, so the sweep's moves, which
-// may close it, still reach the spheres above it (a column at K = 4 kept a gap under its
-// top sphere, which no level then lifted: 0.47 % of r). Each sphere's neighbours by
-// number, whatever the pair order: pairs taken in index order (i, then j) give them so,
-// and shuffled or coloured ones are sorted.
-void findEdges(const World& world, const std::vector<SpherePair>& pairs, PairOrder order, ContactGraph& graph) {
-    const std::size_t n = world.size();
-    graph.edgeStart.assign(n + 1, 0);
-    // The pairs are the last solver step's: a state put back since (the timeline) may hold
-    // fewer spheres. The app clears them then; no pair is read out of range either way.
-    const auto inRange = [n](const SpherePair& pair) { return pair.i < n && pair.j < n; };
-    if (!std::all_of(pairs.begin(), pairs.end(), inRange)) {
-        graph.neighbour.clear();
-        return;
-    }
-    for (const SpherePair& pair : pairs) {
-        ++graph.edgeStart[pair.i + 1];
-        ++graph.edgeStart[pair.j + 1];
-    }
-    for (std::size_t i = 0; i < n; ++i) graph.edgeStart[i + 1] += graph.edgeStart[i];
-    graph.neighbour.resize(graph.edgeStart[n]);
-    graph.next.assign(graph.edgeStart.begin(), graph.edgeStart.end() - 1);
-    const auto add = [&](const SpherePair& pair) {
-        graph.neighbour[graph.next[pair.i]++] = pair.j;
-        graph.neighbour[graph.next[pair.j]++] = pair.i;
-    };
-    if (order == PairOrder::Reversed) {
-        std::for_each(pairs.rbegin(), pairs.rend(), add);
-    } else {
-        std::for_each(pairs.begin(), pairs.end(), add);
-    }
-    if (order != PairOrder::Shuffled && order != PairOrder::Colored) return;
-    for (std::size_t i = 0; i < n; ++i) {
-        std::sort(graph.neighbour.begin() + graph.edgeStart[i], graph.neighbour.begin() + graph.edgeStart[i + 1]);
-    }
-}
-
-// Whether sphere i is within the margin of a plane (level 0). `clearance`, when the
-// position based passes kept it (solver_stages.h's wallClearance), passes by the spheres
-// surely farther: most of them.
-bool levelZero(const World& world, std::uint32_t i, const std::vector<double>* clearance) {
-    if (clearance && (*clearance)[i] > world.workspace.margin) return false;
-    return nearAPlane(world, i, world.workspace.margin);
-}
-
-// graph.level by a breadth-first search from the spheres that touch a plane, then
-// graph.byLevel and levelStart: the spheres with a level, by level, then by number.
-void findLevels(const World& world, ContactGraph& graph, const std::vector<double>* clearance) {
-    const std::size_t n = world.size();
-    std::vector<std::uint32_t>& queue = graph.queue;  // breadth-first order
-    queue.resize(n + 1);  // each sphere once, and a slot written past the last
-    graph.level.resize(n);
-    // The queue is written without a branch on whether a sphere is met for the first time
-    // (as good as random: a mispredicted branch per edge cost more than the search).
-    std::size_t tail = 0;
-    for (std::uint32_t i = 0; i < n; ++i) {
-        const bool zero = levelZero(world, i, clearance);
-        graph.level[i] = zero ? 0 : -1;
-        queue[tail] = i;
-        tail += zero;
-    }
-    for (std::size_t head = 0; head < tail; ++head) {
-        const std::uint32_t i = queue[head];
-        const std::int32_t above = graph.level[i] + 1;
-        for (std::uint32_t e = graph.edgeStart[i]; e < graph.edgeStart[i + 1]; ++e) {
-            const std::uint32_t j = graph.neighbour[e];
-            const bool first = graph.level[j] < 0;
-            graph.level[j] = first ? above : graph.level[j];
-            queue[tail] = j;
-            tail += first;
-        }
-    }
-    queue.resize(tail);
-    const std::size_t levels = queue.empty() ? 0 : std::size_t(graph.level[queue.back()]) + 1;
-    graph.levelStart.assign(levels + 1, 0);
-    for (const std::uint32_t i : queue) ++graph.levelStart[std::size_t(graph.level[i]) + 1];
-    for (std::size_t k = 0; k < levels; ++k) graph.levelStart[k + 1] += graph.levelStart[k];
-    graph.next.assign(graph.levelStart.begin(), graph.levelStart.end() - 1);
-    graph.byLevel.resize(queue.size());
-    for (std::uint32_t i = 0; i < n; ++i) {
-        if (graph.level[i] >= 0) graph.byLevel[graph.next[std::size_t(graph.level[i])]++] = i;
-    }
-}
-
-// The sweep's contacts in the order it visits them: graph.inside, the pairs inside each
-// level (by level, then by number), and graph.below, each sphere's neighbours one level
-// down (for byLevel's s-th sphere: below[belowStart[s], belowStart[s + 1])); and
-// graph.beside, its neighbours in its own level (pressAgain's).
-void findSweepOrder(ContactGraph& graph) {
-    const std::size_t levels = graph.levelStart.size() - 1;
-    // Each neighbour is written to every list and kept where it belongs (no branch: which
-    // list a neighbour belongs to is as good as random).
-    const std::size_t edges = graph.neighbour.size();
-    graph.inside.resize(edges / 2 + 1);
-    graph.below.resize(edges + 1);
-    graph.beside.resize(edges + 1);
-    graph.insideStart.assign(levels + 1, 0);
-    graph.belowStart.assign(graph.byLevel.size() + 1, 0);
-    graph.besideStart.assign(graph.byLevel.size() + 1, 0);
-    graph.slotOf.resize(graph.level.size());
-    graph.moved.assign(graph.level.size(), 0);
-    graph.again.resize(graph.byLevel.size());
-    graph.goesOn.resize(graph.byLevel.size());
-    std::uint32_t inside = 0, below = 0, beside = 0;
-    for (std::size_t k = 0; k < levels; ++k) {
-        for (std::uint32_t s = graph.levelStart[k]; s < graph.levelStart[k + 1]; ++s) {
-            const std::uint32_t i = graph.byLevel[s];
-            const std::int32_t level = graph.level[i];
-            graph.slotOf[i] = s;
-            for (std::uint32_t e = graph.edgeStart[i]; e < graph.edgeStart[i + 1]; ++e) {
-                const std::uint32_t j = graph.neighbour[e];
-                const bool same = graph.level[j] == level;
-                graph.inside[inside] = {i, j};
-                inside += same && i < j;
-                graph.beside[beside] = j;
-                beside += same;
-                graph.below[below] = j;
-                below += graph.level[j] == level - 1;
-            }
-            graph.belowStart[s + 1] = below;
-            graph.besideStart[s + 1] = beside;
-        }
-        graph.insideStart[k + 1] = inside;
-    }
-    graph.inside.resize(inside);
-    graph.below.resize(below);
-    graph.beside.resize(beside);
-}
-
 bool isStatic(double normalSpeed, const Params& params) { return std::abs(normalSpeed) <= params.epsilon; }
 
 // The sweep over one solver step's contacts; `moves`: the position stage too.
@@ -182,13 +53,25 @@ class Sweep {
     // planes, velocities (static contacts) and overlaps; then the contacts those pushes
     // pressed together again (pressAgain).
     void level(std::uint32_t k) {
-        for (std::uint32_t c = graph_.insideStart[k]; c < graph_.insideStart[k + 1]; ++c) inside(graph_.inside[c], true);
+        forEachPairInside(k, [&](const SpherePair& pair) { inside(pair, true); });
         onFrozenLevel(k);
         ++stats_.shockRounds;
         if (moves_) pressAgain(k);
     }
 
   private:
+    // visit(pair) on the contacts inside level k: by sphere, then by neighbour, each once.
+    template <class Visit>
+    void forEachPairInside(std::uint32_t k, const Visit& visit) const {
+        for (std::uint32_t s = graph_.levelStart[k]; s < graph_.levelStart[k + 1]; ++s) {
+            const std::uint32_t i = graph_.byLevel[s];
+            const std::uint32_t* beside = besideOf(i);
+            for (std::uint32_t b = graph_.besideBefore[i]; b < graph_.besideCount[i]; ++b) visit(SpherePair{i, beside[b]});
+        }
+    }
+    const std::uint32_t* belowOf(std::uint32_t i) const { return graph_.neighbour.data() + graph_.edgeStart[i]; }
+    const std::uint32_t* besideOf(std::uint32_t i) const { return belowOf(i) + graph_.belowCount[i]; }
+
     // Every sphere of level k against the frozen level below and its planes (onFrozen). Each
     // moves only itself against spheres that no longer move: the level's spheres can be
     // shared between threads, with the result of one thread.
@@ -215,11 +98,15 @@ class Sweep {
         // Pairs are kept without a branch (pressed[count] written, count moved on if kept):
         // which are still pressed is as good as random.
         std::size_t count = 0;
-        pressed.resize(graph_.insideStart[k + 1] - graph_.insideStart[k]);
-        for (std::uint32_t c = graph_.insideStart[k]; c < graph_.insideStart[k + 1]; ++c) {
-            pressed[count] = graph_.inside[c];
-            count += pressedDeeper(graph_.inside[c]);
+        std::size_t insidePairs = 0;
+        for (std::uint32_t s = graph_.levelStart[k]; s < graph_.levelStart[k + 1]; ++s) {
+            insidePairs += graph_.besideCount[graph_.byLevel[s]] - graph_.besideBefore[graph_.byLevel[s]];
         }
+        pressed.resize(insidePairs);
+        forEachPairInside(k, [&](const SpherePair& pair) {
+            pressed[count] = pair;
+            count += pressedDeeper(pair);
+        });
         pressed.resize(count);
         std::vector<std::uint32_t>& moved = graph_.queue;  // free again: the levels are found
         for (int round = 1; round < kMostLevelRounds && !pressed.empty(); ++round) {
@@ -231,7 +118,7 @@ class Sweep {
                     if (graph_.moved[i]) continue;
                     graph_.moved[i] = 1;
                     moved.push_back(i);
-                    besides += graph_.besideStart[graph_.slotOf[i] + 1] - graph_.besideStart[graph_.slotOf[i]];
+                    besides += graph_.besideCount[i];
                 }
             }
             // Each moved sphere off the frozen spheres below it once (the level's rounds
@@ -243,9 +130,9 @@ class Sweep {
             count = 0;
             pressed.resize(besides);
             for (const std::uint32_t i : moved) {
-                const std::uint32_t s = graph_.slotOf[i];
-                for (std::uint32_t b = graph_.besideStart[s]; b < graph_.besideStart[s + 1]; ++b) {
-                    const std::uint32_t j = graph_.beside[b];
+                const std::uint32_t* beside = besideOf(i);
+                for (std::uint32_t b = 0; b < graph_.besideCount[i]; ++b) {
+                    const std::uint32_t j = beside[b];
                     const SpherePair pair{std::min(i, j), std::max(i, j)};
                     pressed[count] = pair;
                     count += !(graph_.moved[j] && j < i) & pressedDeeper(pair);
@@ -322,8 +209,9 @@ class Sweep {
         const std::uint32_t i = graph_.byLevel[s];
         double deepest = 0.0;  // m
         int pushed = 0;
-        for (std::uint32_t b = graph_.belowStart[s]; b < graph_.belowStart[s + 1]; ++b) {
-            const double depth = onFrozenSphere(i, graph_.below[b], stats);  // m
+        const std::uint32_t* below = belowOf(i);
+        for (std::uint32_t b = 0; b < graph_.belowCount[i]; ++b) {
+            const double depth = onFrozenSphere(i, below[b], stats);  // m
             deepest = std::max(deepest, depth);
             pushed += depth > 0.0;
         }
@@ -367,11 +255,6 @@ class Sweep {
 
 }  // namespace
 
-void findContactGraph(const World& world, PairOrder order, ContactGraph& graph) {
-    findEdges(world, world.workspace.visitOrder, order, graph);
-    findLevels(world, graph, nullptr);
-}
-
 namespace {
 
 // m: the farthest a sphere moved since ContactGraph::positionsBeforePasses.
@@ -384,21 +267,6 @@ double farthestMoveInThePasses(const World& world, const ContactGraph& graph) {
         farthestSquared = std::max(farthestSquared, glm::dot(move, move));
     }
     return std::sqrt(farthestSquared);
-}
-
-// Whether the graph the last sweep found is this step's too: the same candidate pairs in
-// the same order (a resting pile keeps them for many steps), and the same spheres near a
-// plane. Then its levels and sweep order are this step's, found again for nothing.
-bool graphStillHolds(const World& world, const std::vector<SpherePair>& pairs, const ContactGraph& graph,
-                     const std::vector<double>* clearance) {
-    if (graph.levelStart.empty()) return false;  // never found
-    if (graph.level.size() != world.size() || graph.builtFrom.size() != pairs.size()) return false;
-    const auto same = [](const SpherePair& a, const SpherePair& b) { return a.i == b.i && a.j == b.j; };
-    if (!std::equal(pairs.begin(), pairs.end(), graph.builtFrom.begin(), same)) return false;
-    for (std::uint32_t i = 0; i < world.size(); ++i) {
-        if (levelZero(world, i, clearance) != (graph.level[i] == 0)) return false;
-    }
-    return true;
 }
 
 }  // namespace
@@ -424,12 +292,7 @@ void propagateShock(World& world, const Params& params, StepStats& stats, bool m
         order = PairOrder::Index;
         findPairsWithinReach(world, params, stats, *pairs);
     }
-    if (!graphStillHolds(world, *pairs, graph, clearance)) {
-        findEdges(world, *pairs, order, graph);
-        findLevels(world, graph, clearance);
-        findSweepOrder(graph);
-        graph.builtFrom = *pairs;
-    }
+    keepContactGraph(world, *pairs, order, graph, clearance);
     Sweep sweep(world, params, stats, moves);
     const std::size_t levels = graph.levelStart.size() - 1;
     for (std::uint32_t k = 0; k < levels; ++k) sweep.level(k);

@@ -223,6 +223,17 @@ std::uint32_t separateSideBySide(World& world, const Params& params, const Spher
                                  std::uint32_t last, StepStats& stats, int pass, double positionFactor, bool respond,
                                  int width = 0);
 
+// Slide 14's contact graph of `pairs` (candidate pairs visited in `order`) into `graph`,
+// updated from the graph it holds where that is the last step's (contact_graph.cpp): the
+// same as found anew. `clearance`: the position stages' wall clearances, if kept.
+void keepContactGraph(const World& world, const std::vector<SpherePair>& pairs, PairOrder order, ContactGraph& graph,
+                      const std::vector<double>* clearance);
+// The contact graph found anew from `pairs`, `zero` (per sphere: near a plane) giving level
+// 0 and the number of spheres. Returns whether every pair names spheres in range (else the
+// graph has no edges).
+bool findContactGraphAnew(const std::vector<SpherePair>& pairs, PairOrder order, const std::vector<std::uint8_t>& zero,
+                          ContactGraph& graph);
+
 // The shock sweep's (shock_propagation.cpp) spheres[0, count) of one level, each pushed off
 // the frozen spheres below it in turn, positions only, several side by side: what its
 // one-sphere code gives, bit for bit. With `lowerClearance`, each push lowers the

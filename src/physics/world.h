@@ -145,32 +145,46 @@ struct ContactCluster {
     bool capped = false;
 };
 
-// Slide 14's contact graph (shock_propagation.cpp): spheres are its nodes, touching pairs
-// its edges (within Workspace::margin), each sphere's level its distance in contacts from
-// a plane.
+// Slide 14's contact graph (contact_graph.cpp): spheres are its nodes, touching pairs its
+// edges (within Workspace::margin), each sphere's level its distance in contacts from a
+// plane. Kept from step to step by the shock sweep (shock_propagation.cpp).
 struct ContactGraph {
     std::vector<std::uint32_t> edgeStart;  // sphere i's neighbours: neighbour[edgeStart[i], edgeStart[i + 1])
-    std::vector<std::uint32_t> neighbour;  // by sphere, each sphere's in ascending order
+    // Each sphere's neighbours in three runs, each by number: belowCount[i] one level down,
+    // then besideCount[i] in its own level (the first besideBefore[i] of them numbered
+    // below i), then the rest.
+    std::vector<std::uint32_t> neighbour;
+    std::vector<std::uint32_t> belowCount, besideCount, besideBefore;
     std::vector<std::int32_t> level;       // per sphere: 0 touches a plane; -1 reaches none
     std::vector<std::uint32_t> byLevel;    // the spheres with a level, by level, then number
     std::vector<std::uint32_t> levelStart;  // level k: byLevel[levelStart[k], levelStart[k + 1])
-    // The sweep's order (shock_propagation.cpp's findSweepOrder).
-    std::vector<SpherePair> inside;          // pairs inside a level, by level
-    std::vector<std::uint32_t> insideStart;  // level k: inside[insideStart[k], insideStart[k + 1])
-    std::vector<std::uint32_t> below;        // byLevel[s]'s neighbours one level down:
-    std::vector<std::uint32_t> belowStart;   //   below[belowStart[s], belowStart[s + 1])
-    std::vector<std::uint32_t> beside;       // byLevel[s]'s neighbours in its own level:
-    std::vector<std::uint32_t> besideStart;  //   beside[besideStart[s], besideStart[s + 1])
-    std::vector<std::uint32_t> slotOf;       // per sphere with a level: its s in byLevel
-    std::vector<SpherePair> pressed;         // scratch: a level's contacts answered again
-    std::vector<std::uint8_t> moved;         // scratch: per sphere, moved in this round
-    std::vector<std::uint32_t> again;        // scratch: per slot, the spheres whose frozen rounds go on
-    std::vector<std::uint8_t> goesOn;        // scratch: per slot, whether a sphere's rounds go on
-    std::vector<SpherePair> builtFrom;       // the candidate pairs the sweep's graph was found from
+    std::vector<SpherePair> builtFrom;     // the candidate pairs it was found from (in index order if builtInIndexOrder)
+    bool builtInIndexOrder = false;        // whether the next step's pairs may update it
     std::vector<glm::dvec3> positionsBeforePasses;  // m, the position stages' (shock on)
     std::vector<SpherePair> pairsAfterPasses;  // their pairs within reach after the passes, in index order
-    std::vector<std::uint32_t> queue;      // scratch: the breadth-first search's
-    std::vector<std::uint32_t> next;       // scratch of the counting sorts: where the next entry goes
+    // Scratch of the sweep: a level's contacts answered again; per sphere, moved in this
+    // round (all 0 between uses); per byLevel slot, the spheres whose frozen rounds go on.
+    std::vector<SpherePair> pressed;
+    std::vector<std::uint8_t> moved;
+    std::vector<std::uint32_t> again;
+    std::vector<std::uint8_t> goesOn;
+    // Scratch of the graph's update (contact_graph.cpp).
+    struct Change {
+        std::uint32_t sphere, other;
+        bool added;
+    };
+    struct Relevelled {
+        std::uint32_t sphere;
+        std::int32_t was;
+    };
+    std::vector<std::uint8_t> zero;  // per sphere: near a plane
+    std::vector<SpherePair> added, removed;
+    std::vector<Change> changes;
+    std::vector<std::uint32_t> touched, zeroChanged, unset, runs;
+    std::vector<Relevelled> relevelled;
+    std::vector<std::vector<std::uint32_t>> rounds;
+    std::vector<std::uint32_t> queue;  // the breadth-first search's; the sweep's moved spheres
+    std::vector<std::uint32_t> next;   // the counting sorts': where the next entry goes
 };
 
 // The broad phase's uniform grid (broad_phase.cpp): cubic cells from `origin`, `dims`
