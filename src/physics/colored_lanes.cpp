@@ -201,13 +201,17 @@ LANES_INLINE std::uint32_t separateInLanes(World& world, const Params& params, c
 }
 
 // The shock sweep's push of a sphere off the frozen spheres below it (shock_propagation.cpp,
-// its run of graph.neighbour one level down), one after another, positions only, for W spheres side by side: along the
-// line of centres by the overlap, as touching() and moveOffFrozenSphere find and move them,
-// with the same operations in the same order (W = 1 is the one-sphere code). A lane whose
-// sphere has no frozen sphere left at a turn is masked (pushed by 0).
+// its run of graph.neighbour one level down), one after another, positions only, for W
+// spheres side by side: along the line of centres by the overlap, as touching() and
+// moveOffFrozenSphere find and move them, with the same operations in the same order (W =
+// 1 is the one-sphere code). A lane whose sphere has no frozen sphere left at a turn is
+// masked (pushed by 0). With `params` (the sweep's first round), each touching contact that
+// is static (|c| <= epsilon) is answered first, as respondToFrozenContact answers it (the
+// frozen sphere's mass infinite), and counted in `stats`.
 template <int W>
 LANES_INLINE void pushOffFrozenInLanes(World& world, const ContactGraph& graph, const std::uint32_t* spheres,
-                                       bool lowerClearance, std::uint8_t* again, double settled) {
+                                       bool lowerClearance, std::uint8_t* again, double settled,
+                                       const Params* params, StepStats* stats) {
     using Value = typename Lanes<W>::Value;
     using Mask = typename Lanes<W>::Mask;
     using Vec = typename Lanes<W>::Vec;
@@ -219,10 +223,13 @@ LANES_INLINE void pushOffFrozenInLanes(World& world, const ContactGraph& graph, 
         most = count[l] > most ? count[l] : most;
     }
     glm::dvec3* position = world.position.data();
+    glm::dvec3* velocity = world.velocity.data();
     const double* radius = world.radius.data();
     double* clearance = world.workspace.wallClearance.data();
     const Value zero = splat<Value>(0.0);
     Vec p = gather<W>(position, i);
+    Vec v = params ? gather<W>(velocity, i) : Vec{zero, zero, zero};  // m/s
+    Mask answered = Mask{} == 1;  // lanes with a static contact answered
     const Value r = gather<W>(radius, i);  // m
     Value lowered = lowerClearance ? gather<W>(clearance, i) : zero;  // m
     Value deepest = zero;  // m
@@ -244,6 +251,14 @@ LANES_INLINE void pushOffFrozenInLanes(World& world, const ContactGraph& graph, 
         const Vec u{apart ? delta.x * inverse : zero, apart ? delta.y * inverse : zero,
                     apart ? delta.z * inverse : splat<Value>(1.0)};
         const Mask touches = active & (distanceSquared <= reach * reach);
+        if (params) {
+            const LaneResponse<W> response =
+                respondInLanes<W>(v, gather<W>(velocity, frozen), splat<Value>(1.0), zero, u, *params);
+            const Mask isStatic = touches & response.isStatic;
+            v = choose(isStatic, response.v1, v);
+            answered |= isStatic;
+            stats->staticContacts += countLanes<W>(isStatic);
+        }
         const Value depth = touches ? reach - distance : zero;  // m
         p = choose(touches, add(p, scale(depth, u)), p);
         lowered = lowered - depth;
@@ -251,6 +266,11 @@ LANES_INLINE void pushOffFrozenInLanes(World& world, const ContactGraph& graph, 
         pushed = depth > 0.0 ? pushed + 1.0 : pushed;
     }
     scatter<W>(position, i, p);
+    if (params) {
+        scatter<W>(velocity, i, v);
+        ContactState* state = world.contactState.data();
+        for (int l = 0; l < W; ++l) state[i[l]] = recorded(state[i[l]], false, answered[l] != 0);
+    }
     if (lowerClearance) {
         for (int l = 0; l < W; ++l) clearance[i[l]] = lowered[l];
     }
@@ -262,13 +282,15 @@ LANES_INLINE void pushOffFrozenInLanes(World& world, const ContactGraph& graph, 
 template <int W>
 LANES_INLINE void pushOffFrozenSideBySide(World& world, const ContactGraph& graph, const std::uint32_t* spheres,
                                           std::size_t count, bool lowerClearance, std::uint8_t* again,
-                                          double settled) {
+                                          double settled, const Params* params, StepStats* stats) {
     std::size_t k = 0;
     for (; k + W <= count; k += W) {
-        pushOffFrozenInLanes<W>(world, graph, spheres + k, lowerClearance, again ? again + k : nullptr, settled);
+        pushOffFrozenInLanes<W>(world, graph, spheres + k, lowerClearance, again ? again + k : nullptr, settled,
+                                params, stats);
     }
     for (; k < count; ++k) {
-        pushOffFrozenInLanes<1>(world, graph, spheres + k, lowerClearance, again ? again + k : nullptr, settled);
+        pushOffFrozenInLanes<1>(world, graph, spheres + k, lowerClearance, again ? again + k : nullptr, settled,
+                                params, stats);
     }
 }
 
@@ -278,8 +300,9 @@ std::uint32_t separateIn2Lanes(World& world, const Params& params, const SphereP
     return separateInLanes<2>(world, params, pairs, first, last, stats, pass, factor, respond);
 }
 void pushOffFrozenIn2Lanes(World& world, const ContactGraph& graph, const std::uint32_t* spheres, std::size_t count,
-                           bool lowerClearance, std::uint8_t* again, double settled) {
-    pushOffFrozenSideBySide<2>(world, graph, spheres, count, lowerClearance, again, settled);
+                           bool lowerClearance, std::uint8_t* again, double settled, const Params* params,
+                           StepStats* stats) {
+    pushOffFrozenSideBySide<2>(world, graph, spheres, count, lowerClearance, again, settled, params, stats);
 }
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__EMSCRIPTEN__)
 #define SPHERES_WIDE_LANES 1
@@ -298,14 +321,14 @@ __attribute__((target("avx512f"))) std::uint32_t separateIn8Lanes(World& world, 
 __attribute__((target("avx2"))) void pushOffFrozenIn4Lanes(World& world, const ContactGraph& graph,
                                                            const std::uint32_t* spheres, std::size_t count,
                                                            bool lowerClearance, std::uint8_t* again,
-                                                           double settled) {
-    pushOffFrozenSideBySide<4>(world, graph, spheres, count, lowerClearance, again, settled);
+                                                           double settled, const Params* params, StepStats* stats) {
+    pushOffFrozenSideBySide<4>(world, graph, spheres, count, lowerClearance, again, settled, params, stats);
 }
 __attribute__((target("avx512f"))) void pushOffFrozenIn8Lanes(World& world, const ContactGraph& graph,
                                                               const std::uint32_t* spheres, std::size_t count,
                                                               bool lowerClearance, std::uint8_t* again,
-                                                              double settled) {
-    pushOffFrozenSideBySide<8>(world, graph, spheres, count, lowerClearance, again, settled);
+                                                              double settled, const Params* params, StepStats* stats) {
+    pushOffFrozenSideBySide<8>(world, graph, spheres, count, lowerClearance, again, settled, params, stats);
 }
 #endif
 
@@ -343,15 +366,16 @@ std::uint32_t separateSideBySide(World& world, const Params& params, const Spher
 
 void pushOffFrozenSideBySide(World& world, const ContactGraph& graph, const std::uint32_t* spheres,
                              std::size_t count, bool lowerClearance, std::uint8_t* again, double settled,
-                             int width) {
+                             int width, const Params* params, StepStats* stats) {
     static const int widest = laneWidths().back();
     switch (width == 0 ? widest : width) {
 #ifdef SPHERES_WIDE_LANES
-        case 8: return pushOffFrozenIn8Lanes(world, graph, spheres, count, lowerClearance, again, settled);
-        case 4: return pushOffFrozenIn4Lanes(world, graph, spheres, count, lowerClearance, again, settled);
+        case 8: return pushOffFrozenIn8Lanes(world, graph, spheres, count, lowerClearance, again, settled, params, stats);
+        case 4: return pushOffFrozenIn4Lanes(world, graph, spheres, count, lowerClearance, again, settled, params, stats);
 #endif
-        case 1: return pushOffFrozenSideBySide<1>(world, graph, spheres, count, lowerClearance, again, settled);
-        default: return pushOffFrozenIn2Lanes(world, graph, spheres, count, lowerClearance, again, settled);
+        case 1:
+            return pushOffFrozenSideBySide<1>(world, graph, spheres, count, lowerClearance, again, settled, params, stats);
+        default: return pushOffFrozenIn2Lanes(world, graph, spheres, count, lowerClearance, again, settled, params, stats);
     }
 }
 

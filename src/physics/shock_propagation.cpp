@@ -179,17 +179,29 @@ class Sweep {
     // byLevel's spheres [begin, end) off the frozen spheres below them, then off their
     // planes (walls last: never crossed), in at most kMostFrozenRounds rounds: a round that
     // pushed a sphere off one frozen sphere only, or none deeper than kSettledOverlap of its
-    // radius, is its last. The first round answers the static contacts too, one sphere at a
-    // time; the later ones move them only, several side by side. Each sphere moves only
-    // itself, against spheres that no longer move: the rounds of one sphere may wait for
-    // those of the others.
+    // radius, is its last. The first round answers the static contacts too; the later ones
+    // move them only. Both go several spheres side by side, but the velocity method's first
+    // round, and any with the contact log, which go one sphere at a time. Each sphere moves
+    // only itself, against spheres that no longer move: the rounds of one sphere may wait
+    // for those of the others.
     void onFrozen(std::uint32_t begin, std::uint32_t end, StepStats& stats) {
         std::uint32_t* again = graph_.again.data() + begin;  // the spheres whose rounds go on
         std::uint8_t* goesOn = graph_.goesOn.data() + begin;
         std::uint32_t count = 0;
-        for (std::uint32_t s = begin; s < end; ++s) {
-            again[count] = graph_.byLevel[s];
-            count += firstRoundOnFrozen(s, stats);
+        if (moves_ && !world_.recordContacts) {
+            const std::uint32_t* spheres = graph_.byLevel.data() + begin;
+            pushOffFrozenSideBySide(world_, graph_, spheres, end - begin, clearanceKept(), goesOn, kSettledOverlap, 0,
+                                    &params_, &stats);
+            for (std::uint32_t c = 0; c < end - begin; ++c) {
+                onPlanes(spheres[c], true, stats);
+                again[count] = spheres[c];
+                count += goesOn[c];
+            }
+        } else {
+            for (std::uint32_t s = begin; s < end; ++s) {
+                again[count] = graph_.byLevel[s];
+                count += firstRoundOnFrozen(s, stats);
+            }
         }
         for (int round = 1; round < kMostFrozenRounds && count > 0; ++round) {
             pushOffFrozenSideBySide(world_, graph_, again, count, clearanceKept(), goesOn, kSettledOverlap);

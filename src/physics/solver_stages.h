@@ -239,10 +239,13 @@ bool findContactGraphAnew(const std::vector<SpherePair>& pairs, PairOrder order,
 // one-sphere code gives, bit for bit. With `lowerClearance`, each push lowers the
 // sphere's wall clearance by its length. With `again`, again[k] <- whether spheres[k] was
 // pushed off more than one frozen sphere, one of them deeper than `settled` times its
-// radius. `width`: spheres side by side, 1 or one of laneWidths(), 0 the widest.
+// radius. `width`: spheres side by side, 1 or one of laneWidths(), 0 the widest. With
+// `params` (the sweep's first round), the static contacts are answered too, each before
+// its push (respondToFrozenContact's answer, counted in `stats`; no contact log).
 void pushOffFrozenSideBySide(World& world, const ContactGraph& graph, const std::uint32_t* spheres,
                              std::size_t count, bool lowerClearance, std::uint8_t* again = nullptr,
-                             double settled = 0.0, int width = 0);
+                             double settled = 0.0, int width = 0, const Params* params = nullptr,
+                             StepStats* stats = nullptr);
 
 // The lane widths this CPU runs, ascending: 2, and 4 with AVX2, 8 with AVX-512.
 std::vector<int> laneWidths();

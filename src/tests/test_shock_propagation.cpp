@@ -506,15 +506,25 @@ TEST(ShockPropagation, TheGraphOfAWorldThatLostSpheresSinceItsLastStepIsEmpty) {
     EXPECT_EQ(world.workspace.contactGraph.level, (std::vector<std::int32_t>{0, 1, 2, 3, 4}));
 }
 
+namespace {
+
+// The 10k pile, one thread, the sweep on.
+scenes::Scene landingPileScene() {
+    scenes::Scene scene = scenes::loadScene(scenes::presetPath("11_pile"));
+    for (const char* setting : {"count=10000", "radius=0.0232", "threads=1", "shock=on"}) {
+        EXPECT_EQ(scenes::applySetting(scene, setting), "") << setting;
+    }
+    return scene;
+}
+
+}  // namespace
+
 // The sweep's pushes off the frozen level, several spheres side by side (colored_lanes.cpp):
 // every lane width the CPU runs moves the spheres of a level, and lowers their wall
 // clearances, as one sphere at a time does, bit for bit (the state hashes check the widest
 // against the sweep's own code before it).
 TEST(ShockPropagation, ThePushesOffTheFrozenLevelSideBySideAreThoseOfOneSphereAtATime) {
-    scenes::Scene scene = scenes::loadScene(scenes::presetPath("11_pile"));
-    for (const char* setting : {"count=10000", "radius=0.0232", "threads=1", "shock=on"}) {
-        ASSERT_EQ(scenes::applySetting(scene, setting), "") << setting;
-    }
+    const scenes::Scene scene = landingPileScene();
     physics::World world = scenes::buildWorld(scene);
     for (int k = 0; k < 150; ++k) physics::step(world, scene.params);  // 2.5 s: landing
     const physics::ContactGraph& graph = world.workspace.contactGraph;
@@ -542,6 +552,70 @@ TEST(ShockPropagation, ThePushesOffTheFrozenLevelSideBySideAreThoseOfOneSphereAt
             EXPECT_EQ(lanes.position, one.position) << width << " lanes, level " << level;
             EXPECT_EQ(againLanes, againOne) << width << " lanes, level " << level;
             EXPECT_EQ(lanes.workspace.wallClearance, one.workspace.wallClearance) << width << " lanes";
+        }
+    }
+}
+
+// The sweep's first round off the frozen level, side by side: each sphere's static contacts
+// with the frozen spheres below it answered (v <- mu v after the approach is removed, the
+// frozen sphere infinitely heavy), each before its push, as the one-sphere code does it
+// (touching, respondToFrozenContact, moveOffFrozenSphere), at every lane width: the same
+// positions, velocities, contact states, count of static contacts and wall clearances. It
+// fails when a lane answers a contact that does not touch (checked).
+TEST(ShockPropagation, TheFirstRoundOffTheFrozenLevelSideBySideIsThatOfOneSphereAtATime) {
+    const scenes::Scene scene = landingPileScene();
+    physics::World world = scenes::buildWorld(scene);
+    for (int k = 0; k < 150; ++k) physics::step(world, scene.params);  // 2.5 s: landing
+    const physics::ContactGraph& graph = world.workspace.contactGraph;
+    const physics::Params& params = scene.params;
+    for (const std::uint32_t level : {1u, 3u, 5u}) {
+        const std::vector<std::uint32_t> spheres(graph.byLevel.begin() + graph.levelStart[level],
+                                                 graph.byLevel.begin() + graph.levelStart[level + 1]);
+        // The level sunk by 1 % of its radii, so that most touch the level below; every third
+        // sphere falling at 0.3 m/s, so that its contacts are impacts (left alone), not static.
+        physics::World sunk = world;
+        for (std::size_t k = 0; k < spheres.size(); ++k) {
+            sunk.position[spheres[k]].z -= 0.01 * sunk.radius[spheres[k]];
+            if (k % 3 == 0) sunk.velocity[spheres[k]].z -= 0.3;
+        }
+        physics::World one = sunk;
+        physics::StepStats oneStats;
+        std::vector<std::uint8_t> againOne;
+        std::uint64_t touchingContacts = 0;
+        for (const std::uint32_t i : spheres) {
+            double deepestOverlap = 0.0;
+            int pushed = 0;
+            for (std::uint32_t e = graph.edgeStart[i]; e < graph.edgeStart[i] + graph.belowCount[i]; ++e) {
+                const std::uint32_t frozen = graph.neighbour[e];
+                physics::SphereContact contact;
+                if (!physics::touching(one, physics::SpherePair{i, frozen}, contact)) continue;
+                ++touchingContacts;
+                if (std::abs(glm::dot(one.velocity[frozen] - one.velocity[i], contact.u)) <= params.epsilon) {
+                    physics::respondToFrozenContact(one, i, frozen, contact, params, oneStats);
+                }
+                physics::moveOffFrozenSphere(one.position[i], contact.u, contact.depth);
+                one.workspace.wallClearance[i] -= contact.depth;
+                deepestOverlap = std::max(deepestOverlap, contact.depth);
+                pushed += contact.depth > 0.0;
+            }
+            againOne.push_back(pushed > 1 && deepestOverlap > 1e-3 * one.radius[i]);
+        }
+        EXPECT_GT(oneStats.staticContacts, touchingContacts / 2) << "level " << level;
+        EXPECT_LT(oneStats.staticContacts, touchingContacts * 9 / 10) << "level " << level;
+        for (const int width : {1, 2, 4, 8}) {
+            const std::vector<int> widths = physics::laneWidths();
+            if (width > 1 && std::find(widths.begin(), widths.end(), width) == widths.end()) continue;
+            physics::World lanes = sunk;
+            physics::StepStats lanesStats;
+            std::vector<std::uint8_t> againLanes(spheres.size(), 2);
+            physics::pushOffFrozenSideBySide(lanes, graph, spheres.data(), spheres.size(), true, againLanes.data(), 1e-3,
+                                             width, &params, &lanesStats);
+            EXPECT_EQ(lanes.position, one.position) << width << " lanes, level " << level;
+            EXPECT_EQ(lanes.velocity, one.velocity) << width << " lanes, level " << level;
+            EXPECT_EQ(lanes.contactState, one.contactState) << width << " lanes, level " << level;
+            EXPECT_EQ(lanesStats.staticContacts, oneStats.staticContacts) << width << " lanes, level " << level;
+            EXPECT_EQ(lanes.workspace.wallClearance, one.workspace.wallClearance) << width << " lanes";
+            EXPECT_EQ(againLanes, againOne) << width << " lanes, level " << level;
         }
     }
 }
