@@ -11,7 +11,8 @@
 // changed pairs, and the runs of only the spheres whose neighbours or levels changed. The
 // result is the graph found anew, entry for entry (a test compares them after every step).
 #include <algorithm>
-#include <climits>
+#include <cstdint>
+#include <limits>
 
 #include "physics/solver_stages.h"
 
@@ -21,7 +22,7 @@ namespace {
 // Past this share of the spheres with a changed pair, the graph is found anew: the update
 // would visit most of it anyway.
 constexpr std::size_t kMostChangedPairsPerSphere = 8;  // 1 in 8
-constexpr std::int32_t kNoLevelYet = INT32_MAX;        // a level being repaired
+constexpr std::int32_t kNoLevelYet = std::numeric_limits<std::int32_t>::max();  // a level being repaired
 
 // Whether sphere i is within the margin of a plane (level 0). `clearance`, when the
 // position based passes kept it (solver_stages.h's wallClearance), passes by the spheres
@@ -197,7 +198,7 @@ bool findChangedPairs(const std::vector<SpherePair>& pairs, ContactGraph& graph,
 }
 
 // graph.edgeStart and neighbour with graph.added and removed applied: the spheres they
-// name get their neighbours by number (and are listed in graph.touched), the others keep
+// name get their neighbours by number (and are added to graph.touched), the others keep
 // theirs, in their runs.
 void applyChangedPairs(ContactGraph& graph) {
     const std::size_t n = graph.level.size();
@@ -213,7 +214,6 @@ void applyChangedPairs(ContactGraph& graph) {
     start.resize(n + 1);
     list.clear();
     list.reserve(graph.neighbour.size() + graph.added.size() * 2);
-    graph.touched.clear();
     // The spheres [from, to) keep their neighbours, moved along by what the changes added.
     const auto keep = [&](std::uint32_t from, std::uint32_t to) {
         const std::uint32_t shift = std::uint32_t(list.size()) - graph.edgeStart[from];  // modulo 2^32
