@@ -135,7 +135,7 @@ LANES_INLINE LaneResponse<W> respondInLanes(const typename Lanes<W>::Vec& v1, co
 template <int W>
 LANES_INLINE std::uint32_t separateInLanes(World& world, const Params& params, const SpherePair* pairs,
                                            std::uint32_t first, std::uint32_t last, StepStats& stats, int pass,
-                                           double positionFactor, bool respond) {
+                                           double positionFactor, bool respond, bool staticOnly) {
     using Value = typename Lanes<W>::Value;
     using Mask = typename Lanes<W>::Mask;
     using Vec = typename Lanes<W>::Vec;
@@ -170,9 +170,11 @@ LANES_INLINE std::uint32_t separateInLanes(World& world, const Params& params, c
             const Value perTotalMass = 1.0 / (m1 + m2);
             const Vec v1 = gather<W>(velocity, i), v2 = gather<W>(velocity, j);
             const LaneResponse<W> r = respondInLanes<W>(v1, v2, m2 * perTotalMass, m1 * perTotalMass, u, params);
-            scatter<W>(velocity, i, choose(touch, r.v1, v1));
-            scatter<W>(velocity, j, choose(touch, r.v2, v2));
-            const Mask bounce = touch & r.bounce, isStatic = touch & r.isStatic;
+            const Mask isStatic = touch & r.isStatic;
+            const Mask bounce = staticOnly ? isStatic & ~isStatic : touch & r.bounce;  // staticOnly: none
+            const Mask answered = staticOnly ? isStatic : touch;
+            scatter<W>(velocity, i, choose(answered, r.v1, v1));
+            scatter<W>(velocity, j, choose(answered, r.v2, v2));
             for (int l = 0; l < W; ++l) {
                 state[i[l]] = recorded(state[i[l]], bounce[l] != 0, isStatic[l] != 0);
                 state[j[l]] = recorded(state[j[l]], bounce[l] != 0, isStatic[l] != 0);
@@ -296,8 +298,9 @@ LANES_INLINE void pushOffFrozenSideBySide(World& world, const ContactGraph& grap
 
 // One function per width, each compiled for the instructions it needs.
 std::uint32_t separateIn2Lanes(World& world, const Params& params, const SpherePair* pairs, std::uint32_t first,
-                               std::uint32_t last, StepStats& stats, int pass, double factor, bool respond) {
-    return separateInLanes<2>(world, params, pairs, first, last, stats, pass, factor, respond);
+                               std::uint32_t last, StepStats& stats, int pass, double factor, bool respond,
+                               bool staticOnly) {
+    return separateInLanes<2>(world, params, pairs, first, last, stats, pass, factor, respond, staticOnly);
 }
 void pushOffFrozenIn2Lanes(World& world, const ContactGraph& graph, const std::uint32_t* spheres, std::size_t count,
                            bool lowerClearance, std::uint8_t* again, double settled, const Params* params,
@@ -309,14 +312,14 @@ void pushOffFrozenIn2Lanes(World& world, const ContactGraph& graph, const std::u
 __attribute__((target("avx2"))) std::uint32_t separateIn4Lanes(World& world, const Params& params,
                                                                const SpherePair* pairs, std::uint32_t first,
                                                                std::uint32_t last, StepStats& stats, int pass,
-                                                               double factor, bool respond) {
-    return separateInLanes<4>(world, params, pairs, first, last, stats, pass, factor, respond);
+                                                               double factor, bool respond, bool staticOnly) {
+    return separateInLanes<4>(world, params, pairs, first, last, stats, pass, factor, respond, staticOnly);
 }
 __attribute__((target("avx512f"))) std::uint32_t separateIn8Lanes(World& world, const Params& params,
                                                                   const SpherePair* pairs, std::uint32_t first,
                                                                   std::uint32_t last, StepStats& stats, int pass,
-                                                                  double factor, bool respond) {
-    return separateInLanes<8>(world, params, pairs, first, last, stats, pass, factor, respond);
+                                                                  double factor, bool respond, bool staticOnly) {
+    return separateInLanes<8>(world, params, pairs, first, last, stats, pass, factor, respond, staticOnly);
 }
 __attribute__((target("avx2"))) void pushOffFrozenIn4Lanes(World& world, const ContactGraph& graph,
                                                            const std::uint32_t* spheres, std::size_t count,
@@ -348,19 +351,22 @@ std::uint32_t separateColorInLanes(World& world, const Params& params, const Sph
                                    bool respond, int width) {
     // The overflow colour's pairs may share a sphere: one at a time, by the caller.
     if (first >= overflowRange(world.workspace).begin) return first;
-    return separateSideBySide(world, params, pairs, first, last, stats, pass, positionFactor, respond, width);
+    return separateSideBySide(world, params, pairs, first, last, stats, pass, positionFactor, respond, false, width);
 }
 
 std::uint32_t separateSideBySide(World& world, const Params& params, const SpherePair* pairs, std::uint32_t first,
                                  std::uint32_t last, StepStats& stats, int pass, double positionFactor, bool respond,
-                                 int width) {
+                                 bool staticOnly, int width) {
     static const int widest = laneWidths().back();
     switch (width == 0 ? widest : width) {
 #ifdef SPHERES_WIDE_LANES
-        case 8: return separateIn8Lanes(world, params, pairs, first, last, stats, pass, positionFactor, respond);
-        case 4: return separateIn4Lanes(world, params, pairs, first, last, stats, pass, positionFactor, respond);
+        case 8:
+            return separateIn8Lanes(world, params, pairs, first, last, stats, pass, positionFactor, respond, staticOnly);
+        case 4:
+            return separateIn4Lanes(world, params, pairs, first, last, stats, pass, positionFactor, respond, staticOnly);
 #endif
-        default: return separateIn2Lanes(world, params, pairs, first, last, stats, pass, positionFactor, respond);
+        default:
+            return separateIn2Lanes(world, params, pairs, first, last, stats, pass, positionFactor, respond, staticOnly);
     }
 }
 

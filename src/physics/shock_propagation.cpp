@@ -53,13 +53,37 @@ class Sweep {
     // planes, velocities (static contacts) and overlaps; then the contacts those pushes
     // pressed together again (pressAgain).
     void level(std::uint32_t k) {
-        forEachPairInside(k, [&](const SpherePair& pair) { inside(pair, true); });
+        insideFirstRound(k);
         onFrozenLevel(k);
         ++stats_.shockRounds;
         if (moves_) pressAgain(k);
     }
 
   private:
+    // The contacts inside level k, their first round (static contacts answered, then
+    // split), in the sweep's order (forEachPairInside). The position stages take them
+    // wavefront by wavefront (as wavefronts.cpp does a pass: each sphere meets its pairs in
+    // that order, so the result is the same bit for bit), several side by side.
+    void insideFirstRound(std::uint32_t k) {
+        static const bool wideLanes = laneWidths().back() >= 4;
+        if (!wideLanes || !clearanceKept() || world_.recordContacts) {
+            forEachPairInside(k, [&](const SpherePair& pair) { inside(pair, true); });
+            return;
+        }
+        std::vector<SpherePair>& pairs = graph_.insidePairs;
+        pairs.clear();
+        forEachPairInside(k, [&](const SpherePair& pair) { pairs.push_back(pair); });
+        graph_.wavefrontNext.resize(world_.size(), 0);
+        std::vector<std::uint32_t>& start = graph_.wavefrontStart;
+        std::vector<SpherePair>& order = graph_.byWavefront;
+        sortIntoWavefronts(pairs, graph_.wavefrontNext, graph_.wavefrontOfPair, start, order);
+        for (std::size_t w = 0; w + 1 < start.size(); ++w) {
+            std::uint32_t c = separateSideBySide(world_, params_, order.data(), start[w], start[w + 1], stats_,
+                                                 params_.passes, 1.0, true, true);
+            for (; c < start[w + 1]; ++c) inside(order[c], true);
+        }
+    }
+
     // visit(pair) on the contacts inside level k: by sphere, then by neighbour, each once.
     template <class Visit>
     void forEachPairInside(std::uint32_t k, const Visit& visit) const {

@@ -218,10 +218,11 @@ std::uint32_t separateColorInLanes(World& world, const Params& params, const Sph
                                    std::uint32_t last, StepStats& stats, int pass, double positionFactor,
                                    bool respond, int width = 0);
 // The same over pairs [first, last) that share no sphere (a colour outside the overflow,
-// a wavefront).
+// a wavefront). With `staticOnly`, only the static contacts' velocities are answered (the
+// shock sweep's contacts inside a level: impacts are the passes').
 std::uint32_t separateSideBySide(World& world, const Params& params, const SpherePair* pairs, std::uint32_t first,
                                  std::uint32_t last, StepStats& stats, int pass, double positionFactor, bool respond,
-                                 int width = 0);
+                                 bool staticOnly = false, int width = 0);
 
 // Slide 14's contact graph of `pairs` (candidate pairs visited in `order`) into `graph`,
 // updated from the graph it holds where that is the last step's (contact_graph.cpp): the
@@ -315,6 +316,12 @@ void forEachColor(World& world, const Params& params, StepStats& stats, const Vi
 bool passesByWavefronts(const World& world, const Params& params);
 // Workspace::wavefrontOrder and wavefrontStart from visitOrder.
 void findWavefronts(World& world);
+// `pairs` (in pass order) into `order`, wavefront by wavefront, each in pass order:
+// wavefront w is order[start[w], start[w + 1]). `next`: per sphere, all 0 on entry and on
+// return; `ofPair`: scratch.
+void sortIntoWavefronts(const std::vector<SpherePair>& pairs, std::vector<std::uint32_t>& next,
+                        std::vector<std::uint32_t>& ofPair, std::vector<std::uint32_t>& start,
+                        std::vector<SpherePair>& order);
 template <class Visit>
 void forEachWavefront(World& world, const Params& params, StepStats& stats, const Visit& visit) {
     const Workspace& ws = world.workspace;

@@ -17,12 +17,9 @@ bool passesByWavefronts(const World& world, const Params& params) {
            !world.recordContacts;
 }
 
-void findWavefronts(World& world) {
-    Workspace& ws = world.workspace;
-    const std::vector<SpherePair>& pairs = ws.visitOrder;  // in pass order
-    std::vector<std::uint32_t>& next = ws.wavefrontNext;   // per sphere: the wavefront of its next pair
-    std::vector<std::uint32_t>& ofPair = ws.wavefrontOfPair;
-    next.assign(world.size(), 0);
+void sortIntoWavefronts(const std::vector<SpherePair>& pairs, std::vector<std::uint32_t>& next,
+                        std::vector<std::uint32_t>& ofPair, std::vector<std::uint32_t>& start,
+                        std::vector<SpherePair>& order) {
     ofPair.resize(pairs.size());
     std::uint32_t wavefronts = 0;
     for (std::size_t k = 0; k < pairs.size(); ++k) {
@@ -31,13 +28,21 @@ void findWavefronts(World& world) {
         next[pairs[k].i] = next[pairs[k].j] = w + 1;
         wavefronts = std::max(wavefronts, w + 1);
     }
+    for (const SpherePair& pair : pairs) next[pair.i] = next[pair.j] = 0;
     // Placed by wavefront, each in pass order (a counting sort).
-    ws.wavefrontStart.assign(std::size_t(wavefronts) + 1, 0);
-    for (const std::uint32_t w : ofPair) ++ws.wavefrontStart[w + 1];
-    for (std::uint32_t w = 0; w < wavefronts; ++w) ws.wavefrontStart[w + 1] += ws.wavefrontStart[w];
-    next.assign(ws.wavefrontStart.begin(), ws.wavefrontStart.end() - 1);
-    ws.wavefrontOrder.resize(pairs.size());
-    for (std::size_t k = 0; k < pairs.size(); ++k) ws.wavefrontOrder[next[ofPair[k]]++] = pairs[k];
+    start.assign(std::size_t(wavefronts) + 1, 0);
+    for (const std::uint32_t w : ofPair) ++start[w + 1];
+    for (std::uint32_t w = 0; w < wavefronts; ++w) start[w + 1] += start[w];
+    order.resize(pairs.size());
+    for (std::size_t k = 0; k < pairs.size(); ++k) order[start[ofPair[k]]++] = pairs[k];
+    for (std::uint32_t w = wavefronts; w > 0; --w) start[w] = start[w - 1];  // back to where each starts
+    start[0] = 0;
+}
+
+void findWavefronts(World& world) {
+    Workspace& ws = world.workspace;
+    ws.wavefrontNext.resize(world.size(), 0);
+    sortIntoWavefronts(ws.visitOrder, ws.wavefrontNext, ws.wavefrontOfPair, ws.wavefrontStart, ws.wavefrontOrder);
 }
 
 }  // namespace physics

@@ -168,6 +168,11 @@ struct ContactGraph {
     std::vector<std::uint8_t> moved;
     std::vector<std::uint32_t> again;
     std::vector<std::uint8_t> goesOn;
+    // Scratch of the sweep's first round inside a level, by wavefronts: the pairs, each one's
+    // wavefront, where each wavefront starts, and per sphere the wavefront of its next pair
+    // (all 0 between uses).
+    std::vector<SpherePair> insidePairs, byWavefront;
+    std::vector<std::uint32_t> wavefrontOfPair, wavefrontStart, wavefrontNext;
     // Scratch of the graph's update (contact_graph.cpp).
     struct Change {
         std::uint32_t sphere, other;
@@ -275,7 +280,7 @@ struct Workspace {
     std::vector<SpherePair> wavefrontOrder;
     std::vector<std::uint32_t> wavefrontStart;
     std::vector<std::uint32_t> wavefrontOfPair;  // scratch: per pair in pass order
-    std::vector<std::uint32_t> wavefrontNext;    // scratch: per sphere, then per wavefront
+    std::vector<std::uint32_t> wavefrontNext;    // scratch: per sphere, all 0 between uses
     // The contacts of a step whose positions stay put while its passes run (velocity
     // based, response only): found once, used by every pass (findContacts).
     std::vector<std::uint8_t> pairTouches;     // per pair, in the order the passes visit them

@@ -624,3 +624,28 @@ TEST(ShockPropagation, TheFirstRoundOffTheFrozenLevelSideBySideIsThatOfOneSphere
         }
     }
 }
+
+// The whole sweep side by side (the contacts inside a level by wavefronts, the rounds off the
+// frozen level in lanes) reaches the state of its one-contact-at-a-time code, which runs
+// while contacts are logged: the landing 2k pile, 40 steps from 1 s, positions, velocities
+// and contact states bit for bit. It fails when the contacts inside a level answer their
+// impacts too, not only their static contacts (checked).
+TEST(ShockPropagation, TheSweepSideBySideReachesTheStateOfOneContactAtATime) {
+    scenes::Scene scene = scenes::loadScene(scenes::presetPath("11_pile"));
+    for (const char* setting : {"count=2000", "radius=0.04", "threads=1", "shock=on"}) {
+        ASSERT_EQ(scenes::applySetting(scene, setting), "") << setting;
+    }
+    physics::World lanes = scenes::buildWorld(scene);
+    for (int k = 0; k < 60; ++k) physics::step(lanes, scene.params);
+    physics::World one = lanes;
+    one.recordContacts = true;
+    for (int k = 0; k < 40; ++k) {
+        physics::step(lanes, scene.params);
+        physics::step(one, scene.params);
+        one.contacts.clear();
+    }
+    EXPECT_GT(lanes.workspace.contactGraph.levelStart.size(), 4u);
+    EXPECT_EQ(lanes.position, one.position);
+    EXPECT_EQ(lanes.velocity, one.velocity);
+    EXPECT_EQ(lanes.contactState, one.contactState);
+}
