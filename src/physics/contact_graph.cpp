@@ -35,9 +35,8 @@ bool levelZero(const World& world, std::uint32_t i, const std::vector<double>* c
 // graph.edgeStart and graph.neighbour from the pairs. A pair the passes left a hair apart is
 // an edge too, so the sweep's moves, which may close it, still reach the spheres above it (a
 // column at K = 4 kept a gap under its top sphere, which no level then lifted: 0.47 % of
-// r). Each sphere's neighbours by number,
-// whatever the pair order: pairs taken in index order (i, then j) give them so, and
-// shuffled or coloured ones are sorted.
+// r). Each sphere's neighbours by number, whatever the pair order: pairs taken in index
+// order (i, then j) give them so, and shuffled or coloured ones are sorted.
 void findEdges(std::size_t n, const std::vector<SpherePair>& pairs, PairOrder order, ContactGraph& graph) {
     graph.edgeStart.assign(n + 1, 0);
     for (const SpherePair& pair : pairs) {
@@ -322,6 +321,32 @@ void repairLevels(ContactGraph& graph, const std::vector<std::uint8_t>& zero,
     }
 }
 
+// After the repair: the runs found again of the spheres with changed neighbours
+// (graph.touched), of those whose level changed, and of their neighbours; the repair's
+// marks cleared. Returns whether any level changed.
+bool splitChangedRuns(ContactGraph& graph) {
+    std::vector<std::uint32_t>& split = graph.unset;  // free again after the repair
+    split.assign(graph.touched.begin(), graph.touched.end());
+    bool levelsChanged = false;
+    for (const ContactGraph::Relevelled& r : graph.relevelled) {
+        graph.moved[r.sphere] = 0;
+        if (graph.level[r.sphere] == r.was) continue;
+        levelsChanged = true;
+        split.push_back(r.sphere);
+        for (std::uint32_t e = graph.edgeStart[r.sphere]; e < graph.edgeStart[r.sphere + 1]; ++e) {
+            split.push_back(graph.neighbour[e]);
+        }
+    }
+    std::sort(split.begin(), split.end());
+    split.erase(std::unique(split.begin(), split.end()), split.end());
+    for (const std::uint32_t i : split) {
+        // Back in order by number first: its runs are each by number, but not together.
+        std::sort(graph.neighbour.begin() + graph.edgeStart[i], graph.neighbour.begin() + graph.edgeStart[i + 1]);
+        splitIntoRuns(graph, i);
+    }
+    return levelsChanged;
+}
+
 // The graph of `pairs` updated from the last one; false where it cannot be (found anew).
 bool update(const World& world, const std::vector<SpherePair>& pairs, PairOrder order, ContactGraph& graph,
             const std::vector<std::uint8_t>& zero) {
@@ -345,28 +370,7 @@ bool update(const World& world, const std::vector<SpherePair>& pairs, PairOrder 
     if (!graph.added.empty() || !graph.removed.empty()) applyChangedPairs(graph);
     graph.relevelled.clear();
     repairLevels(graph, zero, zeroChanged);
-    // The runs to find again: the spheres with changed neighbours, those whose level
-    // changed, and their neighbours.
-    std::vector<std::uint32_t>& split = graph.unset;
-    split.assign(graph.touched.begin(), graph.touched.end());
-    bool levelsChanged = false;
-    for (const ContactGraph::Relevelled& r : graph.relevelled) {
-        graph.moved[r.sphere] = 0;
-        if (graph.level[r.sphere] == r.was) continue;
-        levelsChanged = true;
-        split.push_back(r.sphere);
-        for (std::uint32_t e = graph.edgeStart[r.sphere]; e < graph.edgeStart[r.sphere + 1]; ++e) {
-            split.push_back(graph.neighbour[e]);
-        }
-    }
-    std::sort(split.begin(), split.end());
-    split.erase(std::unique(split.begin(), split.end()), split.end());
-    for (const std::uint32_t i : split) {
-        // Back in order by number first: its runs are each by number, but not together.
-        std::sort(graph.neighbour.begin() + graph.edgeStart[i], graph.neighbour.begin() + graph.edgeStart[i + 1]);
-        splitIntoRuns(graph, i);
-    }
-    if (levelsChanged) orderByLevel(graph);
+    if (splitChangedRuns(graph)) orderByLevel(graph);
     return true;
 }
 

@@ -160,10 +160,12 @@ struct ContactGraph {
     std::vector<std::uint32_t> levelStart;  // level k: byLevel[levelStart[k], levelStart[k + 1])
     std::vector<SpherePair> builtFrom;     // the candidate pairs it was found from (in index order if builtInIndexOrder)
     bool builtInIndexOrder = false;        // whether the next step's pairs may update it
+    std::vector<std::uint8_t> zero;        // per sphere: near a plane (level 0), as it was found
     std::vector<glm::dvec3> positionsBeforePasses;  // m, the position stages' (shock on)
     std::vector<SpherePair> pairsAfterPasses;  // their pairs within reach after the passes, in index order
     // Scratch of the sweep: a level's contacts answered again; per sphere, moved in this
-    // round (all 0 between uses); per byLevel slot, the spheres whose frozen rounds go on.
+    // round (all 0 between uses; the graph's update marks the spheres it relevels in it
+    // too); per byLevel slot, the spheres whose frozen rounds go on.
     std::vector<SpherePair> pressed;
     std::vector<std::uint8_t> moved;
     std::vector<std::uint32_t> again;
@@ -182,7 +184,6 @@ struct ContactGraph {
         std::uint32_t sphere;
         std::int32_t was;
     };
-    std::vector<std::uint8_t> zero;  // per sphere: near a plane
     std::vector<SpherePair> added, removed;
     std::vector<Change> changes;
     std::vector<std::uint32_t> touched, zeroChanged, unset, runs;
