@@ -150,6 +150,10 @@ class Sweep {
             pushOffFrozenSideBySide(world_, graph_, moved.data(), moved.size(), clearanceKept());
             for (const std::uint32_t i : moved) onPlanes(i, false, stats_);
             ++stats_.shockRounds;
+            if (round + 1 == kMostLevelRounds) {  // the last round: none is answered again
+                for (const std::uint32_t i : moved) graph_.moved[i] = 0;
+                return;
+            }
             // The level's contacts of the spheres just moved, each once.
             count = 0;
             pressed.resize(besides);
