@@ -67,6 +67,31 @@ void wallsVelocityAndPosition(World& world, const Params& params, StepStats& sta
     });
 }
 
+// Workspace::wallClearance of every sphere (findWallClearances) and, for passes by
+// wavefronts, the wavefronts (findWavefronts). On several threads, one finds the
+// wavefronts (a chain of pairs: one thread's work) while the others find the clearances.
+void findWavefrontsAndWallClearances(World& world, const Params& params) {
+    const bool byWavefronts = passesByWavefronts(world, params);
+    const int threads = threadsFor(world, params);
+    if (!byWavefronts || threads == 1) {
+        if (byWavefronts) findWavefronts(world);
+        findWallClearances(world, params);
+        return;
+    }
+    std::vector<double>& clearance = world.workspace.wallClearance;  // m
+    clearance.resize(world.size());
+    const double scale = planeScale(world);  // m
+    const int sphereTasks = kSphereTasksPerThread * (threads - 1);
+    runTasks(threads, 1 + sphereTasks, [&](int t) {
+        if (t == 0) {
+            findWavefronts(world);
+            return;
+        }
+        const Range range = rangeOf(world.size(), t - 1, sphereTasks);
+        for (std::uint32_t i = range.begin; i < range.end; ++i) clearance[i] = wallClearance(world, i, scale);
+    });
+}
+
 }  // namespace
 
 StepStats stepWithPositionResponse(World& world, const Params& params, double h,
@@ -78,7 +103,7 @@ StepStats stepWithPositionResponse(World& world, const Params& params, double h,
     if (params.shock == ShockPropagation::On) world.workspace.contactGraph.positionsBeforePasses = world.position;
     {
         const StageTimer timer(stats.passesSeconds);
-        findWallClearances(world, params);
+        findWavefrontsAndWallClearances(world, params);
         beginMeasuringImpacts(world, params);
         const bool together = solvesTogether(params.solver);
         runPasses(world, params, stats, [&](int pass) {

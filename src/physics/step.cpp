@@ -380,10 +380,8 @@ void findOrderedPairs(World& world, const Params& params, StepStats& stats) {
     const int passThreads = threadsFor(world, params);
     ws.shareThreads = 1;
     // The colored order shares out each colour as it goes (forEachColor), and so do the
-    // position stages' wavefronts (forEachWavefront).
-    if (passesByWavefronts(world, params)) {
-        findWavefronts(world);
-    } else if (passThreads > 1 && params.order != PairOrder::Colored) {
+    // position stages' wavefronts (forEachWavefront; found with the wall clearances).
+    if (passThreads > 1 && params.order != PairOrder::Colored && !passesByWavefronts(world, params)) {
         sharePairsOut(world, passThreads);
     }
 }
