@@ -118,20 +118,8 @@ class Sweep {
     // only) while any is deeper than kSettledOverlap, for at most kMostLevelRounds rounds
     // in all. Only the few that need it: a whole level's contacts cost as much as a pass.
     void pressAgain(std::uint32_t k) {
-        std::vector<SpherePair>& pressed = graph_.pressed;
-        // Pairs are kept without a branch (pressed[count] written, count moved on if kept):
-        // which are still pressed is as good as random.
-        std::size_t count = 0;
-        std::size_t insidePairs = 0;
-        for (std::uint32_t s = graph_.levelStart[k]; s < graph_.levelStart[k + 1]; ++s) {
-            insidePairs += graph_.besideCount[graph_.byLevel[s]] - graph_.besideBefore[graph_.byLevel[s]];
-        }
-        pressed.resize(insidePairs);
-        forEachPairInside(k, [&](const SpherePair& pair) {
-            pressed[count] = pair;
-            count += pressedDeeper(pair);
-        });
-        pressed.resize(count);
+        const std::vector<SpherePair>& pressed = graph_.pressed;
+        findPressedInside(k);
         std::vector<std::uint32_t>& moved = graph_.queue;  // free again: the levels are found
         for (int round = 1; round < kMostLevelRounds && !pressed.empty(); ++round) {
             for (const SpherePair& pair : pressed) inside(pair, false);
@@ -150,25 +138,45 @@ class Sweep {
             pushOffFrozenSideBySide(world_, graph_, moved.data(), moved.size(), clearanceKept());
             for (const std::uint32_t i : moved) onPlanes(i, false, stats_);
             ++stats_.shockRounds;
-            if (round + 1 == kMostLevelRounds) {  // the last round: none is answered again
-                for (const std::uint32_t i : moved) graph_.moved[i] = 0;
-                return;
-            }
-            // The level's contacts of the spheres just moved, each once.
-            count = 0;
-            pressed.resize(besides);
-            for (const std::uint32_t i : moved) {
-                const std::uint32_t* beside = besideOf(i);
-                for (std::uint32_t b = 0; b < graph_.besideCount[i]; ++b) {
-                    const std::uint32_t j = beside[b];
-                    const SpherePair pair{std::min(i, j), std::max(i, j)};
-                    pressed[count] = pair;
-                    count += !(graph_.moved[j] && j < i) & pressedDeeper(pair);
-                }
-            }
-            pressed.resize(count);
+            if (round + 1 < kMostLevelRounds) findPressedBeside(moved, besides);  // the next round's
             for (const std::uint32_t i : moved) graph_.moved[i] = 0;
         }
+    }
+
+    // pressed <- the contacts inside level k pressed deeper than kSettledOverlap. Pairs are
+    // kept without a branch (pressed[count] written, count moved on if kept): which are
+    // still pressed is as good as random.
+    void findPressedInside(std::uint32_t k) {
+        std::vector<SpherePair>& pressed = graph_.pressed;
+        std::size_t count = 0;
+        std::size_t insidePairs = 0;
+        for (std::uint32_t s = graph_.levelStart[k]; s < graph_.levelStart[k + 1]; ++s) {
+            insidePairs += graph_.besideCount[graph_.byLevel[s]] - graph_.besideBefore[graph_.byLevel[s]];
+        }
+        pressed.resize(insidePairs);
+        forEachPairInside(k, [&](const SpherePair& pair) {
+            pressed[count] = pair;
+            count += pressedDeeper(pair);
+        });
+        pressed.resize(count);
+    }
+
+    // pressed <- the level's contacts of the spheres just moved (graph_.moved set; `besides`
+    // contacts in all) that are pressed deeper than kSettledOverlap, each once (kept as above).
+    void findPressedBeside(const std::vector<std::uint32_t>& moved, std::size_t besides) {
+        std::vector<SpherePair>& pressed = graph_.pressed;
+        std::size_t count = 0;
+        pressed.resize(besides);
+        for (const std::uint32_t i : moved) {
+            const std::uint32_t* beside = besideOf(i);
+            for (std::uint32_t b = 0; b < graph_.besideCount[i]; ++b) {
+                const std::uint32_t j = beside[b];
+                const SpherePair pair{std::min(i, j), std::max(i, j)};
+                pressed[count] = pair;
+                count += !(graph_.moved[j] && j < i) & pressedDeeper(pair);
+            }
+        }
+        pressed.resize(count);
     }
 
     // Whether the pair overlaps by more than kSettledOverlap of the smaller radius (its
