@@ -106,6 +106,7 @@ void orderByLevel(ContactGraph& graph) {
     }
     graph.again.resize(graph.byLevel.size());
     graph.goesOn.resize(graph.byLevel.size());
+    graph.byBelow.resize(graph.byLevel.size());
 }
 
 // Sphere i's neighbours, given by number, into its three runs (below, beside, the rest),

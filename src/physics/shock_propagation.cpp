@@ -101,6 +101,7 @@ class Sweep {
     // shared between threads, with the result of one thread.
     void onFrozenLevel(std::uint32_t k) {
         const std::uint32_t first = graph_.levelStart[k], count = graph_.levelStart[k + 1] - first;
+        sortByBelow(graph_.byLevel.data() + first, count, graph_.byBelow.data() + first);
         const int threads = count >= kParallelLevelSpheres ? threadsFor(world_, params_) : 1;
         if (threads == 1) {
             onFrozen(first, first + count, stats_);
@@ -135,7 +136,9 @@ class Sweep {
             }
             // Each moved sphere off the frozen spheres below it once (the level's rounds
             // repeat it), then off its planes: onFrozen's later rounds, side by side.
-            pushOffFrozenSideBySide(world_, graph_, moved.data(), moved.size(), clearanceKept());
+            graph_.movedByBelow.resize(moved.size());
+            sortByBelow(moved.data(), moved.size(), graph_.movedByBelow.data());
+            pushOffFrozenSideBySide(world_, graph_, graph_.movedByBelow.data(), moved.size(), clearanceKept());
             for (const std::uint32_t i : moved) onPlanes(i, false, stats_);
             ++stats_.shockRounds;
             if (round + 1 < kMostLevelRounds) findPressedBeside(moved, besides);  // the next round's
@@ -225,7 +228,7 @@ class Sweep {
         std::uint8_t* goesOn = graph_.goesOn.data() + begin;
         std::uint32_t count = 0;
         if (moves_ && !world_.recordContacts) {
-            const std::uint32_t* spheres = graph_.byLevel.data() + begin;
+            const std::uint32_t* spheres = graph_.byBelow.data() + begin;
             pushOffFrozenSideBySide(world_, graph_, spheres, end - begin, clearanceKept(), goesOn, kSettledOverlap, 0,
                                     &params_, &stats);
             for (std::uint32_t c = 0; c < end - begin; ++c) {
@@ -249,6 +252,19 @@ class Sweep {
             }
             count = left;
         }
+    }
+
+    // spheres[0, count) into `out` by how many frozen spheres each has below, fewest first
+    // (a counting sort): the pushes off the frozen level then run as many turns in each
+    // lane (8 lanes in the level's order: two thirds of their turns used, in the resting
+    // 10k pile). Each sphere moves only itself, against spheres that no longer move: the
+    // order changes no result.
+    void sortByBelow(const std::uint32_t* spheres, std::uint32_t count, std::uint32_t* out) const {
+        constexpr std::uint32_t kKinds = 8;  // 7 or more below go together
+        std::uint32_t start[kKinds + 1] = {};
+        for (std::uint32_t c = 0; c < count; ++c) ++start[std::min(graph_.belowCount[spheres[c]], kKinds - 1) + 1];
+        for (std::uint32_t b = 0; b < kKinds; ++b) start[b + 1] += start[b];
+        for (std::uint32_t c = 0; c < count; ++c) out[start[std::min(graph_.belowCount[spheres[c]], kKinds - 1)]++] = spheres[c];
     }
 
     // byLevel's s-th sphere's first round: velocities (the static contacts), then positions.

@@ -170,6 +170,10 @@ struct ContactGraph {
     std::vector<std::uint8_t> moved;
     std::vector<std::uint32_t> again;
     std::vector<std::uint8_t> goesOn;
+    // Spheres to push off the frozen level, by how many frozen spheres each has below, so
+    // that the spheres side by side in the lanes have as many (per byLevel slot; then the
+    // moved spheres of a round).
+    std::vector<std::uint32_t> byBelow, movedByBelow;
     // Scratch of the sweep's first round inside a level, by wavefronts: the pairs, each one's
     // wavefront, where each wavefront starts, and per sphere the wavefront of its next pair
     // (all 0 between uses).
