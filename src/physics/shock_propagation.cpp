@@ -219,10 +219,10 @@ class Sweep {
     // planes (walls last: never crossed), in at most kMostFrozenRounds rounds: a round that
     // pushed a sphere off one frozen sphere only, or none deeper than kSettledOverlap of its
     // radius, is its last. The first round answers the static contacts too; the later ones
-    // move them only. Both go several spheres side by side, but the velocity method's first
-    // round, and any with the contact log, which go one sphere at a time. Each sphere moves
-    // only itself, against spheres that no longer move: the rounds of one sphere may wait
-    // for those of the others.
+    // move them only. Both go several spheres side by side (in byBelow's order of the same
+    // slots), but the velocity method's first round, and any with the contact log, which go
+    // one sphere at a time (in byLevel's). Each sphere moves only itself, against spheres that
+    // no longer move: the rounds of one sphere may wait for those of the others.
     void onFrozen(std::uint32_t begin, std::uint32_t end, StepStats& stats) {
         std::uint32_t* again = graph_.again.data() + begin;  // the spheres whose rounds go on
         std::uint8_t* goesOn = graph_.goesOn.data() + begin;
