@@ -101,7 +101,7 @@ class Sweep {
     // shared between threads, with the result of one thread.
     void onFrozenLevel(std::uint32_t k) {
         const std::uint32_t first = graph_.levelStart[k], count = graph_.levelStart[k + 1] - first;
-        sortByBelow(graph_.byLevel.data() + first, count, graph_.byBelow.data() + first);
+        if (frozenInLanes()) sortByBelow(graph_.byLevel.data() + first, count, graph_.byBelow.data() + first);
         const int threads = count >= kParallelLevelSpheres ? threadsFor(world_, params_) : 1;
         if (threads == 1) {
             onFrozen(first, first + count, stats_);
@@ -227,7 +227,7 @@ class Sweep {
         std::uint32_t* again = graph_.again.data() + begin;  // the spheres whose rounds go on
         std::uint8_t* goesOn = graph_.goesOn.data() + begin;
         std::uint32_t count = 0;
-        if (moves_ && !world_.recordContacts) {
+        if (frozenInLanes()) {
             const std::uint32_t* spheres = graph_.byBelow.data() + begin;
             pushOffFrozenSideBySide(world_, graph_, spheres, end - begin, clearanceKept(), goesOn, kSettledOverlap, 0,
                                     &params_, &stats);
@@ -253,6 +253,10 @@ class Sweep {
             count = left;
         }
     }
+
+    // Whether the first round off the frozen level goes several spheres side by side: in the
+    // position stages, without the contact log (else one sphere at a time, in byLevel's order).
+    bool frozenInLanes() const { return moves_ && !world_.recordContacts; }
 
     // spheres[0, count) into `out` by how many frozen spheres each has below, fewest first
     // (a counting sort): the pushes off the frozen level then run as many turns in each
