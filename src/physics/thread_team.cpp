@@ -65,15 +65,14 @@ public:
             std::lock_guard<std::mutex> lock(mutex_);
             function_ = function;
             context_ = context;
-            taskCount_ = tasks;
-            nextTask_.store(0);
+            untaken_.store(std::uint64_t(std::uint32_t(tasks)) << 32);
             helpers_ = helpers;
             spin_ = spinningPays(helpers + 1);
             open_ = true;
             ++generation_;
         }
         wake_.notify_all();
-        drain();
+        drain(true);
         // Every task is taken. A worker that has not joined yet (the cores are busy with
         // other processes, say) is not waited for: it will skip this run.
         {
@@ -86,8 +85,24 @@ public:
 private:
     std::chrono::microseconds spinTime() const { return spin_ ? kSpinTime : std::chrono::microseconds(0); }
 
-    void drain() {
-        for (int t = nextTask_.fetch_add(1); t < taskCount_; t = nextTask_.fetch_add(1)) function_(context_, t);
+    // Runs untaken tasks until none is left: the caller's thread from the first on, the
+    // workers from the last back. Each thread then keeps to one end of the tasks, and so,
+    // where the tasks are ranges of spheres by number or by place, to the same spheres from
+    // one run to the next: their cache lines stay in its core's cache (one fetched from the
+    // other core cost 80-110 ns on the machine of the 2026-11-26 runs).
+    void drain(bool fromFirst) {
+        for (;;) {
+            std::uint64_t range = untaken_.load();
+            std::uint64_t taken;
+            int t;
+            do {
+                const std::uint32_t first = std::uint32_t(range), end = std::uint32_t(range >> 32);
+                if (first >= end) return;
+                t = int(fromFirst ? first : end - 1);
+                taken = fromFirst ? range + 1 : range - (std::uint64_t(1) << 32);
+            } while (!untaken_.compare_exchange_weak(range, taken));
+            function_(context_, t);
+        }
     }
 
     void awaitJoinedWorkers() {
@@ -114,7 +129,7 @@ private:
 
     void work(int id, std::uint64_t seen) {
         while (join(id, seen)) {
-            drain();
+            drain(false);
             if (active_.fetch_sub(1) == 1) {
                 std::lock_guard<std::mutex> lock(mutex_);
                 finished_.notify_one();
@@ -130,9 +145,8 @@ private:
     bool stopping_ = false;
     TaskFunction function_ = nullptr;
     const void* context_ = nullptr;
-    int taskCount_ = 0;
     int helpers_ = 0;
-    std::atomic<int> nextTask_{0};
+    std::atomic<std::uint64_t> untaken_{0};  // the tasks not taken yet: [low 32 bits, high 32 bits)
     std::atomic<bool> spin_{true};  // the last run's threads fit the cores: waits spin first
     bool open_ = false;           // workers may join the run (under mutex_)
     std::atomic<int> active_{0};  // workers that joined the run and have not finished
