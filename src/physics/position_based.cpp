@@ -74,7 +74,7 @@ void findWavefrontsAndWallClearances(World& world, const Params& params) {
     const bool byWavefronts = passesByWavefronts(world, params);
     const int threads = threadsFor(world, params);
     if (!byWavefronts || threads == 1) {
-        if (byWavefronts) findWavefronts(world);
+        if (byWavefronts) findWavefronts(world, threads);
         findWallClearances(world, params);
         return;
     }
@@ -84,7 +84,7 @@ void findWavefrontsAndWallClearances(World& world, const Params& params) {
     const int sphereTasks = kSphereTasksPerThread * (threads - 1);
     runTasks(threads, 1 + sphereTasks, [&](int t) {
         if (t == 0) {
-            findWavefronts(world);
+            findWavefronts(world, threads);
             return;
         }
         const Range range = rangeOf(world.size(), t - 1, sphereTasks);

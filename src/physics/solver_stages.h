@@ -314,14 +314,16 @@ void forEachColor(World& world, const Params& params, StepStats& stats, const Vi
 // sequential solvers (the global ones answer velocities by their own order), no contact
 // log, and a CPU with 4 lanes or more (2 lanes cost what they save).
 bool passesByWavefronts(const World& world, const Params& params);
-// Workspace::wavefrontOrder and wavefrontStart from visitOrder.
-void findWavefronts(World& world);
+// Workspace::wavefrontOrder and wavefrontStart from visitOrder, for `threads` threads.
+void findWavefronts(World& world, int threads);
 // `pairs` (in pass order) into `order`, wavefront by wavefront, each in pass order:
 // wavefront w is order[start[w], start[w + 1]). `next`: per sphere, all 0 on entry and on
-// return; `ofPair`: scratch.
+// return; `ofPair`: scratch. With `strip` (per sphere, below `strips`), a wavefront's
+// pairs go by the strip of their first sphere, each strip's in pass order.
 void sortIntoWavefronts(const std::vector<SpherePair>& pairs, std::vector<std::uint32_t>& next,
                         std::vector<std::uint32_t>& ofPair, std::vector<std::uint32_t>& start,
-                        std::vector<SpherePair>& order);
+                        std::vector<SpherePair>& order, const std::uint8_t* strip = nullptr,
+                        std::uint32_t strips = 1);
 template <class Visit>
 void forEachWavefront(World& world, const Params& params, StepStats& stats, const Visit& visit) {
     const Workspace& ws = world.workspace;

@@ -19,7 +19,7 @@ bool passesByWavefronts(const World& world, const Params& params) {
 
 void sortIntoWavefronts(const std::vector<SpherePair>& pairs, std::vector<std::uint32_t>& next,
                         std::vector<std::uint32_t>& ofPair, std::vector<std::uint32_t>& start,
-                        std::vector<SpherePair>& order) {
+                        std::vector<SpherePair>& order, const std::uint8_t* strip, std::uint32_t strips) {
     ofPair.resize(pairs.size());
     std::uint32_t wavefronts = 0;
     for (std::size_t k = 0; k < pairs.size(); ++k) {
@@ -29,20 +29,64 @@ void sortIntoWavefronts(const std::vector<SpherePair>& pairs, std::vector<std::u
         wavefronts = std::max(wavefronts, w + 1);
     }
     for (const SpherePair& pair : pairs) next[pair.i] = next[pair.j] = 0;
-    // Placed by wavefront, each in pass order (a counting sort).
-    start.assign(std::size_t(wavefronts) + 1, 0);
-    for (const std::uint32_t w : ofPair) ++start[w + 1];
-    for (std::uint32_t w = 0; w < wavefronts; ++w) start[w + 1] += start[w];
+    // Placed by wavefront, and in one by the strip of its first sphere, each in pass order
+    // (a counting sort by wavefront x strips + strip).
+    if (strip) {
+        for (std::size_t k = 0; k < pairs.size(); ++k) ofPair[k] = ofPair[k] * strips + strip[pairs[k].i];
+    }
+    const std::uint32_t keys = wavefronts * strips;
+    start.assign(std::size_t(keys) + 1, 0);
+    for (const std::uint32_t key : ofPair) ++start[key + 1];
+    for (std::uint32_t key = 0; key < keys; ++key) start[key + 1] += start[key];
     order.resize(pairs.size());
     for (std::size_t k = 0; k < pairs.size(); ++k) order[start[ofPair[k]]++] = pairs[k];
-    for (std::uint32_t w = wavefronts; w > 0; --w) start[w] = start[w - 1];  // back to where each starts
+    // start[key] is now where key + 1 starts: wavefront w starts where key w x strips - 1
+    // ends. (Each read before it is written over: downwards with one strip, upwards with more.)
+    if (strips == 1) {
+        for (std::uint32_t w = wavefronts; w > 0; --w) start[w] = start[w - 1];
+    } else {
+        for (std::uint32_t w = 1; w <= wavefronts; ++w) start[w] = start[std::size_t(w) * strips - 1];
+    }
     start[0] = 0;
+    start.resize(std::size_t(wavefronts) + 1);
 }
 
-void findWavefronts(World& world) {
+namespace {
+
+// Strips across the pile, for the wavefronts on several threads (findWavefronts).
+constexpr std::uint32_t kWavefrontStrips = 16;
+
+// Per sphere, its strip of kWavefrontStrips equal ones across the spheres' widest extent.
+void findStrips(const World& world, std::vector<std::uint8_t>& strip) {
+    strip.resize(world.size());
+    if (world.size() == 0) return;
+    glm::dvec3 low = world.position[0], high = low;  // m
+    for (const glm::dvec3& p : world.position) low = glm::min(low, p), high = glm::max(high, p);
+    const glm::dvec3 extent = high - low;  // m
+    const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : extent.y >= extent.z ? 1 : 2;
+    const double perStrip = kWavefrontStrips / std::max(extent[axis], 1e-300);  // 1/m
+    for (std::size_t i = 0; i < world.size(); ++i) {
+        const double at = (world.position[i][axis] - low[axis]) * perStrip;  // NaN: strip 0
+        strip[i] = std::uint8_t(at > 0.0 ? std::min<double>(at, kWavefrontStrips - 1) : 0.0);
+    }
+}
+
+}  // namespace
+
+// On several threads, a wavefront's pairs go by strips across the pile. Threads take a
+// wavefront's pairs in ranges, and in pass order its pairs lie in a band of sphere numbers
+// that moves up from one wavefront to the next (in the landing 64k pile, half of a
+// wavefront's pairs within 7 000 numbers, its middle 600 higher in the next). Cut by
+// number, each wavefront handed the spheres around its middle to the other thread, their
+// cache lines with them; cut by strip, a sphere stays with the thread that takes its side
+// of the pile.
+void findWavefronts(World& world, int threads) {
     Workspace& ws = world.workspace;
     ws.wavefrontNext.resize(world.size(), 0);
-    sortIntoWavefronts(ws.visitOrder, ws.wavefrontNext, ws.wavefrontOfPair, ws.wavefrontStart, ws.wavefrontOrder);
+    const bool byStrips = threads > 1;
+    if (byStrips) findStrips(world, ws.wavefrontStrip);
+    sortIntoWavefronts(ws.visitOrder, ws.wavefrontNext, ws.wavefrontOfPair, ws.wavefrontStart, ws.wavefrontOrder,
+                       byStrips ? ws.wavefrontStrip.data() : nullptr, byStrips ? kWavefrontStrips : 1);
 }
 
 }  // namespace physics

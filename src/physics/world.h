@@ -286,6 +286,7 @@ struct Workspace {
     std::vector<std::uint32_t> wavefrontStart;
     std::vector<std::uint32_t> wavefrontOfPair;  // scratch: per pair in pass order
     std::vector<std::uint32_t> wavefrontNext;    // scratch: per sphere, all 0 between uses
+    std::vector<std::uint8_t> wavefrontStrip;    // scratch: per sphere, its strip across the pile
     // The contacts of a step whose positions stay put while its passes run (velocity
     // based, response only): found once, used by every pass (findContacts).
     std::vector<std::uint8_t> pairTouches;     // per pair, in the order the passes visit them

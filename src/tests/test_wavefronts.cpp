@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -27,17 +28,30 @@ scenes::Scene pile(std::initializer_list<std::string> settings) {
 }  // namespace
 
 // No two pairs of a wavefront share a sphere, and each sphere meets its pairs in pass
-// order: a pair's wavefront is later than those of its spheres' earlier pairs.
+// order: a pair's wavefront is later than those of its spheres' earlier pairs. On
+// several threads, a wavefront's pairs go by strips across the pile.
 TEST(Wavefronts, NoTwoPairsOfAWavefrontShareASphereAndEachSphereMeetsItsPairsInPassOrder) {
-    for (const char* order : {"index", "reversed", "shuffled"}) {
+    for (const auto& [order, threads] : std::vector<std::pair<const char*, int>>{
+             {"index", 1}, {"reversed", 1}, {"shuffled", 1}, {"index", 2}, {"reversed", 2}, {"shuffled", 2}}) {
         const scenes::Scene scene = pile({std::string("order=") + order});
         physics::World world = scenes::buildWorld(scene);
         for (int k = 0; k < 90; ++k) physics::step(world, scene.params);  // 1.5 s: landing
         physics::StepStats stats;
         physics::findOrderedPairs(world, scene.params, stats);
         ASSERT_TRUE(physics::passesByWavefronts(world, scene.params) || physics::laneWidths().back() < 4);
-        physics::findWavefronts(world);
+        physics::findWavefronts(world, threads);
         const physics::Workspace& ws = world.workspace;
+        if (threads > 1) {
+            ASSERT_EQ(ws.wavefrontStrip.size(), world.size());
+            for (std::size_t w = 0; w + 1 < ws.wavefrontStart.size(); ++w) {
+                for (std::uint32_t k = ws.wavefrontStart[w]; k + 1 < ws.wavefrontStart[w + 1]; ++k) {
+                    EXPECT_LE(ws.wavefrontStrip[ws.wavefrontOrder[k].i], ws.wavefrontStrip[ws.wavefrontOrder[k + 1].i])
+                        << order << ": wavefront " << w;
+                }
+            }
+            const std::set<std::uint8_t> strips(ws.wavefrontStrip.begin(), ws.wavefrontStrip.end());
+            EXPECT_EQ(strips.size(), 16u) << order;
+        }
         ASSERT_EQ(ws.wavefrontOrder.size(), ws.visitOrder.size());
         ASSERT_GT(ws.wavefrontStart.size(), 10u) << order;
         std::vector<int> wavefrontOf(ws.visitOrder.size());
