@@ -176,8 +176,10 @@ LANES_INLINE std::uint32_t separateInLanes(World& world, const Params& params, c
             scatter<W>(velocity, i, choose(answered, r.v1, v1));
             scatter<W>(velocity, j, choose(answered, r.v2, v2));
             for (int l = 0; l < W; ++l) {
-                state[i[l]] = recorded(state[i[l]], bounce[l] != 0, isStatic[l] != 0);
-                state[j[l]] = recorded(state[j[l]], bounce[l] != 0, isStatic[l] != 0);
+                const ContactState si = recorded(state[i[l]], bounce[l] != 0, isStatic[l] != 0);
+                const ContactState sj = recorded(state[j[l]], bounce[l] != 0, isStatic[l] != 0);
+                if (si != state[i[l]]) state[i[l]] = si;
+                if (sj != state[j[l]]) state[j[l]] = sj;
             }
             stats.collisions += countLanes<W>(bounce);
             stats.staticContacts += countLanes<W>(isStatic);
