@@ -12,6 +12,7 @@
 // result is the graph found anew, entry for entry (a test compares them after every step).
 #include <algorithm>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 
 #include "physics/solver_stages.h"
@@ -186,7 +187,14 @@ bool findChangedPairs(const std::vector<SpherePair>& pairs, ContactGraph& graph,
     const auto at = [&](std::size_t k) -> const SpherePair& { return Backwards ? pairs[count - 1 - k] : pairs[k]; };
     std::size_t a = 0, b = 0;
     for (;;) {
-        while (a < count && b < old.size() && key(at(a)) == key(old[b])) ++a, ++b;  // most of them
+        if (!Backwards) {  // most of them are the same: compared a block at a time first
+            constexpr std::size_t kBlock = 64;
+            while (a + kBlock <= count && b + kBlock <= old.size() &&
+                   std::memcmp(&pairs[a], &old[b], kBlock * sizeof(SpherePair)) == 0) {
+                a += kBlock, b += kBlock;
+            }
+        }
+        while (a < count && b < old.size() && key(at(a)) == key(old[b])) ++a, ++b;
         if (a == count && b == old.size()) return true;
         if (graph.added.size() + graph.removed.size() >= most) return false;
         if (b == old.size() || (a < count && key(at(a)) < key(old[b]))) {
@@ -386,6 +394,7 @@ void keepContactGraph(const World& world, const std::vector<SpherePair>& pairs, 
     const bool updated = update(world, pairs, order, graph, zero);
     const bool inRange = updated || findContactGraphAnew(pairs, order, zero, graph);
     graph.builtInIndexOrder = inRange && inIndexOrderPairs(order);  // the next step's may update it
+    if (updated && graph.added.empty() && graph.removed.empty()) return;  // builtFrom holds these pairs
     if (order == PairOrder::Reversed) {
         graph.builtFrom.assign(pairs.rbegin(), pairs.rend());
     } else {
