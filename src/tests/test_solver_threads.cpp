@@ -60,6 +60,32 @@ TEST(ThreadTeam, RunsEveryTaskExactlyOnce) {
     }
 }
 
+// The caller takes tasks from the first on, the workers from the last back, so that each
+// thread keeps to the same end of a run's ranges from one run to the next (and its spheres'
+// cache lines stay with its core): the caller's tasks are 0, 1, ... with none of the
+// workers' among them. (Taken as they come, not by number: a caller slow to start, as when
+// it woke the workers another test left asleep, may find every task taken.) Each task
+// lasts about 20 us, long enough for both to take some in most runs on an idle machine.
+TEST(ThreadTeam, TheCallerTakesTasksFromTheFirstAndTheWorkersFromTheLast) {
+    int runsOfBoth = 0;
+    for (int round = 0; round < 200; ++round) {
+        constexpr int kTasks = 16;
+        const std::thread::id caller = std::this_thread::get_id();
+        std::vector<std::uint8_t> byCaller(kTasks, 0);
+        physics::runTasks(2, kTasks, [&](int t) {
+            byCaller[std::size_t(t)] = std::this_thread::get_id() == caller;
+            const auto until = std::chrono::steady_clock::now() + std::chrono::microseconds(20);
+            while (std::chrono::steady_clock::now() < until) {
+            }
+        });
+        const auto callersEnd = std::find(byCaller.begin(), byCaller.end(), 0);
+        EXPECT_EQ(std::count(callersEnd, byCaller.end(), 1), 0) << "round " << round;
+        runsOfBoth += callersEnd != byCaller.begin() && callersEnd != byCaller.end();
+    }
+    // (Not "in most runs": beside other tests on few cores, the worker may get no core.)
+    EXPECT_GT(runsOfBoth, 0) << "the caller and a worker both took tasks in some run";
+}
+
 // Runs that ask for fewer threads than the team has leave some workers idle: a worker
 // that wakes late for such a run must not take the next run's helper count for its own
 // (it would count itself done twice: a run could return with a task unfinished, or the
