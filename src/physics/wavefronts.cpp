@@ -88,7 +88,7 @@ double splitCost(const World& world, int axis, double middle) {
 // Per sphere, its strip of kWavefrontStrips equal ones across the axis that splitCost finds
 // cheapest. The pile is numbered along x, then y, then z: across x each row of it (one
 // line of contact states) is on both sides, across z a wavefront on one. Two threads over
-// one (64k, index order, landing, same state): 1.46 across x, 1.25 across z, 1.67-1.72
+// one (64k, index order, landing, same state): 1.46 across x, 1.25 across z, 1.64-1.72
 // across y, which splitCost takes.
 void findStrips(const World& world, std::vector<std::uint8_t>& strip) {
     strip.resize(world.size());
