@@ -77,10 +77,10 @@ TEST(Wavefronts, NoTwoPairsOfAWavefrontShareASphereAndEachSphereMeetsItsPairsInP
     }
 }
 
-// The strips go across the axis along which the spheres' numbers move neither fastest (the
-// spheres of a cache line would be on both threads) nor slowest (a band of numbers, as a
-// wavefront is, would lie in a strip or two): a lattice numbered along one axis, then a
-// second, then the third, gets strips across the second, 16 of them.
+// The strips go across the axis that splitCost (wavefronts.cpp) finds cheapest: on a
+// lattice numbered along one axis, then a second, then the third, the second. Across the
+// first, the spheres of a cache line would be on both threads; across the third, a band of
+// numbers (as a wavefront is) would lie in a strip or two. 16 strips, all used.
 TEST(Wavefronts, StripsGoAcrossTheAxisAlongWhichNumbersMoveNeitherFastestNorSlowest) {
     constexpr int kSide = 24;
     for (const glm::ivec3 axes : {glm::ivec3(0, 1, 2), glm::ivec3(1, 2, 0), glm::ivec3(2, 0, 1)}) {
