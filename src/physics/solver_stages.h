@@ -251,10 +251,11 @@ void pushOffFrozenSideBySide(World& world, const ContactGraph& graph, const std:
 // The lane widths this CPU runs, ascending: 2, and 4 with AVX2, 8 with AVX-512.
 std::vector<int> laneWidths();
 
-// A colour or wavefront with fewer pairs than this is visited on one thread: handing it
-// out would cost more than it saves (a run of the team costs a few microseconds). The 16k
-// pile's wavefronts hold about 500 pairs: at 2048, its index order gained 1.16x from a
-// second thread, at 512 1.28-1.36x (the colored order the same at both; 256 did no better).
+// A colour with fewer pairs than this is visited on one thread: handing it out would cost
+// more than it saves (a run of the team costs a few microseconds). Measured when the
+// wavefronts too were handed out one by one (the 16k pile's hold about 500 pairs): at
+// 2048, its index order gained 1.16x from a second thread, at 512 1.28-1.36x (the colored
+// order the same at both; 256 did no better).
 constexpr std::uint32_t kColorShareMin = 512;
 // Tasks per thread of a colour, taken as they come, so that a thread slowed by another
 // process leaves its part to the others.
@@ -314,22 +315,189 @@ void forEachColor(World& world, const Params& params, StepStats& stats, const Vi
 // sequential solvers (the global ones answer velocities by their own order), no contact
 // log, and a CPU with 4 lanes or more (2 lanes cost what they save).
 bool passesByWavefronts(const World& world, const Params& params);
-// Workspace::wavefrontOrder and wavefrontStart from visitOrder, for `threads` threads.
+// Workspace::wavefrontOrder and wavefrontStart from visitOrder, for `threads` threads (on
+// several, with Workspace::wavefrontStrips).
 void findWavefronts(World& world, int threads);
 // `pairs` (in pass order) into `order`, wavefront by wavefront, each in pass order:
 // wavefront w is order[start[w], start[w + 1]). `next`: per sphere, all 0 on entry and on
-// return; `ofPair`: scratch. With `strip` (per sphere, below `strips`), a wavefront's
-// pairs go by the strip of their first sphere, each strip's in pass order.
+// return; `ofPair`: scratch. With `strips` (its ofSphere and count given), a wavefront's
+// pairs go by the strip of their first sphere, each strip's in pass order, and the strips'
+// start and span are found.
 void sortIntoWavefronts(const std::vector<SpherePair>& pairs, std::vector<std::uint32_t>& next,
                         std::vector<std::uint32_t>& ofPair, std::vector<std::uint32_t>& start,
-                        std::vector<SpherePair>& order, const std::uint8_t* strip = nullptr,
-                        std::uint32_t strips = 1);
+                        std::vector<SpherePair>& order, Workspace::WavefrontStrips* strips = nullptr);
+
+// A pass by wavefronts on several threads with no barrier between wavefronts. Each thread
+// has a share: a run of strips across the pile (Workspace::WavefrontStrips) holding about
+// as many of the pass's pairs as the others' runs. It goes through the wavefronts in its
+// strips. Two pairs that share a sphere have their first spheres at most 2 x span strips
+// apart (span: the most strips between a pair's two spheres). So before wavefront w a
+// share waits only for its neighbours (the shares whose strips come that near) to have
+// done wavefront w - 1: every sphere meets its pairs in pass order, the result of one
+// thread bit for bit. (Waiting only for the strips of wavefront w - 1 near it, visited
+// first, or only for the pairs that met its spheres last, gained nothing measurable at 16k
+// and 64k: the waits are as many.)
+// As in SharedPass, one thread at a time advances a share, normally its own; a thread
+// that waits for a share that nobody advances (its thread has no core) advances it itself
+// after a short spin. No waits go round in a circle: a wavefront needs only earlier ones,
+// so the share with the fewest wavefronts done has what it needs.
+template <class Visit>
+class StripPass {
+  public:
+    StripPass(const World& world, int threads, const Visit& visit)
+        : strips_(world.workspace.wavefrontStrips), pairs_(world.workspace.wavefrontOrder.data()), visit_(visit),
+          wavefronts_(std::uint32_t(std::max<std::size_t>(world.workspace.wavefrontStart.size(), 1) - 1)),
+          spin_(spinningPays(threads)), shares_(static_cast<std::size_t>(threads)) {
+        cutIntoShares();
+        findNeighbours();
+    }
+
+    // Task `share`: returns once every wavefront of the share is done, by whichever thread.
+    void finish(std::uint32_t share, StepStats& stats) {
+        Seen seen{};
+        awaitDone(share, wavefronts_, seen, stats, true);
+    }
+
+    // Share s's strips, [first, end).
+    Range stripsOf(std::uint32_t s) const { return {shares_[s].firstStrip, shares_[s].endStrip}; }
+    // Bit u: share u's pairs may share a sphere with share s's.
+    std::uint64_t neighboursOf(std::uint32_t s) const { return shares_[s].neighbours; }
+
+  private:
+    struct alignas(64) Share {
+        WatchedWord word;  // 2 x (wavefronts done) + 1 while a thread advances it
+        std::uint32_t firstStrip = 0, endStrip = 0;
+        std::uint64_t neighbours = 0;
+    };
+    // What a thread last read of each share's wavefronts done (they only grow).
+    struct Seen {
+        std::uint32_t done[kMostSolverThreads];
+    };
+
+    // Each share's run of strips: the strips in order, cut where the pairs before reach
+    // each share's part of them (a strip goes to the share that holds its middle pair).
+    void cutIntoShares() {
+        const std::uint32_t count = strips_.count;
+        std::uint64_t perStrip[256] = {};
+        for (std::uint32_t w = 0; w < wavefronts_; ++w) {
+            for (std::uint32_t strip = 0; strip < count; ++strip) {
+                const std::size_t key = std::size_t(w) * count + strip;
+                perStrip[strip] += strips_.start[key + 1] - strips_.start[key];
+            }
+        }
+        const double all = wavefronts_ > 0 ? double(strips_.start[std::size_t(wavefronts_) * count]) : 0.0;
+        const std::uint32_t shares = std::uint32_t(shares_.size());
+        std::uint32_t strip = 0;
+        double before = 0.0;  // pairs in the strips taken
+        for (std::uint32_t s = 0; s < shares; ++s) {
+            shares_[s].firstStrip = strip;
+            const double end = all * (s + 1) / shares;
+            while (strip < count && (s + 1 == shares || before + 0.5 * double(perStrip[strip]) < end)) {
+                before += double(perStrip[strip++]);
+            }
+            shares_[s].endStrip = strip;
+        }
+    }
+
+    // Shares whose strips come within 2 x span of each other are neighbours.
+    void findNeighbours() {
+        const std::uint32_t reach = 2 * strips_.span;
+        for (std::uint32_t s = 0; s < shares_.size(); ++s) {
+            for (std::uint32_t u = 0; u < shares_.size(); ++u) {
+                const Share &a = shares_[s], &b = shares_[u];
+                if (u == s || a.firstStrip == a.endStrip || b.firstStrip == b.endStrip) continue;
+                // Strips between the nearest of each (the runs are disjoint).
+                const std::uint32_t gap = b.firstStrip >= a.endStrip ? b.firstStrip + 1 - a.endStrip
+                                                                     : a.firstStrip + 1 - b.endStrip;
+                if (gap <= reach) shares_[s].neighbours |= std::uint64_t(1) << u;
+            }
+        }
+    }
+
+    // Share s's pairs of wavefront w.
+    Range pairsOf(std::uint32_t s, std::uint32_t w) const {
+        const std::size_t key = std::size_t(w) * strips_.count;
+        return {strips_.start[key + shares_[s].firstStrip], strips_.start[key + shares_[s].endStrip]};
+    }
+
+    // Returns once `count` wavefronts of share s are done. Advances the share when nobody
+    // else does: at once if it is this thread's own, after a spin if not.
+    void awaitDone(std::uint32_t s, std::uint32_t count, Seen& seen, StepStats& stats, bool own) {
+        WatchedWord& word = shares_[s].word;
+        for (unsigned w = word.load();; w = word.load()) {
+            seen.done[s] = w >> 1;
+            if (seen.done[s] >= count) return;
+            if ((w & 1u) != 0) {
+                word.awaitChange(w, spin_);
+            } else if ((own || word.spinForChange(w, spin_) == w) && word.compareExchange(w, w | 1u)) {
+                advance(s, count, seen, stats);
+            }
+        }
+    }
+
+    // A neighbour of share s that has not done `w` wavefronts (refreshing `seen`), if any
+    // (else count is 0).
+    struct Need {
+        std::uint32_t share = 0, count = 0;
+    };
+    Need unmetNeed(std::uint32_t s, std::uint32_t w, Seen& seen) const {
+        for (std::uint64_t left = shares_[s].neighbours; left != 0; left &= left - 1) {
+            const std::uint32_t u = std::uint32_t(__builtin_ctzll(left));
+            if (seen.done[u] >= w) continue;
+            seen.done[u] = shares_[u].word.load() >> 1;
+            if (seen.done[u] < w) return {u, w};
+        }
+        return {};
+    }
+
+    // With share s taken: its wavefronts until `count` are done. Where a wavefront must
+    // wait for a neighbour, s is given back while that one is awaited (and advanced, if
+    // nobody does), then taken again unless another thread has taken it meanwhile.
+    void advance(std::uint32_t s, std::uint32_t count, Seen& seen, StepStats& stats) {
+        WatchedWord& word = shares_[s].word;
+        std::uint32_t w = seen.done[s];
+        while (w < count) {
+            const Range pairs = pairsOf(s, w);
+            if (pairs.end > pairs.begin) {  // a share with no pairs in w needs nobody
+                const Need need = unmetNeed(s, w, seen);
+                if (need.count > 0) {
+                    const unsigned givenBack = 2 * w;
+                    word.store(givenBack);
+                    awaitDone(need.share, need.count, seen, stats, false);
+                    if (!word.compareExchange(givenBack, givenBack | 1u)) return;
+                    continue;
+                }
+                visit_(pairs_, pairs.begin, pairs.end, stats);
+            }
+            ++w;
+            word.store(2 * w + 1);
+        }
+        word.store(2 * w);
+    }
+
+    const Workspace::WavefrontStrips& strips_;
+    const SpherePair* pairs_;
+    const Visit& visit_;
+    const std::uint32_t wavefronts_;
+    const bool spin_;  // waits spin before they sleep (spinningPays)
+    std::vector<Share> shares_;
+};
+
+// visit(pairs, first, last, stats) over the wavefronts in order, each wavefront's pairs
+// side by side: on one thread one wavefront after the other, on several a StripPass.
 template <class Visit>
 void forEachWavefront(World& world, const Params& params, StepStats& stats, const Visit& visit) {
     const Workspace& ws = world.workspace;
     const int threads = threadsFor(world, params);
+    if (threads > 1 && ws.wavefrontStrips.threads == threads) {
+        StripPass<Visit> pass(world, threads, visit);
+        runCountedTasks(threads, threads, stats,
+                        [&](int share, StepStats& local) { pass.finish(std::uint32_t(share), local); });
+        return;
+    }
     for (std::size_t w = 0; w + 1 < ws.wavefrontStart.size(); ++w) {
-        visitSideBySide(threads, stats, ws.wavefrontOrder.data(), {ws.wavefrontStart[w], ws.wavefrontStart[w + 1]}, visit);
+        const std::uint32_t first = ws.wavefrontStart[w], last = ws.wavefrontStart[w + 1];
+        if (last > first) visit(ws.wavefrontOrder.data(), first, last, stats);
     }
 }
 

@@ -18,10 +18,11 @@ bool passesByWavefronts(const World& world, const Params& params) {
            !world.recordContacts;
 }
 
-void sortIntoWavefronts(const std::vector<SpherePair>& pairs, std::vector<std::uint32_t>& next,
-                        std::vector<std::uint32_t>& ofPair, std::vector<std::uint32_t>& start,
-                        std::vector<SpherePair>& order, const std::uint8_t* strip, std::uint32_t strips) {
-    ofPair.resize(pairs.size());
+namespace {
+
+// Numbers each pair's wavefront into ofPair; returns how many wavefronts there are.
+std::uint32_t numberWavefronts(const std::vector<SpherePair>& pairs, std::vector<std::uint32_t>& next,
+                               std::vector<std::uint32_t>& ofPair) {
     std::uint32_t wavefronts = 0;
     for (std::size_t k = 0; k < pairs.size(); ++k) {
         const std::uint32_t w = std::max(next[pairs[k].i], next[pairs[k].j]);
@@ -29,24 +30,59 @@ void sortIntoWavefronts(const std::vector<SpherePair>& pairs, std::vector<std::u
         next[pairs[k].i] = next[pairs[k].j] = w + 1;
         wavefronts = std::max(wavefronts, w + 1);
     }
-    for (const SpherePair& pair : pairs) next[pair.i] = next[pair.j] = 0;
-    // Placed by wavefront, and in one by the strip of its first sphere, each in pass order
-    // (a counting sort by wavefront x strips + strip).
-    if (strip) {
-        for (std::size_t k = 0; k < pairs.size(); ++k) ofPair[k] = ofPair[k] * strips + strip[pairs[k].i];
+    return wavefronts;
+}
+
+// The same with strips: ofPair gets each pair's key (wavefront x count + the strip of its
+// first sphere), and `strips` its span.
+std::uint32_t numberWavefrontsByStrips(const std::vector<SpherePair>& pairs, std::vector<std::uint32_t>& next,
+                                       std::vector<std::uint32_t>& ofPair, Workspace::WavefrontStrips& strips) {
+    const std::uint32_t count = strips.count;
+    const std::uint8_t* strip = strips.ofSphere.data();
+    std::uint32_t wavefronts = 0;
+    int span = 0;
+    for (std::size_t k = 0; k < pairs.size(); ++k) {
+        const std::uint32_t i = pairs[k].i, j = pairs[k].j;
+        const std::uint32_t w = std::max(next[i], next[j]);
+        ofPair[k] = w * count + strip[i];
+        span = std::max(span, std::abs(int(strip[i]) - int(strip[j])));
+        next[i] = next[j] = w + 1;
+        wavefronts = std::max(wavefronts, w + 1);
     }
-    const std::uint32_t keys = wavefronts * strips;
+    strips.span = std::uint32_t(span);
+    return wavefronts;
+}
+
+}  // namespace
+
+void sortIntoWavefronts(const std::vector<SpherePair>& pairs, std::vector<std::uint32_t>& next,
+                        std::vector<std::uint32_t>& ofPair, std::vector<std::uint32_t>& start,
+                        std::vector<SpherePair>& order, Workspace::WavefrontStrips* strips) {
+    ofPair.resize(pairs.size());
+    const std::uint32_t wavefronts =
+        strips ? numberWavefrontsByStrips(pairs, next, ofPair, *strips) : numberWavefronts(pairs, next, ofPair);
+    for (const SpherePair& pair : pairs) next[pair.i] = next[pair.j] = 0;
+    // Placed by key (wavefront, or wavefront x strips + strip), each in pass order (a
+    // counting sort).
+    const std::uint32_t count = strips ? strips->count : 1;
+    const std::uint32_t keys = wavefronts * count;
     start.assign(std::size_t(keys) + 1, 0);
     for (const std::uint32_t key : ofPair) ++start[key + 1];
     for (std::uint32_t key = 0; key < keys; ++key) start[key + 1] += start[key];
     order.resize(pairs.size());
     for (std::size_t k = 0; k < pairs.size(); ++k) order[start[ofPair[k]]++] = pairs[k];
-    // start[key] is now where key + 1 starts: wavefront w starts where key w x strips - 1
-    // ends. (Each read before it is written over: downwards with one strip, upwards with more.)
-    if (strips == 1) {
+    // start[key] is now where key + 1 starts.
+    if (strips) {
+        strips->start.resize(std::size_t(keys) + 1);
+        strips->start[0] = 0;
+        std::copy(start.begin(), start.begin() + keys, strips->start.begin() + 1);
+    }
+    // Wavefront w starts where key w x count - 1 ends. (Each read before it is written over:
+    // downwards with one strip, upwards with more.)
+    if (count == 1) {
         for (std::uint32_t w = wavefronts; w > 0; --w) start[w] = start[w - 1];
     } else {
-        for (std::uint32_t w = 1; w <= wavefronts; ++w) start[w] = start[std::size_t(w) * strips - 1];
+        for (std::uint32_t w = 1; w <= wavefronts; ++w) start[w] = start[std::size_t(w) * count - 1];
     }
     start[0] = 0;
     start.resize(std::size_t(wavefronts) + 1);
@@ -54,8 +90,9 @@ void sortIntoWavefronts(const std::vector<SpherePair>& pairs, std::vector<std::u
 
 namespace {
 
-// Strips across the pile, for the wavefronts on several threads (findWavefronts).
-constexpr std::uint32_t kWavefrontStrips = 16;
+// Strips across the pile, for the wavefronts on several threads (findWavefronts): this
+// many for each thread (16 strips on two threads; 64 did no better), at most 256.
+constexpr std::uint32_t kStripsPerThread = 8;
 
 // What splitting the spheres at `middle` (m) along `axis` between two threads costs: the
 // share of cache lines of contact states (64 spheres numbered one after another) that hold
@@ -85,12 +122,12 @@ double splitCost(const World& world, int axis, double middle) {
     return mixed / lines + uneven / runs;
 }
 
-// Per sphere, its strip of kWavefrontStrips equal ones across the axis that splitCost finds
+// Per sphere, its strip of `count` equal ones across the axis that splitCost finds
 // cheapest. The pile is numbered along x, then y, then z: across x each row of it (one
 // line of contact states) is on both sides, across z a wavefront on one. Two threads over
 // one (64k, index order, landing, same state): 1.46 across x, 1.25 across z, 1.64-1.72
 // across y, which splitCost takes.
-void findStrips(const World& world, std::vector<std::uint8_t>& strip) {
+void findStrips(const World& world, std::uint32_t count, std::vector<std::uint8_t>& strip) {
     strip.resize(world.size());
     if (world.size() == 0) return;
     glm::dvec3 low = world.position[0], high = low;  // m
@@ -103,29 +140,34 @@ void findStrips(const World& world, std::vector<std::uint8_t>& strip) {
         const double cost = splitCost(world, a, middle[a]);
         if (cost < least) axis = a, least = cost;
     }
-    const double perStrip = kWavefrontStrips / std::max(extent[axis], 1e-300);  // 1/m
+    const double perStrip = count / std::max(extent[axis], 1e-300);  // 1/m
     for (std::size_t i = 0; i < world.size(); ++i) {
         const double at = (world.position[i][axis] - low[axis]) * perStrip;  // NaN: strip 0
-        strip[i] = std::uint8_t(at > 0.0 ? std::min<double>(at, kWavefrontStrips - 1) : 0.0);
+        strip[i] = std::uint8_t(at > 0.0 ? std::min<double>(at, count - 1) : 0.0);
     }
 }
 
 }  // namespace
 
-// On several threads, a wavefront's pairs go by strips across the pile. Threads take a
-// wavefront's pairs in ranges, and in pass order its pairs lie in a band of sphere numbers
-// that moves up from one wavefront to the next (in the landing 64k pile, half of a
-// wavefront's pairs within 7 000 numbers, its middle 600 higher in the next). Cut by
-// number, each wavefront handed the spheres around its middle to the other thread, their
-// cache lines with them; cut by strip, a sphere stays with the thread that takes its side
-// of the pile.
+// On several threads, a wavefront's pairs go by strips across the pile, and each thread
+// takes a run of strips through every wavefront of a pass (StripPass). In pass order a
+// wavefront's pairs lie in a band of sphere numbers that moves up from one wavefront to
+// the next (in the landing 64k pile, half of a wavefront's pairs within 7 000 numbers, its
+// middle 600 higher in the next). Cut by number, each wavefront handed the spheres around
+// its middle to the other thread, their cache lines with them; cut by strip, a sphere
+// stays with the thread that takes its side of the pile.
 void findWavefronts(World& world, int threads) {
     Workspace& ws = world.workspace;
     ws.wavefrontNext.resize(world.size(), 0);
-    const bool byStrips = threads > 1;
-    if (byStrips) findStrips(world, ws.wavefrontStrip);
+    Workspace::WavefrontStrips* strips = nullptr;
+    ws.wavefrontStrips.threads = threads;
+    if (threads > 1) {
+        strips = &ws.wavefrontStrips;
+        strips->count = std::min<std::uint32_t>(kStripsPerThread * std::uint32_t(threads), 256);
+        findStrips(world, strips->count, strips->ofSphere);
+    }
     sortIntoWavefronts(ws.visitOrder, ws.wavefrontNext, ws.wavefrontOfPair, ws.wavefrontStart, ws.wavefrontOrder,
-                       byStrips ? ws.wavefrontStrip.data() : nullptr, byStrips ? kWavefrontStrips : 1);
+                       strips);
 }
 
 }  // namespace physics

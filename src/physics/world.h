@@ -286,7 +286,17 @@ struct Workspace {
     std::vector<std::uint32_t> wavefrontStart;
     std::vector<std::uint32_t> wavefrontOfPair;  // scratch: per pair in pass order
     std::vector<std::uint32_t> wavefrontNext;    // scratch: per sphere, all 0 between uses
-    std::vector<std::uint8_t> wavefrontStrip;    // scratch: per sphere, its strip across the pile
+    // On several threads, each wavefront's pairs go by strips across the pile, and each
+    // thread takes a range of strips through all the wavefronts of a pass (StripPass).
+    struct WavefrontStrips {
+        std::vector<std::uint8_t> ofSphere;  // per sphere, its strip: below count
+        std::uint32_t count = 1;
+        int threads = 1;  // the threads they were found for (1: not by strips)
+        // Wavefront w's pairs of strip s: wavefrontOrder[start[w * count + s], start[w * count + s + 1]).
+        std::vector<std::uint32_t> start;
+        std::uint32_t span = 0;  // the most strips between the two spheres of a pair
+    };
+    WavefrontStrips wavefrontStrips;
     // The contacts of a step whose positions stay put while its passes run (velocity
     // based, response only): found once, used by every pass (findContacts).
     std::vector<std::uint8_t> pairTouches;     // per pair, in the order the passes visit them

@@ -43,14 +43,14 @@ TEST(Wavefronts, NoTwoPairsOfAWavefrontShareASphereAndEachSphereMeetsItsPairsInP
         physics::findWavefronts(world, threads);
         const physics::Workspace& ws = world.workspace;
         if (threads > 1) {
-            ASSERT_EQ(ws.wavefrontStrip.size(), world.size());
+            ASSERT_EQ(ws.wavefrontStrips.ofSphere.size(), world.size());
             for (std::size_t w = 0; w + 1 < ws.wavefrontStart.size(); ++w) {
                 for (std::uint32_t k = ws.wavefrontStart[w]; k + 1 < ws.wavefrontStart[w + 1]; ++k) {
-                    EXPECT_LE(ws.wavefrontStrip[ws.wavefrontOrder[k].i], ws.wavefrontStrip[ws.wavefrontOrder[k + 1].i])
+                    EXPECT_LE(ws.wavefrontStrips.ofSphere[ws.wavefrontOrder[k].i], ws.wavefrontStrips.ofSphere[ws.wavefrontOrder[k + 1].i])
                         << order << ": wavefront " << w;
                 }
             }
-            const std::set<std::uint8_t> strips(ws.wavefrontStrip.begin(), ws.wavefrontStrip.end());
+            const std::set<std::uint8_t> strips(ws.wavefrontStrips.ofSphere.begin(), ws.wavefrontStrips.ofSphere.end());
             EXPECT_GE(strips.size(), 8u) << order;
         }
         ASSERT_EQ(ws.wavefrontOrder.size(), ws.visitOrder.size());
@@ -95,7 +95,7 @@ TEST(Wavefronts, StripsGoAcrossTheAxisAlongWhichNumbersMoveNeitherFastestNorSlow
             }
         }
         physics::findWavefronts(world, 2);  // no pairs: the strips only
-        const std::vector<std::uint8_t>& strip = world.workspace.wavefrontStrip;
+        const std::vector<std::uint8_t>& strip = world.workspace.wavefrontStrips.ofSphere;
         ASSERT_EQ(strip.size(), world.size());
         std::set<std::uint8_t> used;
         for (std::size_t i = 0; i < world.size(); ++i) {
@@ -133,4 +133,84 @@ TEST(Wavefronts, TheLecturesOrdersReachTheStateOfOnePairAtATime) {
             EXPECT_EQ(physics::passesByWavefronts(wavefronts, scene.params), physics::laneWidths().back() >= 4);
         }
     }
+}
+
+namespace {
+
+// A world whose workspace holds `wavefronts` wavefronts over `strips` strips, with
+// pairsPerStrip[s] pairs in strip s of each wavefront (the pairs themselves unused), and
+// the given span.
+physics::World stripsOnly(std::uint32_t wavefronts, const std::vector<std::uint32_t>& pairsPerStrip,
+                          std::uint32_t span) {
+    physics::World world;
+    physics::Workspace& ws = world.workspace;
+    physics::Workspace::WavefrontStrips& strips = ws.wavefrontStrips;
+    strips.count = std::uint32_t(pairsPerStrip.size());
+    strips.span = span;
+    strips.start = {0};
+    ws.wavefrontStart = {0};
+    for (std::uint32_t w = 0; w < wavefronts; ++w) {
+        for (const std::uint32_t pairs : pairsPerStrip) strips.start.push_back(strips.start.back() + pairs);
+        ws.wavefrontStart.push_back(strips.start.back());
+    }
+    ws.wavefrontOrder.assign(strips.start.back(), physics::SpherePair{});
+    return world;
+}
+
+}  // namespace
+
+// The strip pass cuts the strips into runs of about as many pairs each, and makes the
+// shares whose strips come within 2 x span of each other neighbours (two pairs that share
+// a sphere have first spheres that near).
+TEST(StripPass, CutsTheStripsByTheirPairsAndWaitsOnlyForSharesWithinReach) {
+    const auto visit = [](const physics::SpherePair*, std::uint32_t, std::uint32_t, physics::StepStats&) {};
+    {
+        const physics::World world = stripsOnly(3, {9, 1, 1, 1, 1, 1, 1, 1}, 1);  // 16 pairs a wavefront
+        const physics::StripPass<decltype(visit)> pass(world, 2, visit);
+        EXPECT_EQ(pass.stripsOf(0).begin, 0u);
+        EXPECT_EQ(pass.stripsOf(0).end, 1u) << "strip 0 holds the middle pair";
+        EXPECT_EQ(pass.stripsOf(1).end, 8u);
+    }
+    for (const std::uint32_t span : {1u, 2u, 3u}) {
+        const physics::World world = stripsOnly(2, std::vector<std::uint32_t>(16, 5), span);
+        const physics::StripPass<decltype(visit)> pass(world, 4, visit);  // 4 strips each
+        for (std::uint32_t s = 0; s < 4; ++s) {
+            EXPECT_EQ(pass.stripsOf(s).begin, 4 * s);
+            EXPECT_EQ(pass.stripsOf(s).end, 4 * s + 4);
+        }
+        // Shares 0 and 1 are 1 strip apart (their nearest strips), 0 and 2 five, 0 and 3 nine.
+        EXPECT_EQ(pass.neighboursOf(0), span == 3 ? 0b0110u : 0b0010u) << "span " << span;
+        EXPECT_EQ(pass.neighboursOf(1), span == 3 ? 0b1101u : 0b0101u) << "span " << span;
+    }
+}
+
+// Alone, a thread that finishes its share advances the other share as far as its own
+// needs (all but its last wavefront), then its own: each share's wavefronts in order, and each wavefront after the
+// neighbour's wavefront before it.
+TEST(StripPass, AThreadThatWaitsForAShareNobodyAdvancesAdvancesItItself) {
+    constexpr std::uint32_t kWavefronts = 4;
+    const physics::World world = stripsOnly(kWavefronts, {1, 1, 1, 1}, 1);  // two strips a share
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> visited;               // (share, wavefront)
+    const auto visit = [&](const physics::SpherePair*, std::uint32_t first, std::uint32_t last, physics::StepStats&) {
+        ASSERT_EQ(last - first, 2u);
+        visited.push_back({first % 4 / 2, first / 4});
+    };
+    physics::StripPass<decltype(visit)> pass(world, 2, visit);
+    physics::StepStats stats;
+    pass.finish(0, stats);  // no other thread: share 1 has nobody
+    ASSERT_EQ(visited.size(), 2 * kWavefronts - 1) << "share 0, and all of share 1 that it needed: all but the last";
+    pass.finish(1, stats);
+    ASSERT_EQ(visited.size(), 2 * kWavefronts);
+    std::map<std::pair<std::uint32_t, std::uint32_t>, std::size_t> at;  // the n-th visit
+    for (std::size_t n = 0; n < visited.size(); ++n) at[visited[n]] = n;
+    ASSERT_EQ(at.size(), visited.size()) << "each once";
+    const auto when = [&](std::uint32_t share, std::uint32_t w) { return at[std::make_pair(share, w)]; };
+    for (std::uint32_t w = 1; w < kWavefronts; ++w) {
+        for (const std::uint32_t s : {0u, 1u}) {
+            EXPECT_LT(when(s, w - 1), when(s, w)) << "share " << s << " out of order";
+            EXPECT_LT(when(1 - s, w - 1), when(s, w)) << "share " << s << "'s wavefront " << w << " before its neighbour's last";
+        }
+    }
+    pass.finish(0, stats);  // already done: returns at once
+    EXPECT_EQ(visited.size(), 2 * kWavefronts);
 }
