@@ -10,7 +10,10 @@
 // the spheres' data no longer stays in the caches), the pairs inside each block of 4096
 // sphere numbers are coloured and visited block by block, then the pairs between blocks
 // (solver_stages.h's forEachColor). The scenes number their spheres row by row, so a
-// block is a few layers of a pile, and most pairs lie inside one.
+// block starts as a few layers of a pile, and most pairs lie inside one; once a pile has
+// landed, its spheres have left their layers and most pairs lie between blocks (82 % in
+// the 64k pile at 1.5 s). On several threads the position stages take those by wavefronts
+// and strips (findBorderWavefronts).
 
 #include "physics/solver_stages.h"
 

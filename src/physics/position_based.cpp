@@ -68,13 +68,19 @@ void wallsVelocityAndPosition(World& world, const Params& params, StepStats& sta
 }
 
 // Workspace::wallClearance of every sphere (findWallClearances) and, for passes by
-// wavefronts, the wavefronts (findWavefronts). On several threads, one finds the
-// wavefronts (a chain of pairs: one thread's work) while the others find the clearances.
+// wavefronts, the wavefronts (findWavefronts; in the colored order on several threads, its
+// border's: findBorderWavefronts). On several threads, one finds the wavefronts (a chain of
+// pairs: one thread's work) while the others find the clearances.
 void findWavefrontsAndWallClearances(World& world, const Params& params) {
-    const bool byWavefronts = passesByWavefronts(world, params);
     const int threads = threadsFor(world, params);
-    if (!byWavefronts || threads == 1) {
-        if (byWavefronts) findWavefronts(world, threads);
+    const bool byWavefronts = passesByWavefronts(world, params);
+    const bool border = params.order == PairOrder::Colored && threads > 1;
+    if (!byWavefronts && !border) {
+        findWallClearances(world, params);
+        return;
+    }
+    if (threads == 1) {
+        findWavefronts(world, threads);
         findWallClearances(world, params);
         return;
     }
@@ -84,7 +90,7 @@ void findWavefrontsAndWallClearances(World& world, const Params& params) {
     const int sphereTasks = kSphereTasksPerThread * (threads - 1);
     runTasks(threads, 1 + sphereTasks, [&](int t) {
         if (t == 0) {
-            findWavefronts(world, threads);
+            border ? findBorderWavefronts(world, threads) : findWavefronts(world, threads);
             return;
         }
         const Range range = rangeOf(world.size(), t - 1, sphereTasks);

@@ -76,7 +76,7 @@ class Sweep {
         graph_.wavefrontNext.resize(world_.size(), 0);
         std::vector<std::uint32_t>& start = graph_.wavefrontStart;
         std::vector<SpherePair>& order = graph_.byWavefront;
-        sortIntoWavefronts(pairs, graph_.wavefrontNext, graph_.wavefrontOfPair, start, order);
+        sortIntoWavefronts(pairs.data(), pairs.size(), graph_.wavefrontNext, graph_.wavefrontOfPair, start, order);
         for (std::size_t w = 0; w + 1 < start.size(); ++w) {
             std::uint32_t c = separateSideBySide(world_, params_, order.data(), start[w], start[w + 1], stats_,
                                                  params_.passes, 1.0, true, true);

@@ -277,32 +277,6 @@ void visitSideBySide(int threads, StepStats& stats, const SpherePair* pairs, Ran
     });
 }
 
-// The colored order's pass: the blocks (threads take whole blocks as they come; inside
-// one, colour after colour), then the border colour after colour (each colour's pairs cut
-// into ranges that threads take as they come), then the overflow on one thread. No
-// thread waits for another's pair: the same result on any thread count.
-template <class Visit>
-void forEachColor(World& world, const Params& params, StepStats& stats, const Visit& visit) {
-    const Workspace& ws = world.workspace;
-    const int threads = threadsFor(world, params);
-    const SpherePair* pairs = ws.visitOrder.data();
-    const std::uint32_t blocks = colorGroups(ws) - 1;
-    const auto visitBlock = [&](std::uint32_t g, StepStats& s) {
-        for (unsigned c = 0; c < kGroupColors; ++c) {
-            const Range r = colorRange(ws, g, c);
-            if (r.end > r.begin) visit(pairs, r.begin, r.end, s);
-        }
-    };
-    if (threads == 1 || blocks < 2) {
-        for (std::uint32_t g = 0; g < blocks; ++g) visitBlock(g, stats);
-    } else {
-        runCountedTasks(threads, int(blocks), stats, [&](int g, StepStats& s) { visitBlock(std::uint32_t(g), s); });
-    }
-    for (unsigned c = 0; c < kGroupColors; ++c) visitSideBySide(threads, stats, pairs, colorRange(ws, blocks, c), visit);
-    const Range overflow = overflowRange(ws);
-    if (overflow.end > overflow.begin) visit(pairs, overflow.begin, overflow.end, stats);
-}
-
 // The lecture's pair orders (index, reversed, shuffled) wavefront by wavefront
 // (wavefronts.cpp): a pair's wavefront is the length of the longest chain of earlier
 // pairs, in pass order, that leads to it, each sharing a sphere with the next; no two
@@ -318,14 +292,24 @@ bool passesByWavefronts(const World& world, const Params& params);
 // Workspace::wavefrontOrder and wavefrontStart from visitOrder, for `threads` threads (on
 // several, with Workspace::wavefrontStrips).
 void findWavefronts(World& world, int threads);
-// `pairs` (in pass order) into `order`, wavefront by wavefront, each in pass order:
+// pairs[0, count) (in pass order) into `order`, wavefront by wavefront, each in pass order:
 // wavefront w is order[start[w], start[w + 1]). `next`: per sphere, all 0 on entry and on
 // return; `ofPair`: scratch. With `strips` (its ofSphere and count given), a wavefront's
 // pairs go by the strip of their first sphere, each strip's in pass order, and the strips'
 // start and span are found.
-void sortIntoWavefronts(const std::vector<SpherePair>& pairs, std::vector<std::uint32_t>& next,
+void sortIntoWavefronts(const SpherePair* pairs, std::size_t count, std::vector<std::uint32_t>& next,
                         std::vector<std::uint32_t>& ofPair, std::vector<std::uint32_t>& start,
                         std::vector<SpherePair>& order, Workspace::WavefrontStrips* strips = nullptr);
+// The colored order on several threads: the border group's pairs (between blocks, colour
+// after colour) into Workspace::wavefrontOrder and wavefrontStart by wavefronts and strips,
+// as findWavefronts does a lecture's order; each sphere meets its pairs in the same order
+// as colour after colour: the same result. Once a pile has landed its spheres have left
+// their numbers' layers, and the border holds most pairs (82 % in the 64k pile at 1.5 s);
+// shared out colour by colour in ranges of pairs, it handed spheres between the threads.
+// The blocks keep their own pass (a block's data stays in a core's cache while its
+// colours are visited; by wavefronts too, two threads over one at 64k gained nothing).
+// Sets Workspace::borderByWavefronts, which findOrderedPairs clears.
+void findBorderWavefronts(World& world, int threads);
 
 // A pass by wavefronts on several threads with no barrier between wavefronts. Each thread
 // has a share: a run of strips across the pile (Workspace::WavefrontStrips) holding about
@@ -499,6 +483,39 @@ void forEachWavefront(World& world, const Params& params, StepStats& stats, cons
         const std::uint32_t first = ws.wavefrontStart[w], last = ws.wavefrontStart[w + 1];
         if (last > first) visit(ws.wavefrontOrder.data(), first, last, stats);
     }
+}
+
+// The colored order's pass: the blocks (threads take whole blocks as they come; inside
+// one, colour after colour), then the border colour after colour, then the overflow on one
+// thread. Where the position stages found the border's wavefronts (findBorderWavefronts),
+// the border goes by them, a StripPass; else each colour's pairs are cut into ranges that
+// threads take as they come. The same result on any thread count.
+template <class Visit>
+void forEachColor(World& world, const Params& params, StepStats& stats, const Visit& visit) {
+    const Workspace& ws = world.workspace;
+    const int threads = threadsFor(world, params);
+    const SpherePair* pairs = ws.visitOrder.data();
+    const std::uint32_t blocks = colorGroups(ws) - 1;
+    const auto visitBlock = [&](std::uint32_t g, StepStats& s) {
+        for (unsigned c = 0; c < kGroupColors; ++c) {
+            const Range r = colorRange(ws, g, c);
+            if (r.end > r.begin) visit(pairs, r.begin, r.end, s);
+        }
+    };
+    if (threads == 1 || blocks < 2) {
+        for (std::uint32_t g = 0; g < blocks; ++g) visitBlock(g, stats);
+    } else {
+        runCountedTasks(threads, int(blocks), stats, [&](int g, StepStats& s) { visitBlock(std::uint32_t(g), s); });
+    }
+    if (threads > 1 && ws.borderByWavefronts && ws.wavefrontStrips.threads == threads) {
+        StripPass<Visit> pass(world, threads, visit);
+        runCountedTasks(threads, threads, stats,
+                        [&](int share, StepStats& local) { pass.finish(std::uint32_t(share), local); });
+    } else {
+        for (unsigned c = 0; c < kGroupColors; ++c) visitSideBySide(threads, stats, pairs, colorRange(ws, blocks, c), visit);
+    }
+    const Range overflow = overflowRange(ws);
+    if (overflow.end > overflow.begin) visit(pairs, overflow.begin, overflow.end, stats);
 }
 
 // visit(pairs, first, last, stats) on ranges [first, last) of pairs = pairsAsVisited()

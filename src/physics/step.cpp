@@ -384,6 +384,7 @@ void findOrderedPairs(World& world, const Params& params, StepStats& stats) {
     reorder(world, params.order);
     const int passThreads = threadsFor(world, params);
     ws.shareThreads = 1;
+    ws.borderByWavefronts = false;
     // The colored order shares out each colour as it goes (forEachColor), and so do the
     // position stages' wavefronts (forEachWavefront; found with the wall clearances).
     if (passThreads > 1 && params.order != PairOrder::Colored && !passesByWavefronts(world, params)) {

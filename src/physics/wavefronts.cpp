@@ -21,10 +21,10 @@ bool passesByWavefronts(const World& world, const Params& params) {
 namespace {
 
 // Numbers each pair's wavefront into ofPair; returns how many wavefronts there are.
-std::uint32_t numberWavefronts(const std::vector<SpherePair>& pairs, std::vector<std::uint32_t>& next,
+std::uint32_t numberWavefronts(const SpherePair* pairs, std::size_t count, std::vector<std::uint32_t>& next,
                                std::vector<std::uint32_t>& ofPair) {
     std::uint32_t wavefronts = 0;
-    for (std::size_t k = 0; k < pairs.size(); ++k) {
+    for (std::size_t k = 0; k < count; ++k) {
         const std::uint32_t w = std::max(next[pairs[k].i], next[pairs[k].j]);
         ofPair[k] = w;
         next[pairs[k].i] = next[pairs[k].j] = w + 1;
@@ -35,16 +35,15 @@ std::uint32_t numberWavefronts(const std::vector<SpherePair>& pairs, std::vector
 
 // The same with strips: ofPair gets each pair's key (wavefront x count + the strip of its
 // first sphere), and `strips` its span.
-std::uint32_t numberWavefrontsByStrips(const std::vector<SpherePair>& pairs, std::vector<std::uint32_t>& next,
+std::uint32_t numberWavefrontsByStrips(const SpherePair* pairs, std::size_t count, std::vector<std::uint32_t>& next,
                                        std::vector<std::uint32_t>& ofPair, Workspace::WavefrontStrips& strips) {
-    const std::uint32_t count = strips.count;
     const std::uint8_t* strip = strips.ofSphere.data();
     std::uint32_t wavefronts = 0;
     int span = 0;
-    for (std::size_t k = 0; k < pairs.size(); ++k) {
+    for (std::size_t k = 0; k < count; ++k) {
         const std::uint32_t i = pairs[k].i, j = pairs[k].j;
         const std::uint32_t w = std::max(next[i], next[j]);
-        ofPair[k] = w * count + strip[i];
+        ofPair[k] = w * strips.count + strip[i];
         span = std::max(span, std::abs(int(strip[i]) - int(strip[j])));
         next[i] = next[j] = w + 1;
         wavefronts = std::max(wavefronts, w + 1);
@@ -55,22 +54,22 @@ std::uint32_t numberWavefrontsByStrips(const std::vector<SpherePair>& pairs, std
 
 }  // namespace
 
-void sortIntoWavefronts(const std::vector<SpherePair>& pairs, std::vector<std::uint32_t>& next,
+void sortIntoWavefronts(const SpherePair* pairs, std::size_t pairCount, std::vector<std::uint32_t>& next,
                         std::vector<std::uint32_t>& ofPair, std::vector<std::uint32_t>& start,
                         std::vector<SpherePair>& order, Workspace::WavefrontStrips* strips) {
-    ofPair.resize(pairs.size());
-    const std::uint32_t wavefronts =
-        strips ? numberWavefrontsByStrips(pairs, next, ofPair, *strips) : numberWavefronts(pairs, next, ofPair);
-    for (const SpherePair& pair : pairs) next[pair.i] = next[pair.j] = 0;
+    ofPair.resize(pairCount);
+    const std::uint32_t wavefronts = strips ? numberWavefrontsByStrips(pairs, pairCount, next, ofPair, *strips)
+                                            : numberWavefronts(pairs, pairCount, next, ofPair);
+    for (std::size_t k = 0; k < pairCount; ++k) next[pairs[k].i] = next[pairs[k].j] = 0;
     // Placed by key (wavefront, or wavefront x strips + strip), each in pass order (a
     // counting sort).
     const std::uint32_t count = strips ? strips->count : 1;
     const std::uint32_t keys = wavefronts * count;
     start.assign(std::size_t(keys) + 1, 0);
-    for (const std::uint32_t key : ofPair) ++start[key + 1];
+    for (std::size_t k = 0; k < pairCount; ++k) ++start[ofPair[k] + 1];
     for (std::uint32_t key = 0; key < keys; ++key) start[key + 1] += start[key];
-    order.resize(pairs.size());
-    for (std::size_t k = 0; k < pairs.size(); ++k) order[start[ofPair[k]]++] = pairs[k];
+    order.resize(pairCount);
+    for (std::size_t k = 0; k < pairCount; ++k) order[start[ofPair[k]]++] = pairs[k];
     // start[key] is now where key + 1 starts.
     if (strips) {
         strips->start.resize(std::size_t(keys) + 1);
@@ -156,7 +155,10 @@ void findStrips(const World& world, std::uint32_t count, std::vector<std::uint8_
 // middle 600 higher in the next). Cut by number, each wavefront handed the spheres around
 // its middle to the other thread, their cache lines with them; cut by strip, a sphere
 // stays with the thread that takes its side of the pile.
-void findWavefronts(World& world, int threads) {
+namespace {
+
+// Workspace::wavefrontOrder and wavefrontStart from pairs[0, count), for `threads` threads.
+void sortByWavefronts(World& world, int threads, const SpherePair* pairs, std::size_t count) {
     Workspace& ws = world.workspace;
     ws.wavefrontNext.resize(world.size(), 0);
     Workspace::WavefrontStrips* strips = nullptr;
@@ -166,8 +168,22 @@ void findWavefronts(World& world, int threads) {
         strips->count = std::min<std::uint32_t>(kStripsPerThread * std::uint32_t(threads), 256);
         findStrips(world, strips->count, strips->ofSphere);
     }
-    sortIntoWavefronts(ws.visitOrder, ws.wavefrontNext, ws.wavefrontOfPair, ws.wavefrontStart, ws.wavefrontOrder,
+    sortIntoWavefronts(pairs, count, ws.wavefrontNext, ws.wavefrontOfPair, ws.wavefrontStart, ws.wavefrontOrder,
                        strips);
+}
+
+}  // namespace
+
+void findWavefronts(World& world, int threads) {
+    sortByWavefronts(world, threads, world.workspace.visitOrder.data(), world.workspace.visitOrder.size());
+}
+
+void findBorderWavefronts(World& world, int threads) {
+    Workspace& ws = world.workspace;
+    const std::uint32_t border = colorGroups(ws) - 1;  // the groups: the blocks, then the border
+    const std::uint32_t first = colorRange(ws, border, 0).begin, end = colorRange(ws, border, kGroupColors - 1).end;
+    sortByWavefronts(world, threads, ws.visitOrder.data() + first, end - first);
+    ws.borderByWavefronts = true;
 }
 
 }  // namespace physics

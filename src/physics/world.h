@@ -297,6 +297,9 @@ struct Workspace {
         std::uint32_t span = 0;  // the most strips between the two spheres of a pair
     };
     WavefrontStrips wavefrontStrips;
+    // The colored order on several threads: the wavefronts above hold the border group's
+    // pairs for this step (findBorderWavefronts), not a lecture's order's.
+    bool borderByWavefronts = false;
     // The contacts of a step whose positions stay put while its passes run (velocity
     // based, response only): found once, used by every pass (findContacts).
     std::vector<std::uint8_t> pairTouches;     // per pair, in the order the passes visit them
