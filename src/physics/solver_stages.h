@@ -319,8 +319,8 @@ void findBorderWavefronts(World& world, int threads);
 // share waits only for its neighbours (the shares whose strips come that near) to have
 // done wavefront w - 1: every sphere meets its pairs in pass order, the result of one
 // thread bit for bit. (Waiting only for the strips of wavefront w - 1 near it, visited
-// first, or only for the pairs that met its spheres last, gained nothing measurable at 16k
-// and 64k: the waits are as many.)
+// first, or only for the pairs that met its spheres last, made no step measurably faster
+// at 16k or 64k: src/bench/README.md.)
 // As in SharedPass, one thread at a time advances a share, normally its own; a thread
 // that waits for a share that nobody advances (its thread has no core) advances it itself
 // after a short spin. No waits go round in a circle: a wavefront needs only earlier ones,
@@ -467,6 +467,13 @@ class StripPass {
     std::vector<Share> shares_;
 };
 
+// A StripPass over Workspace::wavefrontOrder, each thread its share.
+template <class Visit>
+void runStripPass(const World& world, int threads, StepStats& stats, const Visit& visit) {
+    StripPass<Visit> pass(world, threads, visit);
+    runCountedTasks(threads, threads, stats, [&](int share, StepStats& local) { pass.finish(std::uint32_t(share), local); });
+}
+
 // visit(pairs, first, last, stats) over the wavefronts in order, each wavefront's pairs
 // side by side: on one thread one wavefront after the other, on several a StripPass.
 template <class Visit>
@@ -474,9 +481,7 @@ void forEachWavefront(World& world, const Params& params, StepStats& stats, cons
     const Workspace& ws = world.workspace;
     const int threads = threadsFor(world, params);
     if (threads > 1 && ws.wavefrontStrips.threads == threads) {
-        StripPass<Visit> pass(world, threads, visit);
-        runCountedTasks(threads, threads, stats,
-                        [&](int share, StepStats& local) { pass.finish(std::uint32_t(share), local); });
+        runStripPass(world, threads, stats, visit);
         return;
     }
     for (std::size_t w = 0; w + 1 < ws.wavefrontStart.size(); ++w) {
@@ -508,9 +513,7 @@ void forEachColor(World& world, const Params& params, StepStats& stats, const Vi
         runCountedTasks(threads, int(blocks), stats, [&](int g, StepStats& s) { visitBlock(std::uint32_t(g), s); });
     }
     if (threads > 1 && ws.borderByWavefronts && ws.wavefrontStrips.threads == threads) {
-        StripPass<Visit> pass(world, threads, visit);
-        runCountedTasks(threads, threads, stats,
-                        [&](int share, StepStats& local) { pass.finish(std::uint32_t(share), local); });
+        runStripPass(world, threads, stats, visit);
     } else {
         for (unsigned c = 0; c < kGroupColors; ++c) visitSideBySide(threads, stats, pairs, colorRange(ws, blocks, c), visit);
     }

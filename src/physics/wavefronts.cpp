@@ -148,6 +148,7 @@ void findStrips(const World& world, std::uint32_t count, std::vector<std::uint8_
 
 }  // namespace
 
+// The wavefronts of a lecture's order, or of the colored order's border, for the passes.
 // On several threads, a wavefront's pairs go by strips across the pile, and each thread
 // takes a run of strips through every wavefront of a pass (StripPass). In pass order a
 // wavefront's pairs lie in a band of sphere numbers that moves up from one wavefront to
@@ -157,7 +158,8 @@ void findStrips(const World& world, std::uint32_t count, std::vector<std::uint8_
 // stays with the thread that takes its side of the pile.
 namespace {
 
-// Workspace::wavefrontOrder and wavefrontStart from pairs[0, count), for `threads` threads.
+// Workspace::wavefrontOrder and wavefrontStart from pairs[0, count), for `threads` threads
+// (on several, by strips: Workspace::wavefrontStrips).
 void sortByWavefronts(World& world, int threads, const SpherePair* pairs, std::size_t count) {
     Workspace& ws = world.workspace;
     ws.wavefrontNext.resize(world.size(), 0);
