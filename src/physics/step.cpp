@@ -385,8 +385,9 @@ void findOrderedPairs(World& world, const Params& params, StepStats& stats) {
     const int passThreads = threadsFor(world, params);
     ws.shareThreads = 1;
     ws.borderByWavefronts = false;
-    // The colored order shares out each colour as it goes (forEachColor), and so do the
-    // position stages' wavefronts (forEachWavefront; found with the wall clearances).
+    // The colored order shares out its blocks and colours as it goes (forEachColor; in the
+    // position stages its border by wavefronts), and the lecture's orders in the position
+    // stages go by wavefronts (forEachWavefront): both found with the wall clearances.
     if (passThreads > 1 && params.order != PairOrder::Colored && !passesByWavefronts(world, params)) {
         sharePairsOut(world, passThreads);
     }
