@@ -6,20 +6,17 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include "physics/counting_sort.h"
 #include "physics/solver_stages.h"
 
 namespace physics {
 namespace {
 
-// The grid covers the spheres' bounding box. Cells are never smaller than one
-// largest diameter plus the margin, and grow if needed to keep at most ~4 cells
-// per sphere, so spheres that fly far apart cannot blow up the memory.
-
 bool finite(const glm::dvec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
 
-// A sphere with a non-finite centre (a blown-up state, which the app reports) sits in
-// cell 0 and meets nothing: its distances are NaN, and NaN is never within reach.
-GridShape chooseGrid(const World& world, double margin, int threads) {
+}  // namespace
+
+std::pair<glm::dvec3, glm::dvec3> boundsOfCentres(const World& world, int threads) {
     std::vector<glm::dvec3> lows(static_cast<std::size_t>(threads)), highs(static_cast<std::size_t>(threads));  // m, each task's box
     runTasks(threads, threads, [&](int t) {
         const Range range = rangeOf(world.size(), t, threads);
@@ -39,6 +36,19 @@ GridShape chooseGrid(const World& world, double margin, int threads) {
         hi = glm::max(hi, highs[std::size_t(t)]);
     }
     if (!finite(lo) || !finite(hi)) lo = hi = glm::dvec3(0.0);
+    return {lo, hi};
+}
+
+namespace {
+
+// The grid covers the spheres' bounding box. Cells are never smaller than one
+// largest diameter plus the margin, and grow if needed to keep at most ~4 cells
+// per sphere, so spheres that fly far apart cannot blow up the memory.
+
+// A sphere with a non-finite centre (a blown-up state, which the app reports) sits in
+// cell 0 and meets nothing: its distances are NaN, and NaN is never within reach.
+GridShape chooseGrid(const World& world, double margin, int threads) {
+    const auto [lo, hi] = boundsOfCentres(world, threads);  // m
     GridShape grid;
     grid.origin = lo;
     const double cell = 2.0 * maxRadius(world) + margin;  // m
@@ -53,57 +63,6 @@ GridShape chooseGrid(const World& world, double margin, int threads) {
         }
         grid.cellSize *= std::cbrt(count / maxCells) * 1.01;
     }
-}
-
-// The most groups a counting sort counts apart: each keeps a count per bucket (4 bytes a
-// cell of the grid, four cells a sphere: 16 MB a group at 1M spheres).
-constexpr int kMostSortGroups = 8;
-
-// Stable counting sort into buckets [0, buckets), on `groups` threads: forEachItem(g,
-// visit) calls visit(key, item) for group g's items, in their order, and place(item, slot)
-// puts an item at its slot. Group g counts its items apart (counts[g * buckets + b]), then
-// each group finds the slots of a range of buckets, bucket by bucket and within one the
-// groups in order, then places its items: the order of one thread, whatever the number of
-// groups. Leaves start[b] = the first slot of bucket b (buckets + 1 entries).
-template <class ForEachItem, class Place>
-void countingSort(std::size_t buckets, int groups, const ForEachItem& forEachItem, std::vector<std::uint32_t>& start,
-                  std::vector<std::uint32_t>& counts, const Place& place) {
-    groups = std::max(1, groups);
-    counts.resize(std::size_t(groups) * buckets);
-    start.resize(buckets + 1);
-    runTasks(groups, groups, [&](int g) {
-        std::uint32_t* mine = counts.data() + std::size_t(g) * buckets;
-        std::fill(mine, mine + buckets, 0u);
-        forEachItem(g, [&](std::uint32_t key, const auto&) { ++mine[key]; });
-    });
-    std::vector<std::uint64_t> rangeFirst(std::size_t(groups) + 1, 0);  // each range of buckets' first slot
-    runTasks(groups, groups, [&](int r) {
-        const Range range = rangeOf(buckets, r, groups);
-        std::uint64_t total = 0;
-        for (std::uint32_t b = range.begin; b < range.end; ++b) {
-            for (int g = 0; g < groups; ++g) total += counts[std::size_t(g) * buckets + b];
-        }
-        rangeFirst[std::size_t(r) + 1] = total;
-    });
-    for (int r = 0; r < groups; ++r) rangeFirst[std::size_t(r) + 1] += rangeFirst[std::size_t(r)];
-    runTasks(groups, groups, [&](int r) {  // the counts become each group's next slot
-        const Range range = rangeOf(buckets, r, groups);
-        auto next = std::uint32_t(rangeFirst[std::size_t(r)]);
-        for (std::uint32_t b = range.begin; b < range.end; ++b) {
-            start[b] = next;
-            for (int g = 0; g < groups; ++g) {
-                std::uint32_t& c = counts[std::size_t(g) * buckets + b];
-                const std::uint32_t inBucket = c;
-                c = next;
-                next += inBucket;
-            }
-        }
-    });
-    start[buckets] = std::uint32_t(rangeFirst[std::size_t(groups)]);
-    runTasks(groups, groups, [&](int g) {
-        std::uint32_t* slot = counts.data() + std::size_t(g) * buckets;
-        forEachItem(g, [&](std::uint32_t key, const auto& item) { place(item, slot[key]++); });
-    });
 }
 
 // The grid tests candidates this many at a time, whatever the length of a run (most

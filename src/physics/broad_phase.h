@@ -3,6 +3,7 @@
 // set in the same order: pairs (i, j), i < j, sorted by i then j, whose spheres
 // are within `margin` (m) of touching.
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "physics/params.h"
@@ -34,6 +35,10 @@ std::uint64_t findPairsGrid(const World& world, double margin, Workspace& worksp
 std::uint64_t findMoverPairs(const World& world, double margin, Workspace& ws, int threads = 1);
 
 double maxRadius(const World& world);  // m, 0 for an empty world
+
+// The box around the finite centres (m: its lowest and highest corners), found on
+// `threads` threads; a point at 0 if none is finite.
+std::pair<glm::dvec3, glm::dvec3> boundsOfCentres(const World& world, int threads = 1);
 
 // Whether the pair's spheres are within `margin` (m) of touching.
 bool withinReach(const World& world, const SpherePair& pair, double margin);

@@ -182,8 +182,8 @@ private:
 };
 
 // Pair order `colored` (colored_order.cpp). The pairs fall into groups: the pairs
-// inside each block of kBlockSpheres sphere numbers (blocks share no sphere), then the
-// border group, the pairs between blocks. Each group takes up to kGroupColors colours in
+// inside each block, a place of the world holding kBlockSpheres spheres (blocks share no
+// sphere), then the border group, the pairs between blocks. Each group takes up to kGroupColors colours in
 // which no two pairs share a sphere; a pair that finds none free joins the overflow,
 // visited last, in index order, on one thread.
 constexpr unsigned kGroupColors = 64;
@@ -191,8 +191,10 @@ constexpr unsigned kGroupColors = 64;
 // its colours are visited, however many spheres the world holds.
 constexpr std::uint32_t kBlockSpheres = 4096;
 
-// Sorts visitOrder (in index order) group by group, colour by colour (Workspace::colorStart).
-void colorPairs(World& world);
+// Finds the blocks (Workspace::blockOfSphere) and sorts visitOrder (in index order) group
+// by group, colour by colour (Workspace::colorStart), on `threads` threads: the same order
+// on any number.
+void colorPairs(World& world, int threads);
 
 // The groups of the colouring: the blocks, then the border (the last).
 inline std::uint32_t colorGroups(const Workspace& ws) {

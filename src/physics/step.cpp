@@ -163,9 +163,9 @@ void keepPairsWithinReach(World& world, double margin, int threads, std::vector<
     std::inplace_merge(out.begin(), out.begin() + std::ptrdiff_t(kept), out.end(), inIndexOrder);
 }
 
-void reorder(World& world, PairOrder order) {
+void reorder(World& world, PairOrder order, int threads) {
     std::vector<SpherePair>& pairs = world.workspace.visitOrder;
-    if (order == PairOrder::Colored) colorPairs(world);
+    if (order == PairOrder::Colored) colorPairs(world, threads);
     if (order == PairOrder::Reversed) std::reverse(pairs.begin(), pairs.end());
     if (order != PairOrder::Shuffled) return;
     Random random(world.seed ^ (world.stepCount * 0x9E3779B97F4A7C15ull));
@@ -381,8 +381,8 @@ void findOrderedPairs(World& world, const Params& params, StepStats& stats) {
     findPairsWithinReach(world, params, stats, ws.visitOrder);
     const StageTimer timer(stats.broadPhaseSeconds);
     stats.candidatePairs += ws.visitOrder.size();
-    reorder(world, params.order);
     const int passThreads = threadsFor(world, params);
+    reorder(world, params.order, passThreads);
     ws.shareThreads = 1;
     ws.borderByWavefronts = false;
     // The colored order shares out its blocks and colours as it goes (forEachColor; in the

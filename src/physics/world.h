@@ -271,14 +271,27 @@ struct Workspace {
     std::vector<double> wallClearance;
     // Pair order `colored` (colored_order.cpp): visitOrder holds the pairs group by group,
     // colour by colour: group g's colour c at [colorStart[g * 64 + c], colorStart[g * 64 + c + 1]).
-    // The groups are the blocks of sphere numbers (the pairs inside each), then the border
-    // (the pairs between blocks); after them, at [colorStart[groups * 64], the end), the
-    // overflow. No two pairs of a group's colour share a sphere.
+    // The groups are the blocks, places of the world (the pairs inside each), then the
+    // border (the pairs between blocks); after them, at [colorStart[groups * 64], the end),
+    // the overflow. No two pairs of a group's colour share a sphere.
     std::vector<std::uint32_t> colorStart;
-    std::vector<std::uint64_t> colorsOfSphere;  // scratch: per sphere, the colours its pairs took
-    std::vector<std::uint32_t> colorOfPair;     // scratch: per pair in index order, g * 64 + c
-    std::vector<SpherePair> colorSorted;        // scratch: the pairs placed colour by colour
-    std::vector<std::uint32_t> colorNext;       // scratch: where each colour's next pair goes
+    std::vector<std::uint32_t> blockOfSphere;  // per sphere, its block
+    std::vector<std::uint32_t> tileOfSphere;   // scratch: per sphere, its tile along the Morton curve
+    std::vector<std::uint32_t> tileStart;      // scratch: counting-sort offsets, one per tile + 1
+    std::vector<std::uint32_t> tileCounts;     // scratch of that sort: per group of tasks, per tile
+    // One task's part of the colouring: a run of groups.
+    struct alignas(64) ColoringTask {
+        std::vector<std::uint64_t> colorsOfSphere;  // per sphere, the colours its pairs took (then the border's)
+        struct KeyedPair {
+            std::uint32_t pair;  // its place in index order
+            std::uint32_t key;   // g * 64 + c
+        };
+        std::vector<KeyedPair> colored;  // its groups' pairs, in index order
+        std::uint32_t overflow = 0;      // how many of them found no free colour
+    };
+    std::vector<ColoringTask> coloringTasks;
+    std::vector<SpherePair> colorSorted;  // scratch: the pairs placed colour by colour
+    std::vector<std::uint32_t> colorNext;  // scratch: where each colour's next pair goes
     std::vector<double> slabSample;  // m: scratch of the share-out, coordinates that place its slabs
     // The lecture's orders wavefront by wavefront (wavefronts.cpp): wavefront w's pairs at
     // wavefrontOrder[wavefrontStart[w], wavefrontStart[w + 1]), each in pass order.
