@@ -56,9 +56,8 @@ struct Tiles {
     std::size_t count() const { return rankOf.size(); }
     std::uint32_t of(const glm::dvec3& centre) const {
         const glm::dvec3 at = (centre - low) * perTile;  // NaN: tile 0
-        glm::ivec3 c;
-        for (int a = 0; a < 3; ++a) c[a] = at[a] > 0.0 ? int(std::min<double>(at[a], dims[a] - 1)) : 0;
-        return rankOf[std::size_t((c.z * dims.y + c.y) * dims.x + c.x)];
+        const auto along = [&](int a) { return int(std::min(std::max(0.0, at[a]), double(dims[a] - 1))); };
+        return rankOf[std::size_t((along(2) * dims.y + along(1)) * dims.x + along(0))];
     }
 };
 
@@ -119,30 +118,39 @@ void colorTheGroups(const World& world, Workspace& ws, Workspace::ColoringTask& 
     const std::size_t n = world.size();
     const std::uint32_t border = groups - 1, overflowKey = groups * kGroupColors;
     // A sphere's colours inside its block at [0, n), in the border at [n, 2 n): the two
-    // groups are visited apart, and may each use every colour.
+    // groups are visited apart, and may each use every colour (the border's only in the
+    // task that colours it).
     task.colorsOfSphere.assign(mine.end == groups ? 2 * n : n, 0);
-    task.colored.clear();
-    task.overflow = 0;
+    if (task.colored.size() < ws.visitOrder.size()) task.colored.resize(ws.visitOrder.size());
+    Workspace::ColoringTask::KeyedPair* out = task.colored.data();
+    std::uint32_t* count = ws.colorStart.data() + 1;
+    std::uint32_t overflow = 0;
     const std::uint32_t* block = ws.blockOfSphere.data();
-    const std::vector<SpherePair>& pairs = ws.visitOrder;  // in index order
-    for (std::uint32_t k = 0; k < pairs.size(); ++k) {
+    const SpherePair* pairs = ws.visitOrder.data();  // in index order
+    const std::uint32_t pairCount = std::uint32_t(ws.visitOrder.size());
+    std::uint64_t* colorsInside = task.colorsOfSphere.data();
+    std::uint64_t* colorsBorder = colorsInside + n;
+    for (std::uint32_t k = 0; k < pairCount; ++k) {
         const std::uint32_t i = pairs[k].i, j = pairs[k].j;
-        const std::uint32_t group = block[i] == block[j] ? block[i] : border;
+        const std::uint32_t bi = block[i], bj = block[j];
+        const std::uint32_t group = bi == bj ? bi : border;
         if (group < mine.begin || group >= mine.end) continue;
-        std::uint64_t* colors = task.colorsOfSphere.data() + (group == border ? n : 0);
+        std::uint64_t* colors = bi == bj ? colorsInside : colorsBorder;
         const std::uint64_t taken = colors[i] | colors[j];
         std::uint32_t key = overflowKey;
         if (taken != ~std::uint64_t(0)) {
-            const unsigned color = unsigned(__builtin_ctzll(~taken));
-            colors[i] |= std::uint64_t(1) << color;
-            colors[j] |= std::uint64_t(1) << color;
-            key = group * kGroupColors + color;
-            ++ws.colorStart[key + 1];
+            const std::uint64_t bit = ~taken & (taken + 1);  // the lowest free colour
+            colors[i] |= bit;
+            colors[j] |= bit;
+            key = group * kGroupColors + unsigned(__builtin_ctzll(bit));
+            ++count[key];
         } else {
-            ++task.overflow;
+            ++overflow;
         }
-        task.colored.push_back({k, key});
+        *out++ = {k, key};
     }
+    task.count = std::uint32_t(out - task.colored.data());
+    task.overflow = overflow;
 }
 
 }  // namespace
@@ -165,7 +173,9 @@ void colorPairs(World& world, int threads) {
     std::vector<std::uint32_t>& next = ws.colorNext;
     next.assign(ws.colorStart.begin(), ws.colorStart.end() - 1);
     runTasks(threads, tasks, [&](int t) {
-        for (const auto& [k, key] : ws.coloringTasks[std::size_t(t)].colored) {
+        const Workspace::ColoringTask& task = ws.coloringTasks[std::size_t(t)];
+        for (std::uint32_t c = 0; c < task.count; ++c) {
+            const auto [k, key] = task.colored[c];
             if (key != overflowKey) ws.colorSorted[next[key]++] = pairs[k];
         }
     });
@@ -173,8 +183,8 @@ void colorPairs(World& world, int threads) {
     if (ws.colorStart[overflowKey + 1] > ws.colorStart[overflowKey]) {
         std::vector<std::uint32_t> overflow;
         for (const Workspace::ColoringTask& task : ws.coloringTasks) {
-            for (const auto& [k, key] : task.colored) {
-                if (key == overflowKey) overflow.push_back(k);
+            for (std::uint32_t c = 0; c < task.count; ++c) {
+                if (task.colored[c].key == overflowKey) overflow.push_back(task.colored[c].pair);
             }
         }
         std::sort(overflow.begin(), overflow.end());

@@ -286,8 +286,9 @@ struct Workspace {
             std::uint32_t pair;  // its place in index order
             std::uint32_t key;   // g * 64 + c
         };
-        std::vector<KeyedPair> colored;  // its groups' pairs, in index order
-        std::uint32_t overflow = 0;      // how many of them found no free colour
+        std::vector<KeyedPair> colored;  // its groups' pairs, in index order, at [0, count)
+        std::uint32_t count = 0;
+        std::uint32_t overflow = 0;  // how many of them found no free colour
     };
     std::vector<ColoringTask> coloringTasks;
     std::vector<SpherePair> colorSorted;  // scratch: the pairs placed colour by colour
