@@ -35,6 +35,7 @@ namespace {
 // so that a block spans a few tiles. (256 and 1024 did no better at 64k and 100k.)
 constexpr double kTileSpheres = 512.0;
 constexpr int kMostTilesPerAxis = 1024;  // a Morton key holds 10 bits an axis
+constexpr double kMostTilesPerBlock = 64.0;
 
 // The low 10 bits of v, spread to every third bit: one axis of a Morton key.
 std::uint32_t spreadBits(std::uint32_t v) {
@@ -65,11 +66,20 @@ Tiles tilesAround(const World& world, int threads) {
     const auto [low, high] = boundsOfCentres(world, threads);  // m
     const glm::dvec3 size = glm::max(high - low, glm::dvec3(1e-9));  // m
     const double spheres = double(std::max<std::size_t>(world.size(), 1));
-    const double edge = std::cbrt(size.x * size.y * size.z * kTileSpheres / spheres);  // m
+    double edge = std::cbrt(size.x * size.y * size.z * kTileSpheres / spheres);  // m
     Tiles tiles;
     tiles.low = low;
-    for (int a = 0; a < 3; ++a) {
-        tiles.dims[a] = int(std::clamp(std::ceil(size[a] / edge), 1.0, double(kMostTilesPerAxis)));
+    // A flat or thin box (every centre at one height) holds far more tiles of that edge
+    // than the spheres need: the edge grows until the tiles are at most kMostTilesPerBlock
+    // a block.
+    const double mostTiles = kMostTilesPerBlock * std::ceil(spheres / double(kBlockSpheres));
+    for (;;) {
+        for (int a = 0; a < 3; ++a) {
+            tiles.dims[a] = int(std::clamp(std::ceil(size[a] / edge), 1.0, double(kMostTilesPerAxis)));
+        }
+        const double count = double(tiles.dims.x) * tiles.dims.y * tiles.dims.z;
+        if (count <= mostTiles) break;
+        edge *= std::cbrt(count / mostTiles) * 1.01;
     }
     tiles.perTile = glm::dvec3(tiles.dims) / size;
     std::vector<std::pair<std::uint32_t, std::uint32_t>> curve;  // (Morton key, tile)

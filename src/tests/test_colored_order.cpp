@@ -161,6 +161,28 @@ TEST(ColoredOrder, TheBlocksArePlacesSoMostPairsLieInsideOne) {
     EXPECT_LT(border, 0.07);
 }
 
+// Every centre at one height (spheres on a table): the box around them has no height,
+// and tiles sized for its volume would number a million. They stay at most 64 a block
+// (two blocks here), and the blocks are still places: rows of the table, each pair
+// inside one but along their edge.
+TEST(ColoredOrder, SpheresAtOneHeightKeepFewTiles) {
+    physics::Params params = fixtures::exactParams(1.0 / 240.0, dvec3(0.0));
+    params.order = PairOrder::Colored;
+    physics::World world;
+    for (int k = 0; k < 6000; ++k) world.addSphere({0.199 * (k % 100), 0.199 * (k / 100), 0.1}, {0, 0, 0}, 0.1, 1.0);
+    physics::StepStats none;
+    physics::findOrderedPairs(world, params, none);
+    const physics::Workspace& ws = world.workspace;
+    EXPECT_LE(ws.tileStart.size() - 1, 128u);
+    EXPECT_EQ(physics::colorGroups(ws), 3u) << "two blocks, the border";
+    const Colouring c = colouringOf(world, params);
+    EXPECT_TRUE(c.disjoint);
+    EXPECT_TRUE(c.inTheirGroup);
+    EXPECT_TRUE(c.eachPairOnce);
+    EXPECT_EQ(ws.visitOrder.size(), 2u * 6000 - 100 - 60) << "each sphere and its right and upper neighbours";
+    EXPECT_LT(double(c.border) / double(ws.visitOrder.size()), 0.05);
+}
+
 // Two spheres each touching 150 small ones, among 8 700 that touch nothing (three
 // blocks): the colouring, overflow included, is the same on one, two and three threads.
 // The first star lies last along the blocks' curve, so on several threads its overflow is
