@@ -7,13 +7,14 @@
 // The result is the same, bit for bit, on any thread count.
 //
 // So that a pass does not sweep the whole world once per colour (from 100k spheres on,
-// the spheres' data no longer stays in the caches), the world is cut into blocks by
-// place, each of kBlockSpheres spheres: the pairs inside each block are coloured and
-// visited block by block, then the pairs between blocks, the border (solver_stages.h's
-// forEachColor; on several threads the position stages take the border by wavefronts and
-// strips, findBorderWavefronts). In the landed 64k pile the border holds 8 % of the pairs.
-// (Blocks of 4096 sphere numbers held 82 % there: the scenes number their spheres row by
-// row, and a landed pile's spheres have left their rows. src/bench/README.md.)
+// the spheres' data no longer stays in the caches), the world is cut into blocks of
+// kBlockSpheres spheres: the pairs inside each block are coloured and visited block by
+// block, then the pairs between blocks, the border (solver_stages.h's forEachColor; on
+// several threads the position stages take the border by wavefronts and strips,
+// findBorderWavefronts). From kBlocksByPlaceFrom spheres a block is a place of the world:
+// in the landed 64k pile the border then holds 8 % of the pairs. (Blocks of 4096 sphere
+// numbers held 82 % there: the scenes number their spheres row by row, and a landed
+// pile's spheres have left their rows. src/bench/README.md.)
 
 #include "physics/solver_stages.h"
 
@@ -99,16 +100,27 @@ Tiles tilesAround(const World& world, int threads) {
     return tiles;
 }
 
+// Below this many spheres the blocks are runs of sphere numbers. The world's data then
+// stays in a core's cache, so places gain nothing on one thread, and blocks of numbers
+// share no cache line, which the threads write (measured on two threads: 16k and 32k
+// 7-17 % faster by numbers, 48k 5-7 % faster by places; src/bench/README.md).
+constexpr std::size_t kBlocksByPlaceFrom = 10 * kBlockSpheres;
+
 // Workspace::blockOfSphere; returns the number of blocks.
-std::uint32_t findBlocksByPlace(const World& world, Workspace& ws, int threads) {
+std::uint32_t findBlocks(const World& world, Workspace& ws, int threads) {
     const std::size_t n = world.size();
+    ws.blockOfSphere.resize(n);
+    const std::uint32_t blocks = std::uint32_t((n + kBlockSpheres - 1) / kBlockSpheres);
+    if (n < kBlocksByPlaceFrom) {
+        for (std::uint32_t i = 0; i < n; ++i) ws.blockOfSphere[i] = i / kBlockSpheres;
+        return blocks;
+    }
     const Tiles tiles = tilesAround(world, threads);
     ws.tileOfSphere.resize(n);
     runTasks(threads, threads, [&](int t) {
         const Range range = rangeOf(n, t, threads);
         for (std::uint32_t i = range.begin; i < range.end; ++i) ws.tileOfSphere[i] = tiles.of(world.position[i]);
     });
-    ws.blockOfSphere.resize(n);
     const int groups = std::min(threads, kMostSortGroups);
     const auto spheresOf = [&](int g, const auto& visit) {  // a range of sphere numbers each
         const Range spheres = rangeOf(n, g, groups);
@@ -116,7 +128,7 @@ std::uint32_t findBlocksByPlace(const World& world, Workspace& ws, int threads) 
     };
     countingSort(tiles.count(), groups, spheresOf, ws.tileStart, ws.tileCounts,
                  [&](std::uint32_t i, std::uint32_t slot) { ws.blockOfSphere[i] = slot / kBlockSpheres; });
-    return std::uint32_t((n + kBlockSpheres - 1) / kBlockSpheres);
+    return blocks;
 }
 
 // One task's colouring: the groups `mine` of `groups` (the border is the last). Each
@@ -167,7 +179,7 @@ void colorTheGroups(const World& world, Workspace& ws, Workspace::ColoringTask& 
 
 void colorPairs(World& world, int threads) {
     Workspace& ws = world.workspace;
-    const std::uint32_t groups = findBlocksByPlace(world, ws, threads) + 1;  // the blocks, the border
+    const std::uint32_t groups = findBlocks(world, ws, threads) + 1;  // the blocks, the border
     const std::uint32_t overflowKey = groups * kGroupColors;
     const int tasks = int(std::min<std::uint32_t>(std::uint32_t(std::max(threads, 1)), groups));
     ws.coloringTasks.resize(std::size_t(tasks));

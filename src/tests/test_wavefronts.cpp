@@ -135,9 +135,9 @@ TEST(Wavefronts, TheLecturesOrdersReachTheStateOfOnePairAtATime) {
     }
 }
 
-// The colored order on two threads: its border group (the pairs between blocks: 4 % of
-// them in this pile at 1.5 s) goes by wavefronts, each sphere meeting its border pairs in
-// the colours' order; on one thread it goes colour by colour.
+// The colored order on two threads: its border group (the pairs between blocks, here of
+// sphere numbers: 39 % of them in this pile at 1.5 s) goes by wavefronts, each sphere
+// meeting its border pairs in the colours' order; on one thread it goes colour by colour.
 TEST(Wavefronts, TheColoredOrdersBorderGoesByWavefrontsOnSeveralThreads) {
     for (const char* threads : {"2", "1"}) {
         const scenes::Scene scene = pile({"count=10000", "radius=0.0232", "order=colored", std::string("threads=") + threads});
@@ -152,7 +152,7 @@ TEST(Wavefronts, TheColoredOrdersBorderGoesByWavefrontsOnSeveralThreads) {
         const std::uint32_t border = physics::colorGroups(ws) - 1;
         const std::uint32_t first = physics::colorRange(ws, border, 0).begin;
         const std::uint32_t end = physics::colorRange(ws, border, physics::kGroupColors - 1).end;
-        ASSERT_GT(end - first, 500u) << "pairs between blocks (947 measured)";
+        ASSERT_GT(end - first, ws.visitOrder.size() / 4) << "pairs between blocks (39 % measured)";
         ASSERT_EQ(ws.wavefrontOrder.size(), end - first);
         std::map<std::pair<std::uint32_t, std::uint32_t>, int> wavefrontOf;
         for (std::size_t w = 0; w + 1 < ws.wavefrontStart.size(); ++w) {
