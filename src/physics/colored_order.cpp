@@ -103,7 +103,7 @@ Tiles tilesAround(const World& world, int threads) {
 // Below this many spheres the blocks are runs of sphere numbers. The world's data then
 // stays in a core's cache, so places gain nothing on one thread, and blocks of numbers
 // share no cache line, which the threads write (measured on two threads: 16k and 32k
-// 7-17 % faster by numbers, 48k 5-7 % faster by places; src/bench/README.md).
+// 7-19 % faster by numbers, 48k 6-7 % faster by places; src/bench/README.md).
 constexpr std::size_t kBlocksByPlaceFrom = 10 * kBlockSpheres;
 
 // Workspace::blockOfSphere; returns the number of blocks.

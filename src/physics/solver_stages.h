@@ -182,8 +182,9 @@ private:
 };
 
 // Pair order `colored` (colored_order.cpp). The pairs fall into groups: the pairs
-// inside each block, a place of the world holding kBlockSpheres spheres (blocks share no
-// sphere), then the border group, the pairs between blocks. Each group takes up to kGroupColors colours in
+// inside each block of kBlockSpheres spheres (runs of sphere numbers, or in big worlds
+// places: colored_order.cpp; blocks share no sphere), then the border group, the pairs
+// between blocks. Each group takes up to kGroupColors colours in
 // which no two pairs share a sphere; a pair that finds none free joins the overflow,
 // visited last, in index order, on one thread.
 constexpr unsigned kGroupColors = 64;

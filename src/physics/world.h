@@ -271,9 +271,10 @@ struct Workspace {
     std::vector<double> wallClearance;
     // Pair order `colored` (colored_order.cpp): visitOrder holds the pairs group by group,
     // colour by colour: group g's colour c at [colorStart[g * 64 + c], colorStart[g * 64 + c + 1]).
-    // The groups are the blocks, places of the world (the pairs inside each), then the
-    // border (the pairs between blocks); after them, at [colorStart[groups * 64], the end),
-    // the overflow. No two pairs of a group's colour share a sphere.
+    // The groups are the blocks (runs of sphere numbers, or from 40 960 spheres places of
+    // the world: the pairs inside each), then the border (the pairs between blocks); after
+    // them, at [colorStart[groups * 64], the end), the overflow. No two pairs of a group's
+    // colour share a sphere.
     std::vector<std::uint32_t> colorStart;
     std::vector<std::uint32_t> blockOfSphere;  // per sphere, its block
     std::vector<std::uint32_t> tileOfSphere;   // scratch: per sphere, its tile along the Morton curve
