@@ -217,4 +217,24 @@ TEST(WindowPaths, SideBySideTakesNewOverridesOnEnterAndSaysWhenTheViewsAreTheSam
     EXPECT_EQ(session.comparison()->label(), "order = reversed, passes = 1");
 }
 
+// Esc backs out one level at a time (the window leaves the presentation layout first):
+// the explainer, then the selection, then nothing, which it reports so the window can say
+// how to quit instead of quitting.
+TEST(WindowPaths, EscClosesTheExplainerThenTheSelectionThenNothing) {
+    app::Simulation simulation(scenes::loadScene(scenes::presetPath("09_column")));
+    app::Session session(simulation);
+    app::InteractionInput input(session);
+    session.select(3);
+    input.toggleExplainer();
+    ASSERT_TRUE(input.tools().explainer);
+    EXPECT_TRUE(input.backOut());
+    EXPECT_FALSE(input.tools().explainer);
+    EXPECT_EQ(session.selected(), 3);
+    EXPECT_TRUE(input.backOut());
+    EXPECT_EQ(session.selected(), -1);
+    EXPECT_FALSE(input.backOut());
+    EXPECT_FALSE(input.backOut());
+    EXPECT_EQ(session.selected(), -1);
+}
+
 }  // namespace

@@ -133,6 +133,16 @@ void InteractionInput::toggleExplainer() {
     if (session_.selected() >= 0 || tools_.explainer) tools_.explainer = !tools_.explainer;
 }
 
+bool InteractionInput::backOut() {
+    if (tools_.explainer) {
+        tools_.explainer = false;
+        return true;
+    }
+    if (session_.selected() < 0) return false;
+    session_.select(-1);
+    return true;
+}
+
 bool InteractionInput::apply(const ToolActions& a, const ViewLayout& views, const render::Camera& camera, double now) {
     if (a.deselect) session_.select(-1);
     if (a.edited) {

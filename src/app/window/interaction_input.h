@@ -35,6 +35,9 @@ public:
     bool applyCompare(double now);
     // E: the explainer, for the selected sphere.
     void toggleExplainer();
+    // Esc (after the presentation layout): closes the explainer, else deselects the
+    // sphere. False when nothing was open: Esc never ends the session.
+    bool backOut();
     // The tool windows' actions; true when the views changed shape.
     bool apply(const ToolActions& actions, const ViewLayout& views, const render::Camera& camera, double now);
 

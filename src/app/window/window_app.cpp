@@ -52,7 +52,8 @@ public:
 private:
     static void onKey(GLFWwindow* w, int key, int scancode, int action, int mods);
     static void onScroll(GLFWwindow* w, double dx, double dy);
-    void handleKey(int key);
+    void handleKey(int key, int mods);
+    void backOut();
     void handleMouse();
     void frame(double dt);
     void makeLabels();
@@ -222,10 +223,10 @@ void WindowApp::followViewShape(const ViewLayout& views) {
     viewAspect_ = aspect;
 }
 
-void WindowApp::onKey(GLFWwindow* w, int key, int, int action, int) {
+void WindowApp::onKey(GLFWwindow* w, int key, int, int action, int mods) {
     if (action != GLFW_PRESS && action != GLFW_REPEAT) return;
     if (ImGui::GetCurrentContext() && ImGui::GetIO().WantTextInput) return;
-    static_cast<WindowApp*>(glfwGetWindowUserPointer(w))->handleKey(key);
+    static_cast<WindowApp*>(glfwGetWindowUserPointer(w))->handleKey(key, mods);
 }
 
 void WindowApp::onScroll(GLFWwindow* w, double, double dy) {
@@ -233,8 +234,12 @@ void WindowApp::onScroll(GLFWwindow* w, double, double dy) {
     static_cast<WindowApp*>(glfwGetWindowUserPointer(w))->camera_.zoom(float(dy));
 }
 
-void WindowApp::handleKey(int key) {
+void WindowApp::handleKey(int key, int mods) {
     const int count = static_cast<int>(presets_.size());
+    if (key == GLFW_KEY_Q && (mods & GLFW_MOD_CONTROL)) {
+        window_->requestClose();
+        return;
+    }
     switch (key) {
         case GLFW_KEY_P: case GLFW_KEY_SPACE: simulation_.paused = !simulation_.paused; break;
         case GLFW_KEY_O: case GLFW_KEY_N: session_.singleStep(); break;
@@ -250,8 +255,19 @@ void WindowApp::handleKey(int key) {
         case GLFW_KEY_F5: togglePresentation(); break;
         case GLFW_KEY_F12: screenshotRequested_ = true; break;
         case GLFW_KEY_C: resetCamera(); break;
-        case GLFW_KEY_ESCAPE: window_->requestClose(); break;
+        case GLFW_KEY_ESCAPE: backOut(); break;
         default: break;
+    }
+}
+
+// Esc backs out one level, as it does in a slide show: the presentation layout, then
+// the explainer, then the selection. It never quits: a teacher leaving the presentation
+// with it must not lose the session in front of the class (Ctrl+Q quits).
+void WindowApp::backOut() {
+    if (panel_.present) {
+        togglePresentation();
+    } else if (!input_.backOut()) {
+        input_.say(window_->time(), "Esc: nothing open to close; Ctrl+Q or the window's close button quits");
     }
 }
 
