@@ -100,6 +100,19 @@ int runScript(const fs::path& folder, const std::string& script) {
     return std::system(command.c_str());
 }
 
+// xdotool's lines that press `key` for 0.3 s (ImGui misses a key pressed and released
+// within one frame), then wait a second.
+std::string press(const std::string& key) { return "xdotool keydown " + key + " sleep 0.3 keyup " + key + " sleep 1\n"; }
+
+// A session on the column preset with `options`: the window found and focused, the mouse
+// over the scene, `keys` (xdotool's lines), then Ctrl+Q; the script ends with the app.
+std::string sessionOnTheColumn(const std::string& options, const std::string& keys) {
+    return "'" SPHERES_EXECUTABLE "' --scene 09_column " + options + " & pid=$!\n"
+           "w=$(timeout 30 xdotool search --sync --onlyvisible --name 'Rigid Spheres')\n"
+           "xdotool windowfocus --sync $w; sleep 2; xdotool mousemove 900 400 sleep 0.5\n" +
+           keys + press("ctrl+q") + "wait $pid\n";
+}
+
 bool orange(glm::u8vec4 p) { return p.x > 200 && p.y > 120 && p.y < 190 && p.z < 110; }  // the panel's refusals
 
 // A student drags the pile's N to a count the region cannot hold (typed here, Ctrl +
@@ -144,17 +157,11 @@ TEST(WindowInteraction, ACountThePileCannotHoldIsRefusedUnderItsSliderAndTheWind
 TEST(WindowInteraction, F5SwitchesToThePresentationLayoutAndBack) {
     if (!haveXvfb() || !haveXdotool()) GTEST_SKIP() << "xvfb-run or xdotool not found";
     const fs::path folder = fs::path(SPHERES_TEST_OUTPUT_DIR) / "window_present_key";
-    const int status = runScript(folder,
-                  "'" SPHERES_EXECUTABLE "' --scene 09_column --paused & pid=$!\n"
-                  "w=$(timeout 30 xdotool search --sync --onlyvisible --name 'Rigid Spheres')\n"
-                  "xdotool windowfocus --sync $w; sleep 2; xdotool mousemove 900 400 sleep 0.5\n"
-                  "xdotool keydown F5 sleep 0.3 keyup F5 sleep 1 keydown F12 sleep 0.3 keyup F12 sleep 1\n"
-                  "xdotool keydown F5 sleep 0.3 keyup F5 sleep 1 keydown F12 sleep 0.3 keyup F12 sleep 1\n"
-                  // The readouts' arrow, at the top left of the view: they unfold into the dock.
-                  "xdotool mousemove 438 11 sleep 0.3 click 1 sleep 1 mousemove 900 400 sleep 0.3\n"
-                  "xdotool keydown F12 sleep 0.3 keyup F12 sleep 1\n"
-                  "xdotool keydown ctrl+q sleep 0.3 keyup ctrl+q\n"
-                  "wait $pid\n");
+    // After two screenshots, a click on the readouts' arrow (top left of the view): they
+    // unfold into the dock; a third.
+    const std::string unfold = "xdotool mousemove 438 11 sleep 0.3 click 1 sleep 1 mousemove 900 400 sleep 0.3\n";
+    const int status = runScript(
+        folder, sessionOnTheColumn("--paused", press("F5") + press("F12") + press("F5") + press("F12") + unfold + press("F12")));
     ASSERT_TRUE(WIFEXITED(status));
     EXPECT_EQ(WEXITSTATUS(status), 0);
     const fs::path present = folder / "spheres_output" / "screenshot_0001.png";
@@ -180,15 +187,9 @@ TEST(WindowInteraction, F5SwitchesToThePresentationLayoutAndBack) {
 TEST(WindowInteraction, EscBacksOutOneLevelAtATimeAndNeverEndsTheSession) {
     if (!haveXvfb() || !haveXdotool()) GTEST_SKIP() << "xvfb-run or xdotool not found";
     const fs::path folder = fs::path(SPHERES_TEST_OUTPUT_DIR) / "window_escape";
-    const std::string esc = "xdotool keydown Escape sleep 0.3 keyup Escape sleep 0.7\n";
-    const int status = runScript(folder,
-                  "'" SPHERES_EXECUTABLE "' --scene 09_column --paused --present --select 3 --explain & pid=$!\n"
-                  "w=$(timeout 30 xdotool search --sync --onlyvisible --name 'Rigid Spheres')\n"
-                  "xdotool windowfocus --sync $w; sleep 2; xdotool mousemove 900 400 sleep 0.5\n" +
-                  esc + "xdotool keydown F12 sleep 0.3 keyup F12 sleep 1\n" + esc + esc + esc + esc + esc +
-                  "xdotool keydown F12 sleep 0.3 keyup F12 sleep 1\n"
-                  "xdotool keydown ctrl+q sleep 0.3 keyup ctrl+q\n"
-                  "wait $pid\n");
+    const std::string esc = press("Escape");
+    const int status = runScript(folder, sessionOnTheColumn("--paused --present --select 3 --explain",
+                                                            esc + press("F12") + esc + esc + esc + esc + esc + press("F12")));
     ASSERT_TRUE(WIFEXITED(status));
     EXPECT_EQ(WEXITSTATUS(status), 0);
     const fs::path back = folder / "spheres_output" / "screenshot_0001.png";
