@@ -438,7 +438,7 @@ void presentedSliders(const scenes::Scene& scene, PanelState& state, PanelAction
     }
     ImGui::Spacing();
     wrappedColored(ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled),
-                   "F5 or Esc: every control   P: pause   R: restart   [ ]: preset");
+                   "Esc: all controls  P: pause  R: restart  [ ]: preset");
 }
 
 }  // namespace
