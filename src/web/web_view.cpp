@@ -1,8 +1,11 @@
 // The live view of the page: one app::Simulation advanced by the page's animation
 // frames (the window's clock: a fixed step h and an accumulator), drawn with the
 // desktop's renderer into the page's canvas through WebGL 2, and edited through the
-// same checks as the window's panel (app::Session). The page makes its controls from
-// the parameter table (spheres_parameters) and calls these entry points.
+// same checks as the window's panel (app::Session). Side by side, up to three more runs
+// with overrides step with it (app::Comparison), each in its column of the canvas. The
+// page makes its controls from the parameter table (spheres_parameters) and calls these
+// entry points.
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -10,6 +13,7 @@
 #include <emscripten/emscripten.h>
 #include <emscripten/html5.h>
 #include <glad/gl.h>
+#include "app/run/comparison.h"
 #include "app/run/session.h"
 #include "app/run/simulation.h"
 #include "app/views/frame_builder.h"
@@ -40,7 +44,7 @@ struct LiveView {
     std::unique_ptr<app::Session> session;
     render::Renderer renderer;
     render::Camera camera;
-    render::FrameSnapshot snapshot;
+    render::FrameSnapshot snapshots[app::kMostViews];  // one per run
     ui::PanelState look;  // the window's colours and overlays (defaults)
     bool rendererReady = false;
     float aspect = 0.0f;  // the canvas's last width / height: a change keeps the box's fit
@@ -85,13 +89,36 @@ void followCanvasShape(int width, int height) {
     v.aspect = aspect;
 }
 
+// px between the columns side by side, as in the window.
+constexpr int kViewGap = 4;
+
+// Each run's column of a canvas `width` px wide: x and width (px).
+struct Column {
+    int x, width;
+};
+Column columnOf(int k, int runs, int width) {
+    const int each = std::max(1, (width - kViewGap * (runs - 1)) / runs);
+    return {k * (each + kViewGap), each};
+}
+
+// Side by side's views: {"views": [{"lines": [label, readouts...]}, ...]} (none when off).
+Json viewsOf(const LiveView& v) {
+    Json views = Json::array();
+    if (!v.session->comparison()) return views;
+    for (const std::vector<std::string>& lines : app::comparisonReadouts(v.session->run(0), *v.session->comparison())) {
+        views.push_back({{"lines", lines}});
+    }
+    return views;
+}
+
 }  // namespace
 
 extern "C" {
 
 // Opens the scene (as --scene names it) with `settings` ("name=value" lines) in the
-// canvas of width x height px: {"title", "slide", "description", "side_by_side" (the
-// desktop opens it side by side)} or {"error"}.
+// canvas of width x height px: {"title", "slide", "description", "compare" (the
+// overrides the scene opens side by side with, as the desktop does; "" none)} or
+// {"error"}.
 EMSCRIPTEN_KEEPALIVE const char* spheres_open(const char* name, const char* settings, int width, int height) {
     LiveView& v = live();
     try {
@@ -104,31 +131,58 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_open(const char* name, const char* sett
         auto simulation = std::make_unique<app::Simulation>(web::sceneWithSettings(name, settings));
         simulation->wallBudget = kStepBudgetSeconds;
         auto session = std::make_unique<app::Session>(*simulation, kTimelineBytes);
+        const scenes::Scene& s = simulation->scene();
+        if (!s.compare.empty()) {
+            if (const std::string error = session->startComparison(s.compare); !error.empty()) {
+                return answer({{"error", error}});
+            }
+        }
         v.session = std::move(session);
         v.simulation = std::move(simulation);
-        fitCamera(width, height);
-        const scenes::Scene& s = v.simulation->scene();
+        fitCamera(columnOf(0, v.session->runCount(), width).width, height);
         return answer({{"title", scenes::withCount(s.title, s)},
                        {"slide", s.slide},
                        {"description", scenes::describedText(s)},
-                       {"side_by_side", !s.compare.empty()}});
+                       {"compare", app::joinedOverrides(s.compare)}});
     } catch (const std::exception& e) {
         return answer({{"error", e.what()}});
     }
 }
 
-// Advances the run by `seconds` of real time and draws it into the whole canvas.
+// Advances the runs by `seconds` of real time and draws them into the canvas: the whole
+// of it, or side by side a column each, seen by the same camera.
 EMSCRIPTEN_KEEPALIVE void spheres_frame(double seconds, int width, int height) {
     LiveView& v = live();
     if (!v.simulation || !v.session || !v.rendererReady) return;
     v.session->advance(seconds);
-    followCanvasShape(width, height);
-    app::buildSnapshot(*v.simulation, v.look, v.snapshot);
+    const int runs = v.session->runCount();
+    followCanvasShape(columnOf(0, runs, width).width, height);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glViewport(0, 0, width, height);
     glClearColor(ui::kBackdropColor[0], ui::kBackdropColor[1], ui::kBackdropColor[2], 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    v.renderer.draw(v.snapshot, v.camera, 0, 0, width, height);
+    for (int k = 0; k < runs; ++k) {
+        const Column column = columnOf(k, runs, width);
+        app::buildSnapshot(v.session->run(k), v.look, v.snapshots[k]);
+        v.renderer.draw(v.snapshots[k], v.camera, column.x, 0, column.width, height);
+    }
+}
+
+// Side by side with `overrides` ("name=value[,name=value]", as the desktop's bar; several
+// values of one name make a view each), every run restarted from the scene's initial
+// state; "" ends it. {"views", "same" (the overrides change nothing)} or {"error"} (the
+// runs stay as they were).
+EMSCRIPTEN_KEEPALIVE const char* spheres_compare(const char* overrides) {
+    LiveView& v = live();
+    if (!v.session) return answer({{"error", "no scene is open"}});
+    if (*overrides == 0) {
+        v.session->stopComparison();
+        return answer({{"views", Json::array()}, {"same", false}});
+    }
+    if (const std::string error = v.session->startComparison({overrides}); !error.empty()) {
+        return answer({{"error", error}});
+    }
+    return answer({{"views", viewsOf(v)}, {"same", v.session->comparison()->changesNothing(v.simulation->scene())}});
 }
 
 // The mouse: drag to orbit (px), wheel to zoom (steps, positive closer).
@@ -186,7 +240,7 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_parameters() {
 
 // The run now: {"time_s", "steps", "spheres", "hash", "paused" (by the page, or by an
 // alarm: a value not finite), "kinetic_J", "potential_J", "penetration_r",
-// "behind_real_time"}.
+// "behind_real_time", "views" (side by side: each view's label lines, viewsOf)}.
 EMSCRIPTEN_KEEPALIVE const char* spheres_state() {
     LiveView& v = live();
     if (!v.simulation || !v.session) return answer(Json::object());
@@ -200,7 +254,8 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_state() {
                    {"kinetic_J", d.kinetic},
                    {"potential_J", d.potential},
                    {"penetration_r", d.maxPenetration},
-                   {"behind_real_time", v.simulation->behindRealTime()}});
+                   {"behind_real_time", v.simulation->behindRealTime()},
+                   {"views", viewsOf(v)}});
 }
 
 }  // extern "C"

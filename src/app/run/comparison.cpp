@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "app/run/scene_source.h"
+#include "app/teaching/impact_report.h"
 #include "scenes/parameters.h"
 
 namespace app {
@@ -85,6 +86,32 @@ std::vector<std::string> viewReadoutLines(const ViewReadout& view) {
         at = end + 1;
     }
     return lines;
+}
+
+std::string joinedOverrides(const std::vector<std::string>& lists) {
+    std::string text;
+    for (const std::string& list : lists) text += (text.empty() ? "" : ",") + list;
+    return text;
+}
+
+std::vector<std::vector<std::string>> comparisonReadouts(const Simulation& primary, const Comparison& comparison,
+                                                         bool titlesOnly) {
+    std::vector<std::vector<std::string>> views;
+    for (int k = 0; k <= comparison.count(); ++k) {
+        const Simulation& run = k == 0 ? primary : comparison.simulation(k - 1);
+        const std::string title = std::string(1, char('A' + k)) + "   " +
+                                  (k == 0 ? comparison.primaryLabel(primary.scene()) : comparison.label(k - 1));
+        const physics::World& world = run.world();
+        ViewReadout readout{title, physics::measure(world, run.params()), world.time, world.stepCount, ""};
+        // From the first frame on (dashes until measured): the label keeps its size.
+        std::vector<physics::MirrorAsymmetry> mirrors;
+        for (const physics::Plane& m : run.scene().mirrors) mirrors.push_back(physics::mirrorAsymmetry(world, m));
+        readout.properties = propertiesMarks(judgeProperties(run.impacts(), mirrors, run.params()));
+        std::vector<std::string> lines = viewReadoutLines(readout);
+        if (titlesOnly) lines.resize(1);
+        views.push_back(std::move(lines));
+    }
+    return views;
 }
 
 }  // namespace app

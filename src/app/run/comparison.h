@@ -73,4 +73,14 @@ struct ViewReadout {
 // the five properties' marks when there are any.
 std::vector<std::string> viewReadoutLines(const ViewReadout& view);
 
+// Override lists as one text, as the window's bar and the page's field show them:
+// joined by commas.
+std::string joinedOverrides(const std::vector<std::string>& lists);
+
+// Each view's label lines, A first: "A   method = position", then its readouts
+// (viewReadoutLines). `titlesOnly`: the first line alone (the presentation layout).
+// The window draws them with ImGui (view_labels.h), the browser's page as text.
+std::vector<std::vector<std::string>> comparisonReadouts(const Simulation& primary, const Comparison& comparison,
+                                                         bool titlesOnly = false);
+
 }  // namespace app

@@ -4,7 +4,6 @@
 
 #include <imgui.h>
 
-#include "app/teaching/impact_report.h"
 #include "ui/imgui_gl_renderer.h"
 #include "ui/ui_font.h"
 
@@ -12,19 +11,9 @@ namespace app {
 
 std::vector<ViewLabel> comparisonLabels(const Simulation& primary, const Comparison& comparison, bool titlesOnly) {
     std::vector<ViewLabel> labels;
-    for (int k = 0; k <= comparison.count(); ++k) {
-        const Simulation& run = k == 0 ? primary : comparison.simulation(k - 1);
-        const std::string title = std::string(1, char('A' + k)) + "   " +
-                                  (k == 0 ? comparison.primaryLabel(primary.scene()) : comparison.label(k - 1));
-        const physics::World& world = run.world();
-        ViewReadout readout{title, physics::measure(world, run.params()), world.time, world.stepCount, ""};
-        // From the first frame on (dashes until measured): the label keeps its size.
-        std::vector<physics::MirrorAsymmetry> mirrors;
-        for (const physics::Plane& m : run.scene().mirrors) mirrors.push_back(physics::mirrorAsymmetry(world, m));
-        readout.properties = propertiesMarks(judgeProperties(run.impacts(), mirrors, run.params()));
-        std::vector<std::string> lines = viewReadoutLines(readout);
-        if (titlesOnly) lines.resize(1);
-        labels.push_back({glm::vec2(0.0f), glm::vec2(1e6f), std::move(lines), kViewColors[k]});
+    std::vector<std::vector<std::string>> readouts = comparisonReadouts(primary, comparison, titlesOnly);
+    for (std::size_t k = 0; k < readouts.size(); ++k) {
+        labels.push_back({glm::vec2(0.0f), glm::vec2(1e6f), std::move(readouts[k]), kViewColors[k]});
     }
     return labels;
 }

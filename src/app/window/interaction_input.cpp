@@ -74,18 +74,8 @@ void InteractionInput::shoot(const ViewLayout& views, const render::Camera& came
     }
 }
 
-namespace {
-
-std::string joined(const std::vector<std::string>& lists) {
-    std::string text;
-    for (const std::string& list : lists) text += (text.empty() ? "" : ",") + list;
-    return text;
-}
-
-}  // namespace
-
 std::string InteractionInput::startComparison(const std::vector<std::string>& lists) {
-    tools_.compareText = joined(lists);
+    tools_.compareText = joinedOverrides(lists);
     const std::string error = session_.startComparison(lists);
     foldReadouts_ = error.empty();
     return error;
@@ -95,7 +85,7 @@ void InteractionInput::sceneChanged() {
     session_.sceneChanged();
     const std::vector<std::string>& asked = session_.run(0).scene().compare;
     if (asked.empty() || !session_.comparison()) return;
-    tools_.compareText = joined(asked);
+    tools_.compareText = joinedOverrides(asked);
     foldReadouts_ = true;
 }
 

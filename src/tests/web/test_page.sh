@@ -111,13 +111,42 @@ print("runs, took effect" if took and live else "live %s, time %s, beta %s, meth
 echo "live view, beta=0.5&method=velocity: $verdict"
 [ "$verdict" = "runs, took effect" ] || failed=1
 
+# Side by side: the link's compare=..., or else the scene's own, opens the views, each
+# with its label; overrides the scene cannot take are refused in one line, one view left.
+while read -r query expected; do
+  dom=$(timeout 180 chromium --headless=new --no-sandbox --use-angle=swiftshader --enable-unsafe-swiftshader \
+    --user-data-dir="$profile" --virtual-time-budget=3000 --dump-dom "http://127.0.0.1:$port/index.html?$query" 2>/dev/null || true)
+  said=$(DOM="$dom" python3 -c '
+import html, json, os, re
+dom = os.environ["DOM"]
+m = re.search(r"<pre id=\"state\"[^>]*>([^<]*)</pre>", dom)
+run = json.loads(html.unescape(m.group(1)) or "{}") if m else {}
+views = [" ".join(v["lines"][0].split()) for v in run.get("views", [])]
+refusal = re.search(r"<p class=\"refusal\" id=\"refusal\">([^<]*)</p>", dom)
+print(" | ".join(views) if views else html.unescape(refusal.group(1)) if refusal and refusal.group(1) else "nothing")')
+  if [ "$said" = "$expected" ]; then echo "side by side, $query: $said"; else echo "side by side, $query: $said (expected $expected)"; failed=1; fi
+done <<'CASES'
+scene=cradle&compare=order=reversed A order = index | B order = reversed
+scene=shock_column A shock = off, passes = 1 | B shock = off, passes = 4 | C shock = on, passes = 1 | D shock = on, passes = 4
+scene=cradle&compare=order=sideways Cannot compare: order=sideways: order = 'sideways' is not a choice; choices: index, reversed, shuffled, colored
+CASES
+
 # ...and its screenshot shows the panel (dark, on the left) and the spheres (coloured,
 # in the view): not a blank page. It is kept as BUILD/page.png (the README's picture).
-rm -f "$build/page.png"  # never an earlier run's
-timeout 180 chromium --headless=new --no-sandbox --use-angle=swiftshader --enable-unsafe-swiftshader \
-  --user-data-dir="$profile" --virtual-time-budget=3000 --window-size=1280,720 \
-  --screenshot="$build/page.png" "http://127.0.0.1:$port/index.html?scene=cradle" >/dev/null 2>&1 || true
-verdict=$(python3 - "$build/page.png" <<'PY'
+rm -f "$build/page.png" "$build/page_side_by_side.png"  # never an earlier run's
+shoot() {
+  timeout 180 chromium --headless=new --no-sandbox --use-angle=swiftshader --enable-unsafe-swiftshader \
+    --user-data-dir="$profile" --virtual-time-budget=3000 --window-size=1280,720 \
+    --screenshot="$1" "http://127.0.0.1:$port/index.html?$2" >/dev/null 2>&1 || true
+}
+shoot "$build/page.png" "scene=cradle"
+# Side by side (the cradle and its reversed order): spheres in both columns of the canvas.
+shoot "$build/page_side_by_side.png" "scene=cradle&compare=order=reversed"
+# What a screenshot shows: PNG FILE single|side -> "panel and spheres" (and "in both
+# views" side by side), or what is missing.
+looks=$(mktemp)
+trap 'kill $server 2>/dev/null; rm -rf "$profile" "$log" "$looks"' EXIT
+cat >"$looks" <<'PY'
 import struct, sys, zlib
 import os
 data = open(sys.argv[1], "rb").read() if os.path.exists(sys.argv[1]) else b""
@@ -143,17 +172,28 @@ for y in range(height):  # PNG's row filters
             p = a + b - c; pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
             line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
     rows.append(line); previous = line
-def share(x0, x1, test):
+def share(x0, x1, test, y0=0):
     hits = total = 0
-    for y in range(0, height, 4):
+    for y in range(y0, height, 4):
         for x in range(x0, x1, 4):
             px = rows[y][x * channels:x * channels + 3]; total += 1; hits += test(px)
     return hits / max(total, 1)
+coloured = lambda p: max(p) - min(p) > 60
 panel = share(5, 300, lambda p: max(p) < 21)  # the panel's #0f1013, darker than the page's #16181d
-spheres = share(420, width, lambda p: max(p) - min(p) > 60)
-print("panel and spheres" if panel > 0.5 and spheres > 0.002 else "blank or broken: panel %.3f, spheres %.4f" % (panel, spheres))
+spheres = share(420, width, coloured)
+verdict = "panel and spheres" if panel > 0.5 and spheres > 0.002 else "blank or broken: panel %.3f, spheres %.4f" % (panel, spheres)
+if sys.argv[2] == "side":  # the canvas from x = 384 (24rem): two columns, a 4 px dark gap between
+    middle = (384 + width) // 2
+    left, right = share(384, middle - 8, coloured, 200), share(middle + 8, width, coloured, 200)
+    gap = share(middle - 1, middle + 1, lambda p: max(p) < 40, 200)
+    both = left > 0.002 and right > 0.002 and gap > 0.9
+    verdict += " in both views" if both else ", not two views: spheres %.4f and %.4f, gap %.2f" % (left, right, gap)
+print(verdict)
 PY
-)
+verdict=$(python3 "$looks" "$build/page.png" single)
 echo "live view, screenshot: $verdict"
 [ "$verdict" = "panel and spheres" ] || failed=1
+verdict=$(python3 "$looks" "$build/page_side_by_side.png" side)
+echo "live view side by side, screenshot: $verdict"
+[ "$verdict" = "panel and spheres in both views" ] || failed=1
 exit $failed
