@@ -170,8 +170,8 @@ EMSCRIPTEN_KEEPALIVE void spheres_frame(double seconds, int width, int height) {
 
 // Side by side with `overrides` ("name=value[,name=value]", as the desktop's bar; several
 // values of one name make a view each), every run restarted from the scene's initial
-// state; "" ends it. {"views", "same" (the overrides change nothing)} or {"error"} (the
-// runs stay as they were).
+// state; "" ends it. {"views", "same" (the overrides change nothing)}, or {"error",
+// "views"}: the runs stay as they were.
 EMSCRIPTEN_KEEPALIVE const char* spheres_compare(const char* overrides) {
     LiveView& v = live();
     if (!v.session) return answer({{"error", "no scene is open"}});
@@ -180,7 +180,7 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_compare(const char* overrides) {
         return answer({{"views", Json::array()}, {"same", false}});
     }
     if (const std::string error = v.session->startComparison({overrides}); !error.empty()) {
-        return answer({{"error", error}});
+        return answer({{"error", error}, {"views", viewsOf(v)}});
     }
     return answer({{"views", viewsOf(v)}, {"same", v.session->comparison()->changesNothing(v.simulation->scene())}});
 }
