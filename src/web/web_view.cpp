@@ -7,6 +7,7 @@
 // entry points.
 #include <algorithm>
 #include <cstdio>
+#include <iterator>
 #include <memory>
 #include <string>
 
@@ -15,6 +16,7 @@
 #include <glad/gl.h>
 #include "app/run/comparison.h"
 #include "app/run/session.h"
+#include "app/teaching/overlays.h"
 #include "app/run/simulation.h"
 #include "app/views/frame_builder.h"
 #include "physics/diagnostics.h"
@@ -89,6 +91,9 @@ void followCanvasShape(int width, int height) {
     v.aspect = aspect;
 }
 
+// The spheres' colourings by name, in render::ColorBy's order (the panel's colorBy).
+constexpr const char* kColorings[] = {"id", "speed", "contact"};
+
 // px between the columns side by side, as in the window.
 constexpr int kViewGap = 4;
 
@@ -161,6 +166,7 @@ EMSCRIPTEN_KEEPALIVE void spheres_frame(double seconds, int width, int height) {
     glViewport(0, 0, width, height);
     glClearColor(ui::kBackdropColor[0], ui::kBackdropColor[1], ui::kBackdropColor[2], 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    v.renderer.style.overlayOnTop = app::overlaysOnTop(v.look, v.simulation->world().size());  // as the window
     for (int k = 0; k < runs; ++k) {
         const Column column = columnOf(k, runs, width);
         app::buildSnapshot(v.session->run(k), v.look, v.snapshots[k]);
@@ -238,9 +244,39 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_parameters() {
     return answer(list);
 }
 
+// The view's look, as the window's View section: name "color-by" with value "contact",
+// "speed" or "id"; or an overlay (velocity, contacts, impulses, penetration, trails,
+// graph) with "on" or "off". "" or why refused (the look stays as it was).
+EMSCRIPTEN_KEEPALIVE const char* spheres_look(const char* name, const char* value) {
+    LiveView& v = live();
+    static std::string refusal;
+    const std::string what = name, to = value;
+    refusal.clear();
+    if (what == "color-by") {
+        const auto at = std::find(std::begin(kColorings), std::end(kColorings), to);
+        if (at == std::end(kColorings)) return (refusal = "color-by " + to + ": expected contact, speed or id").c_str();
+        v.look.colorBy = int(at - std::begin(kColorings));
+        return refusal.c_str();
+    }
+    if (to != "on" && to != "off") return (refusal = what + "=" + to + ": expected on or off").c_str();
+    app::OverlayFlags flags, probe;
+    if (!app::setOverlayByName(probe, what)) {
+        return (refusal = "no overlay '" + what + "'; overlays: velocity, contacts, impulses, penetration, trails, graph").c_str();
+    }
+    for (const std::string& shown : app::overlayNames(app::overlayFlags(v.look))) {
+        if (shown != what) app::setOverlayByName(flags, shown);
+    }
+    if (to == "on") app::setOverlayByName(flags, what);
+    const int colorBy = v.look.colorBy;
+    v.look = app::viewShowing(flags);
+    v.look.colorBy = colorBy;
+    return refusal.c_str();
+}
+
 // The run now: {"time_s", "steps", "spheres", "hash", "paused" (by the page, or by an
 // alarm: a value not finite), "kinetic_J", "potential_J", "penetration_r",
-// "behind_real_time", "views" (side by side: each view's label lines, viewsOf)}.
+// "behind_real_time", "views" (side by side: each view's label lines, viewsOf), "look":
+// {"color_by", "overlays"}}.
 EMSCRIPTEN_KEEPALIVE const char* spheres_state() {
     LiveView& v = live();
     if (!v.simulation || !v.session) return answer(Json::object());
@@ -255,7 +291,9 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_state() {
                    {"potential_J", d.potential},
                    {"penetration_r", d.maxPenetration},
                    {"behind_real_time", v.simulation->behindRealTime()},
-                   {"views", viewsOf(v)}});
+                   {"views", viewsOf(v)},
+                   {"look", {{"color_by", kColorings[v.look.colorBy]},
+                             {"overlays", app::overlayNames(app::overlayFlags(v.look))}}}});
 }
 
 }  // extern "C"

@@ -113,9 +113,13 @@ echo "live view, beta=0.5&method=velocity: $verdict"
 
 # Side by side: the link's compare=..., or else the scene's own, opens the views, each
 # with its label; overrides the scene cannot take are refused in one line, one view left.
+# The live view's page at ?QUERY after 3 s of virtual time, as HTML text.
+live_dom() {
+  timeout 180 chromium --headless=new --no-sandbox --use-angle=swiftshader --enable-unsafe-swiftshader \
+    --user-data-dir="$profile" --virtual-time-budget=3000 --dump-dom "http://127.0.0.1:$port/index.html?$1" 2>/dev/null || true
+}
 while read -r query expected; do
-  dom=$(timeout 180 chromium --headless=new --no-sandbox --use-angle=swiftshader --enable-unsafe-swiftshader \
-    --user-data-dir="$profile" --virtual-time-budget=3000 --dump-dom "http://127.0.0.1:$port/index.html?$query" 2>/dev/null || true)
+  dom=$(live_dom "$query")
   said=$(DOM="$dom" python3 -c '
 import html, json, os, re
 dom = os.environ["DOM"]
@@ -129,6 +133,24 @@ done <<'CASES'
 scene=cradle&compare=order=reversed A order = index | B order = reversed
 scene=shock_column A shock = off, passes = 1 | B shock = off, passes = 4 | C shock = on, passes = 1 | D shock = on, passes = 4
 scene=cradle&compare=order=sideways Cannot compare: order=sideways: order = 'sideways' is not a choice; choices: index, reversed, shuffled, colored
+CASES
+
+# What the view draws: the link's color-by=... and overlay=..., in the run's state; an
+# overlay it does not know is refused in one line.
+while read -r query expected; do
+  said=$(DOM="$(live_dom "$query")" python3 -c '
+import html, json, os, re
+dom = os.environ["DOM"]
+m = re.search(r"<pre id=\"state\"[^>]*>([^<]*)</pre>", dom)
+look = (json.loads(html.unescape(m.group(1)) or "{}") if m else {}).get("look", {})
+refusal = re.search(r"<p class=\"refusal\" id=\"refusal\">([^<]*)</p>", dom)
+print(html.unescape(refusal.group(1)) if refusal and refusal.group(1) else
+      "%s: %s" % (look.get("color_by"), ", ".join(look.get("overlays", [])) or "none"))')
+  if [ "$said" = "$expected" ]; then echo "look, $query: $said"; else echo "look, $query: $said (expected $expected)"; failed=1; fi
+done <<'CASES'
+scene=cradle contact: none
+scene=shock_pyramid&color-by=speed&overlay=graph,velocity speed: velocity, graph
+scene=cradle&overlay=sparkles View: no overlay 'sparkles'; overlays: velocity, contacts, impulses, penetration, trails, graph
 CASES
 
 # ...and its screenshot shows the panel (dark, on the left) and the spheres (coloured,
