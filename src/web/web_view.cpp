@@ -16,8 +16,8 @@
 #include <glad/gl.h>
 #include "app/run/comparison.h"
 #include "app/run/session.h"
-#include "app/teaching/overlays.h"
 #include "app/run/simulation.h"
+#include "app/teaching/overlays.h"
 #include "app/views/frame_builder.h"
 #include "physics/diagnostics.h"
 #include "render/camera.h"
@@ -261,7 +261,9 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_look(const char* name, const char* valu
     if (to != "on" && to != "off") return (refusal = what + "=" + to + ": expected on or off").c_str();
     app::OverlayFlags flags, probe;
     if (!app::setOverlayByName(probe, what)) {
-        return (refusal = "no overlay '" + what + "'; overlays: velocity, contacts, impulses, penetration, trails, graph").c_str();
+        refusal = "no overlay '" + what + "'; overlays:";
+        for (const char* each : app::kOverlayNames) refusal += std::string(each == app::kOverlayNames[0] ? " " : ", ") + each;
+        return refusal.c_str();
     }
     for (const std::string& shown : app::overlayNames(app::overlayFlags(v.look))) {
         if (shown != what) app::setOverlayByName(flags, shown);
