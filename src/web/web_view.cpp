@@ -15,8 +15,10 @@
 #include <emscripten/html5.h>
 #include <glad/gl.h>
 #include "app/run/comparison.h"
+#include "app/run/interaction.h"
 #include "app/run/session.h"
 #include "app/run/simulation.h"
+#include "app/teaching/contact_explanation.h"
 #include "app/teaching/overlays.h"
 #include "app/views/frame_builder.h"
 #include "physics/diagnostics.h"
@@ -48,6 +50,7 @@ struct LiveView {
     render::Camera camera;
     render::FrameSnapshot snapshots[app::kMostViews];  // one per run
     ui::PanelState look;  // the window's colours and overlays (defaults)
+    int explainIndex = 0;  // which of the selected sphere's latest contacts is explained
     bool rendererReady = false;
     float aspect = 0.0f;  // the canvas's last width / height: a change keeps the box's fit
 };
@@ -116,6 +119,55 @@ Json viewsOf(const LiveView& v) {
     return views;
 }
 
+// The selected sphere's latest contacts (Session::latestContacts), the one explained first
+// (-1 none): its partner is ringed in magenta, as in the window.
+const physics::ContactEvent* explained(LiveView& v) {
+    const std::vector<physics::ContactEvent>& events = v.session->latestContacts().events;
+    if (v.session->selected() < 0 || events.empty()) return nullptr;
+    v.explainIndex = std::clamp(v.explainIndex, 0, int(events.size()) - 1);
+    return &events[std::size_t(v.explainIndex)];
+}
+
+// The selected sphere, as the window's inspector shows it: {"index", "p" (m), "v" (m/s),
+// "r" (m), "m" (kg), "state", "level" (the contact graph's, with shock propagation or its
+// overlay; -1 none; absent otherwise), "contacts": {"count", "index", "title", "lines":
+// [{"kind", "text"}]} (the slides' formulas with the numbers of one latest contact)}; null
+// when none is selected.
+Json selectedOf(LiveView& v) {
+    const int i = v.session->selected();
+    const app::Simulation& run = *v.simulation;
+    const physics::World& world = run.world();
+    if (i < 0 || std::size_t(i) >= world.size()) return nullptr;
+    const auto vec = [](const glm::dvec3& a) { return Json::array({a.x, a.y, a.z}); };
+    const char* states[] = {"free", "colliding (bounce)", "static contact"};  // physics::ContactState's order
+    Json sphere = {{"index", i},
+                   {"p", vec(world.position[std::size_t(i)])},
+                   {"v", vec(world.velocity[std::size_t(i)])},
+                   {"r", world.radius[std::size_t(i)]},
+                   {"m", world.mass[std::size_t(i)]},
+                   {"state", states[int(world.contactState[std::size_t(i)])]}};
+    if (run.params().shock == physics::ShockPropagation::On || run.overlayFlags().graph) {
+        sphere["level"] = run.contactGraph().level[std::size_t(i)];
+    }
+    Json contacts = {{"count", v.session->latestContacts().events.size()}, {"recorded", world.recordContacts}};
+    if (const physics::ContactEvent* event = explained(v)) {
+        const int planes = world.boxPlaneCount;
+        std::vector<app::ExplanationLine> lines =
+            app::explanationLines(app::explainContact(*event, run.params()), run.params(), planes);
+        for (app::ExplanationLine& line : app::solvedWithLines(*event, v.session->latestContacts().solvedTogether, planes)) {
+            lines.push_back(std::move(line));
+        }
+        Json shown = Json::array();
+        const char* kinds[] = {"heading", "formula", "result", "note"};  // ExplanationLine::Kind's order
+        for (const app::ExplanationLine& line : lines) shown.push_back({{"kind", kinds[int(line.kind)]}, {"text", line.text}});
+        contacts["index"] = v.explainIndex;
+        contacts["title"] = app::contactTitle(*event, i, planes, run.params().passes);
+        contacts["lines"] = shown;
+    }
+    sphere["contacts"] = contacts;
+    return sphere;
+}
+
 }  // namespace
 
 extern "C" {
@@ -166,10 +218,14 @@ EMSCRIPTEN_KEEPALIVE void spheres_frame(double seconds, int width, int height) {
     glViewport(0, 0, width, height);
     glClearColor(ui::kBackdropColor[0], ui::kBackdropColor[1], ui::kBackdropColor[2], 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    v.look.selectedSphere = v.session->selected();  // a restart or a new scene deselects
+    v.session->setCatchEveryStep(v.look.selectedSphere >= 0);  // a contact in any step of a frame, as the window
     v.renderer.style.overlayOnTop = app::overlaysOnTop(v.look, v.simulation->world().size());  // as the window
     for (int k = 0; k < runs; ++k) {
         const Column column = columnOf(k, runs, width);
         app::buildSnapshot(v.session->run(k), v.look, v.snapshots[k]);
+        const physics::ContactEvent* event = explained(v);
+        v.session->appendSelection(k, v.camera, v.snapshots[k], event ? app::contactPartner(*event, v.session->selected()) : -1);
         v.renderer.draw(v.snapshots[k], v.camera, column.x, 0, column.width, height);
     }
 }
@@ -189,6 +245,48 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_compare(const char* overrides) {
         return answer({{"error", error}, {"views", viewsOf(v)}});
     }
     return answer({{"views", viewsOf(v)}, {"same", v.session->comparison()->changesNothing(v.simulation->scene())}});
+}
+
+// A click at (x, y) px from the canvas's top-left corner (width x height px): selects the
+// sphere under it in the view there, or none. {"selected": its number or -1}.
+EMSCRIPTEN_KEEPALIVE const char* spheres_pick(float x, float y, int width, int height) {
+    LiveView& v = live();
+    if (!v.session) return answer({{"selected", -1}});
+    const int runs = v.session->runCount();
+    int k = 0;
+    while (k + 1 < runs && x >= float(columnOf(k + 1, runs, width).x)) ++k;
+    const Column column = columnOf(k, runs, width);
+    const int hit = app::pickSphere(v.session->run(k).world(), v.camera, glm::vec2(x - float(column.x), y),
+                                    glm::vec2(float(column.width), float(height)));
+    v.session->select(hit);
+    v.look.selectedSphere = hit;
+    v.explainIndex = 0;
+    return answer({{"selected", hit}});
+}
+
+// Selects sphere `index` (-1: none), as --select does: "" or why not (the selection stays).
+EMSCRIPTEN_KEEPALIVE const char* spheres_select(int index) {
+    LiveView& v = live();
+    static std::string refusal;
+    refusal.clear();
+    if (!v.session) return (refusal = "no scene is open").c_str();
+    const std::size_t count = v.simulation->world().size();
+    if (index < -1 || (index >= 0 && std::size_t(index) >= count)) {
+        return (refusal = "select=" + std::to_string(index) + ": the scene has " + std::to_string(count) +
+                          " spheres, numbered from 0").c_str();
+    }
+    v.session->select(index);
+    v.look.selectedSphere = index;
+    v.explainIndex = 0;
+    return refusal.c_str();
+}
+
+// The next (+1) or previous (-1) of the selected sphere's latest contacts to explain.
+EMSCRIPTEN_KEEPALIVE void spheres_explain(int step) {
+    LiveView& v = live();
+    if (!v.session) return;
+    const int count = int(v.session->latestContacts().events.size());
+    if (count > 0) v.explainIndex = ((v.explainIndex + step) % count + count) % count;
 }
 
 // The mouse: drag to orbit (px), wheel to zoom (steps, positive closer).
@@ -277,8 +375,8 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_look(const char* name, const char* valu
 
 // The run now: {"time_s", "steps", "spheres", "hash", "paused" (by the page, or by an
 // alarm: a value not finite), "kinetic_J", "potential_J", "penetration_r",
-// "behind_real_time", "views" (side by side: each view's label lines, viewsOf), "look":
-// {"color_by", "overlays"}}.
+// "behind_real_time", "views" (side by side: each view's label lines, viewsOf), "selected"
+// (selectedOf), "look": {"color_by", "overlays"}}.
 EMSCRIPTEN_KEEPALIVE const char* spheres_state() {
     LiveView& v = live();
     if (!v.simulation || !v.session) return answer(Json::object());
@@ -294,6 +392,7 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_state() {
                    {"penetration_r", d.maxPenetration},
                    {"behind_real_time", v.simulation->behindRealTime()},
                    {"views", viewsOf(v)},
+                   {"selected", selectedOf(v)},
                    {"look", {{"color_by", kColorings[v.look.colorBy]},
                              {"overlays", app::overlayNames(app::overlayFlags(v.look))}}}});
 }

@@ -438,4 +438,22 @@ std::vector<ExplanationLine> solvedWithLines(const physics::ContactEvent& event,
     return lines;
 }
 
+int contactPartner(const physics::ContactEvent& event, int selected) {
+    if (event.isPlane()) return -1;
+    return static_cast<int>(event.i) == selected ? event.other : static_cast<int>(event.i);
+}
+
+std::string contactTitle(const physics::ContactEvent& event, int selected, int boxPlaneCount, int passes) {
+    char text[128];
+    const char* kind = event.bounce ? "bounce" : "static";
+    const std::string pass = passName(event.pass, passes, event.solvedImpulse >= 0.0);
+    if (event.isPlane()) {
+        std::snprintf(text, sizeof text, "%s, %s, %s", planeName(-1 - event.other, boxPlaneCount).c_str(), pass.c_str(),
+                      kind);
+    } else {
+        std::snprintf(text, sizeof text, "vs #%d, %s, %s", contactPartner(event, selected), pass.c_str(), kind);
+    }
+    return text;
+}
+
 }  // namespace app

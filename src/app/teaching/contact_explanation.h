@@ -75,6 +75,12 @@ std::string passName(int pass, int passes, bool solvedTogether = false);
 // order), "plane k" for the extra ones.
 std::string planeName(int planeIndex, int boxPlaneCount);
 
+// The other sphere of a contact of `selected`; -1 for a plane.
+int contactPartner(const physics::ContactEvent& event, int selected);
+
+// "vs #40, pass 2 of 4, bounce" or "floor, pass 1 of 4, static" for a contact of `selected`.
+std::string contactTitle(const physics::ContactEvent& event, int selected, int boxPlaneCount, int passes);
+
 // One line of the explanation as the window shows it.
 struct ExplanationLine {
     enum class Kind { Heading, Formula, Result, Note };

@@ -68,21 +68,6 @@ bool scalarField(const char* label, double& value, bool editable) {
 }
 
 
-// "vs #40, pass 2 of 4, bounce" or "floor, pass 1 of 4, static" for a contact of `selected`.
-std::string contactTitle(const physics::ContactEvent& event, int selected, int boxPlaneCount, int passes) {
-    char text[128];
-    const char* kind = event.bounce ? "bounce" : "static";
-    const std::string pass = passName(event.pass, passes, event.solvedImpulse >= 0.0);
-    if (event.isPlane()) {
-        std::snprintf(text, sizeof text, "%s, %s, %s", planeName(-1 - event.other, boxPlaneCount).c_str(), pass.c_str(),
-                      kind);
-    } else {
-        const int partner = static_cast<int>(event.i) == selected ? event.other : static_cast<int>(event.i);
-        std::snprintf(text, sizeof text, "vs #%d, %s, %s", partner, pass.c_str(), kind);
-    }
-    return text;
-}
-
 }  // namespace
 
 float timelineBarHeight() {
@@ -225,8 +210,7 @@ int explainedPartner(const Session& session, const ToolWindowsState& state) {
     const int selected = session.selected();
     if (!state.explainer || selected < 0 || events.empty()) return -1;
     const physics::ContactEvent& event = events[std::size_t(std::clamp(state.explainIndex, 0, int(events.size()) - 1))];
-    if (event.isPlane()) return -1;
-    return static_cast<int>(event.i) == selected ? event.other : static_cast<int>(event.i);
+    return contactPartner(event, selected);
 }
 
 void drawExplainer(const Placement& placement, const ExplainerInput& input, ToolWindowsState& state,
@@ -262,8 +246,8 @@ void drawExplainer(const Placement& placement, const ExplainerInput& input, Tool
     ui::textWrappedAtSpaces(std::to_string(state.explainIndex + 1) + " of " + std::to_string(count) + ": " +
                             contactTitle(event, input.selected, input.boxPlaneCount, input.params->passes));
     if (!event.isPlane()) {  // which ring is which sphere
-        const int partner = static_cast<int>(event.i) == input.selected ? event.other : static_cast<int>(event.i);
-        ImGui::TextColored(kRingNoteColor, "ringed: #%d yellow, #%d magenta", input.selected, partner);
+        ImGui::TextColored(kRingNoteColor, "ringed: #%d yellow, #%d magenta", input.selected,
+                           contactPartner(event, input.selected));
     }
     const double age = input.now - input.eventTime;  // s
     // The log holds a whole time step h: its `substeps` solver steps end at eventSteps.

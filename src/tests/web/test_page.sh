@@ -153,6 +153,31 @@ scene=shock_pyramid&color-by=speed&overlay=graph,velocity speed: velocity, graph
 scene=cradle&overlay=sparkles View: no overlay 'sparkles'; overlays: velocity, contacts, impulses, penetration, trails, graph
 CASES
 
+# The inspector: a link's select=N (as a click on the sphere) shows its numbers and, after
+# its first contact, the slides' formulas with the numbers; a number the scene does not
+# have is refused in one line.
+while read -r query expected; do
+  said=$(DOM="$(live_dom "$query")" python3 -c '
+import html, json, os, re
+dom = os.environ["DOM"]
+m = re.search(r"<pre id=\"state\"[^>]*>([^<]*)</pre>", dom)
+sphere = (json.loads(html.unescape(m.group(1)) or "{}") if m else {}).get("selected")
+shown = re.search(r"<h2 id=\"inspected\">([^<]*)</h2>", dom)
+refusal = re.search(r"<p class=\"refusal\" id=\"refusal\">([^<]*)</p>", dom)
+if refusal and refusal.group(1):
+    print(html.unescape(refusal.group(1)))
+elif sphere:
+    c = sphere["contacts"]
+    explained = c.get("count", 0) >= 1 and any(line["kind"] == "formula" for line in c.get("lines", []))
+    print("%s, %s" % (shown.group(1) if shown else "no inspector", "explained" if explained else "nothing explained"))
+else:
+    print("nothing selected")')
+  if [ "$said" = "$expected" ]; then echo "inspector, $query: $said"; else echo "inspector, $query: $said (expected $expected)"; failed=1; fi
+done <<'CASES'
+scene=cradle&select=1 Sphere #1, explained
+scene=cradle&select=7 select=7: the scene has 5 spheres, numbered from 0
+CASES
+
 # ...and its screenshot shows the panel (dark, on the left) and the spheres (coloured,
 # in the view): not a blank page. It is kept as BUILD/page.png (the README's picture).
 rm -f "$build/page.png" "$build/page_side_by_side.png"  # never an earlier run's
