@@ -39,9 +39,10 @@ using web::Json;
 // s of wall time a frame may spend stepping, as in the window: beyond it a heavy scene
 // runs in slow motion ("behind real time") and the page stays responsive.
 constexpr double kStepBudgetSeconds = 1.0 / 30.0;
-// The page has no step-back timeline yet: the session keeps a few frames, not the
-// desktop's 200 MiB (a phone's tab would not have them).
-constexpr std::size_t kTimelineBytes = std::size_t(8) << 20;
+// The step-back timeline's memory: the desktop's 600 frames (10 s) of scenes up to about
+// 500 spheres, fewer of bigger ones; not the desktop's 200 MiB, which a phone's tab would
+// not have.
+constexpr std::size_t kTimelineBytes = std::size_t(32) << 20;
 
 struct LiveView {
     std::unique_ptr<app::Simulation> simulation;
@@ -168,6 +169,16 @@ Json selectedOf(LiveView& v) {
     return sphere;
 }
 
+// The timeline: {"frames" kept, "cursor" (the frame shown), "from_s", "to_s" (their times)}.
+Json timelineOf(const app::Session& session) {
+    const app::RewindBuffer& timeline = session.timeline();
+    if (timeline.empty()) return {{"frames", 0}, {"cursor", 0}, {"from_s", 0.0}, {"to_s", 0.0}};
+    return {{"frames", timeline.size()},
+            {"cursor", timeline.cursor()},
+            {"from_s", timeline.at(0).time},
+            {"to_s", timeline.at(timeline.size() - 1).time}};
+}
+
 }  // namespace
 
 extern "C" {
@@ -262,6 +273,13 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_pick(float x, float y, int width, int h
     v.look.selectedSphere = hit;
     v.explainIndex = 0;
     return answer({{"selected", hit}});
+}
+
+// Back to frame `index` of the timeline (0: the oldest kept), every run: the run pauses
+// there, and running again recomputes the same future from it, as the window's timeline.
+EMSCRIPTEN_KEEPALIVE void spheres_scrub(int index) {
+    LiveView& v = live();
+    if (v.session && index >= 0) v.session->scrubTo(std::size_t(index));
 }
 
 // Selects sphere `index` (-1: none), as --select does: "" or why not (the selection stays).
@@ -376,7 +394,7 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_look(const char* name, const char* valu
 // The run now: {"time_s", "steps", "spheres", "hash", "paused" (by the page, or by an
 // alarm: a value not finite), "kinetic_J", "potential_J", "penetration_r",
 // "behind_real_time", "views" (side by side: each view's label lines, viewsOf), "selected"
-// (selectedOf), "look": {"color_by", "overlays"}}.
+// (selectedOf), "timeline" (timelineOf), "look": {"color_by", "overlays"}}.
 EMSCRIPTEN_KEEPALIVE const char* spheres_state() {
     LiveView& v = live();
     if (!v.simulation || !v.session) return answer(Json::object());
@@ -393,6 +411,7 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_state() {
                    {"behind_real_time", v.simulation->behindRealTime()},
                    {"views", viewsOf(v)},
                    {"selected", selectedOf(v)},
+                   {"timeline", timelineOf(*v.session)},
                    {"look", {{"color_by", kColorings[v.look.colorBy]},
                              {"overlays", app::overlayNames(app::overlayFlags(v.look))}}}});
 }

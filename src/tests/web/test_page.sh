@@ -106,10 +106,12 @@ run = exported("state") or {}
 method = table.get("method", {})
 took = table.get("beta", {}).get("value") == 0.5 and method.get("choices", [None])[int(method.get("value", -1))] == "velocity"
 live = re.search(r"<body[^>]*class=\"live\"", dom) is not None and run.get("time_s", 0) > 0
-print("runs, took effect" if took and live else "live %s, time %s, beta %s, method %s" %
-      (live, run.get("time_s"), table.get("beta", {}).get("value"), method.get("value")))')
+timeline = run.get("timeline", {})  # its frames kept for stepping back, the newest shown
+kept = timeline.get("frames", 0) > 1 and timeline.get("cursor") == timeline.get("frames", 0) - 1
+print("runs, took effect, keeps its frames" if took and live and kept else "live %s, time %s, beta %s, method %s, timeline %s" %
+      (live, run.get("time_s"), table.get("beta", {}).get("value"), method.get("value"), timeline))')
 echo "live view, beta=0.5&method=velocity: $verdict"
-[ "$verdict" = "runs, took effect" ] || failed=1
+[ "$verdict" = "runs, took effect, keeps its frames" ] || failed=1
 
 # Side by side: the link's compare=..., or else the scene's own, opens the views, each
 # with its label; overrides the scene cannot take are refused in one line, one view left.
