@@ -39,9 +39,10 @@ using web::Json;
 // s of wall time a frame may spend stepping, as in the window: beyond it a heavy scene
 // runs in slow motion ("behind real time") and the page stays responsive.
 constexpr double kStepBudgetSeconds = 1.0 / 30.0;
-// The step-back timeline's memory: the desktop's 600 frames (10 s) of scenes up to about
-// 500 spheres, fewer of bigger ones; not the desktop's 200 MiB, which a phone's tab would
-// not have.
+// The step-back timeline's memory per run (side by side, at most twice it in all): the
+// desktop's 600 frames (10 s) of scenes up to about 850 spheres (65 bytes a sphere a
+// frame), fewer of bigger ones; not the desktop's 200 MiB, which a phone's tab would not
+// have.
 constexpr std::size_t kTimelineBytes = std::size_t(32) << 20;
 
 struct LiveView {
