@@ -67,7 +67,6 @@ bool scalarField(const char* label, double& value, bool editable) {
     return ImGui::InputScalar(label, ImGuiDataType_Double, &value, nullptr, nullptr, "%.4g", flags);
 }
 
-
 }  // namespace
 
 float timelineBarHeight() {
