@@ -141,13 +141,12 @@ Json selectedOf(LiveView& v) {
     const physics::World& world = run.world();
     if (i < 0 || std::size_t(i) >= world.size()) return nullptr;
     const auto vec = [](const glm::dvec3& a) { return Json::array({a.x, a.y, a.z}); };
-    const char* states[] = {"free", "colliding (bounce)", "static contact"};  // physics::ContactState's order
     Json sphere = {{"index", i},
                    {"p", vec(world.position[std::size_t(i)])},
                    {"v", vec(world.velocity[std::size_t(i)])},
                    {"r", world.radius[std::size_t(i)]},
                    {"m", world.mass[std::size_t(i)]},
-                   {"state", states[int(world.contactState[std::size_t(i)])]}};
+                   {"state", app::contactStateName(world.contactState[std::size_t(i)])}};
     if (run.params().shock == physics::ShockPropagation::On || run.overlayFlags().graph) {
         sphere["level"] = run.contactGraph().level[std::size_t(i)];
     }

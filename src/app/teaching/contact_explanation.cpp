@@ -438,6 +438,15 @@ std::vector<ExplanationLine> solvedWithLines(const physics::ContactEvent& event,
     return lines;
 }
 
+const char* contactStateName(physics::ContactState state) {
+    switch (state) {
+        case physics::ContactState::Free: return "free";
+        case physics::ContactState::Colliding: return "colliding (bounce)";
+        case physics::ContactState::Static: return "static contact";
+    }
+    return "";
+}
+
 int contactPartner(const physics::ContactEvent& event, int selected) {
     if (event.isPlane()) return -1;
     return static_cast<int>(event.i) == selected ? event.other : static_cast<int>(event.i);

@@ -75,6 +75,9 @@ std::string passName(int pass, int passes, bool solvedTogether = false);
 // order), "plane k" for the extra ones.
 std::string planeName(int planeIndex, int boxPlaneCount);
 
+// "free", "colliding (bounce)" or "static contact", as the inspector says it.
+const char* contactStateName(physics::ContactState state);
+
 // The other sphere of a contact of `selected`; -1 for a plane.
 int contactPartner(const physics::ContactEvent& event, int selected);
 

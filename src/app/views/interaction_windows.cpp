@@ -42,15 +42,6 @@ void place(const Placement& placement) {
     ImGui::SetNextWindowBgAlpha(kBackgroundAlpha);
 }
 
-const char* stateName(physics::ContactState state) {
-    switch (state) {
-        case physics::ContactState::Free: return "free";
-        case physics::ContactState::Colliding: return "colliding (bounce)";
-        case physics::ContactState::Static: return "static contact";
-    }
-    return "";
-}
-
 // One vector field: three numbers; true when edited (the value is in `v`). An edit counts
 // when Enter is pressed: applied keystroke by keystroke, "150" passed through 15 on its way,
 // and a refused value left its first digits behind.
@@ -177,7 +168,7 @@ float drawInspector(const Placement& placement, const physics::World& world, int
     const physics::ContactState contact =
         i < world.contactState.size() ? world.contactState[i] : physics::ContactState::Free;
     const glm::dvec3& v = world.velocity[i];
-    ImGui::Text("|v| = %.3f m/s, %s", std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z), stateName(contact));
+    ImGui::Text("|v| = %.3f m/s, %s", std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z), contactStateName(contact));
     if (graphLevel >= 0) {
         ImGui::Text("contact graph level %d%s", graphLevel, graphLevel == 0 ? " (touches a plane)" : "");
         tooltip("Slide 14: level 0 touches a plane, level k + 1 touches level k and none lower. Shock "
