@@ -13,6 +13,7 @@
 
 #include <emscripten/emscripten.h>
 #include <emscripten/html5.h>
+#include <glm/geometric.hpp>
 #include <glad/gl.h>
 #include "app/run/comparison.h"
 #include "app/run/interaction.h"
@@ -109,6 +110,30 @@ struct Column {
 Column columnOf(int k, int runs, int width) {
     const int each = std::max(1, (width - kViewGap * (runs - 1)) / runs);
     return {k * (each + kViewGap), each};
+}
+
+// A point of the canvas, (x, y) px from its top-left corner (width x height px): the
+// view whose column holds it (or `view`, while a drag keeps to its own) and the ray
+// from the camera through it.
+struct CanvasPoint {
+    int view;
+    render::Ray ray;
+};
+CanvasPoint canvasPoint(const LiveView& v, float x, float y, int width, int height, int view = -1) {
+    const int runs = v.session->runCount();
+    int k = std::clamp(view, 0, runs - 1);
+    if (view < 0) {
+        while (k + 1 < runs && x >= float(columnOf(k + 1, runs, width).x)) ++k;
+    }
+    const Column column = columnOf(k, runs, width);
+    return {k, v.camera.rayThroughPixel(glm::vec2(x - float(column.x), y), glm::vec2(float(column.width), float(height)))};
+}
+
+// Selects sphere `index` (-1: none) and explains its first latest contact.
+void selectSphere(LiveView& v, int index) {
+    v.session->select(index);
+    v.look.selectedSphere = index;
+    v.explainIndex = 0;
 }
 
 // Side by side's views: {"views": [{"lines": [label, readouts...]}, ...]} (none when off).
@@ -263,16 +288,67 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_compare(const char* overrides) {
 EMSCRIPTEN_KEEPALIVE const char* spheres_pick(float x, float y, int width, int height) {
     LiveView& v = live();
     if (!v.session) return answer({{"selected", -1}});
-    const int runs = v.session->runCount();
-    int k = 0;
-    while (k + 1 < runs && x >= float(columnOf(k + 1, runs, width).x)) ++k;
-    const Column column = columnOf(k, runs, width);
-    const int hit = app::pickSphere(v.session->run(k).world(), v.camera, glm::vec2(x - float(column.x), y),
-                                    glm::vec2(float(column.width), float(height)));
-    v.session->select(hit);
-    v.look.selectedSphere = hit;
-    v.explainIndex = 0;
+    const CanvasPoint at = canvasPoint(v, x, y, width, height);
+    const int hit = app::pickSphere(v.session->run(at.view).world(), at.ray);
+    selectSphere(v, hit);
     return answer({{"selected", hit}});
+}
+
+// The mouse grabs the sphere under (x, y) px (Ctrl+drag, as in the window; `seconds`: the
+// page's clock): it follows the pointer in the plane through its centre facing the camera,
+// in every run, until spheres_throw. {"grabbed": its number, or -1 where none is there}.
+EMSCRIPTEN_KEEPALIVE const char* spheres_grab(float x, float y, int width, int height, double seconds) {
+    LiveView& v = live();
+    if (!v.session) return answer({{"grabbed", -1}});
+    const CanvasPoint at = canvasPoint(v, x, y, width, height);
+    const int hit = app::pickSphere(v.session->run(at.view).world(), at.ray);
+    if (hit < 0 || !v.session->beginDrag(at.view, std::size_t(hit), at.ray, v.camera.forward(), seconds)) {
+        return answer({{"grabbed", -1}});
+    }
+    selectSphere(v, hit);
+    return answer({{"grabbed", hit}});
+}
+
+// The grabbed sphere follows the pointer at (x, y) px, kept inside the box.
+EMSCRIPTEN_KEEPALIVE void spheres_drag(float x, float y, int width, int height, double seconds) {
+    LiveView& v = live();
+    if (!v.session || !v.session->dragging()) return;
+    v.session->dragTo(canvasPoint(v, x, y, width, height, v.session->dragView()).ray, seconds);
+}
+
+// The grabbed sphere is let go with the pointer's velocity of the last 0.1 s:
+// {"thrown": its number (-1: none was grabbed), "speed" (m/s)}.
+EMSCRIPTEN_KEEPALIVE const char* spheres_throw() {
+    LiveView& v = live();
+    if (!v.session || !v.session->dragging()) return answer({{"thrown", -1}, {"speed", 0.0}});
+    const glm::dvec3 velocity = v.session->endDrag();
+    return answer({{"thrown", v.session->selected()}, {"speed", glm::length(velocity)}});
+}
+
+// A new sphere shot at `speed` (m/s) through the pointer at (x, y) px, or along the
+// camera's view where x < 0 (the window's Shoot and F), in every run, selected; the
+// world's last sphere gives its size. {"shot": its number} or {"error": why not}.
+EMSCRIPTEN_KEEPALIVE const char* spheres_shoot(float x, float y, int width, int height, double speed) {
+    LiveView& v = live();
+    if (!v.session) return answer({{"error", "no scene is open"}});
+    const render::Ray aim =
+        x < 0.0f ? render::Ray{v.camera.position(), v.camera.forward()} : canvasPoint(v, x, y, width, height).ray;
+    if (!(speed >= 0.0 && speed <= app::kEditSpeed)) {
+        return answer({{"error", "a shot's speed is from 0 to " + std::to_string(int(app::kEditSpeed)) + " m/s"}});
+    }
+    if (const std::string refusal = v.session->shoot(aim, speed); !refusal.empty()) return answer({{"error", refusal}});
+    selectSphere(v, v.session->selected());
+    return answer({{"shot", v.session->selected()}});
+}
+
+// The selected sphere's numbers, as the window's inspector edits them: p (m), v (m/s),
+// r (m), m (kg), in every run. "" or why refused (the spheres stay as they were).
+EMSCRIPTEN_KEEPALIVE const char* spheres_edit(double px, double py, double pz, double vx, double vy, double vz,
+                                              double r, double m) {
+    LiveView& v = live();
+    static std::string refusal;
+    refusal = !v.session ? "no scene is open" : v.session->editSelected({{px, py, pz}, {vx, vy, vz}, r, m});
+    return refusal.c_str();
 }
 
 // Back to frame `index` of the timeline (0: the oldest kept), every run: the run pauses
@@ -293,9 +369,7 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_select(int index) {
         return (refusal = "select=" + std::to_string(index) + ": the scene has " + std::to_string(count) +
                           " spheres, numbered from 0").c_str();
     }
-    v.session->select(index);
-    v.look.selectedSphere = index;
-    v.explainIndex = 0;
+    selectSphere(v, index);
     return refusal.c_str();
 }
 

@@ -5,7 +5,8 @@
 # (its <pre id="state">) with `spheres simulate` on the same scene, settings and steps:
 # the same state hash, bit for bit, and the same energies. A link with a bad scene or
 # setting must say why. The live view takes a link's settings, and its screenshot
-# (SwiftShader's WebGL 2) shows the panel and the spheres. Exit 77 (ctest: skipped)
+# (SwiftShader's WebGL 2) shows the panel and the spheres; driven with real mouse and
+# key events, it answers them as the window does. Exit 77 (ctest: skipped)
 # without emscripten or chromium.
 # Usage: test_page.sh SPHERES_EXECUTABLE SOURCE_DIR BUILD_DIR
 set -euo pipefail
@@ -82,6 +83,7 @@ scene=cradle&steps=10&beta=7 out of range
 scene=cradle&steps=10&methd=velocity unknown parameter 'methd'
 scene=cradle&steps=abc give a whole number of steps
 scene=pile&steps=1&count=7483 holds only
+scene=cradle&steps=10&compare=order=reversed compare: for the live view
 CASES
 # A browser without WebGL 2: the page says so in one line.
 said=$(timeout 180 chromium --headless=new --no-sandbox --disable-3d-apis --user-data-dir="$profile" \
@@ -239,6 +241,15 @@ if sys.argv[2] == "side":  # the canvas from x = 384 (24rem): two columns, a 4 p
     verdict += " in both views" if both else ", not two views: spheres %.4f and %.4f, gap %.2f" % (left, right, gap)
 print(verdict)
 PY
+
+# The live page driven with real mouse and key events (src/tests/web/drive_page.mjs): a
+# click selects, typed numbers move a sphere, Ctrl+drag throws, F shoots, Esc, ←, P, R.
+rm -rf "$profile" && mkdir -p "$profile"
+if ! timeout 200 node "$source/src/tests/web/drive_page.mjs" "http://127.0.0.1:$port/index.html" "$profile"; then
+  echo "the live page, driven: failed (above)"
+  failed=1
+fi
+
 verdict=$(python3 "$looks" "$build/page.png" single)
 echo "live view, screenshot: $verdict"
 [ "$verdict" = "panel and spheres" ] || failed=1

@@ -1,0 +1,181 @@
+// The live page driven as a student drives it, with real mouse and key events in
+// headless Chromium: a click selects a sphere; paused, its numbers typed in the inspector
+// move it (a bad one is refused in one line); Ctrl+drag throws it; F and the Shoot button
+// shoot a sphere, and a shot into another is refused; ← steps back; Esc deselects. Each
+// check prints a line; the exit status is 1 when one fails.
+// Chrome's DevTools protocol over a pipe (--remote-debugging-pipe: fd 3 in, fd 4 out,
+// messages ended by a NUL), since Debian 12's node 18 has no WebSocket.
+// Usage: node drive_page.mjs URL_OF_INDEX_HTML PROFILE_DIR
+import { spawn } from 'node:child_process';
+
+const [page, profile] = process.argv.slice(2);
+const chrome = spawn('chromium', ['--headless=new', '--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader',
+  '--remote-debugging-pipe', '--user-data-dir=' + profile, '--window-size=1280,720', 'about:blank'],
+  { stdio: ['ignore', 'ignore', 'ignore', 'pipe', 'pipe'] });
+const sleep = (ms) => new Promise((resolve) => setTimeout(resolve, ms));
+const giveUp = setTimeout(() => { console.log('the page did not answer within 120 s'); chrome.kill(); process.exit(1); }, 120000);
+
+// ---- the protocol: numbered commands, answered by id
+let nextId = 0, received = Buffer.alloc(0), session;
+const waiting = new Map();
+chrome.stdio[4].on('data', (chunk) => {
+  received = Buffer.concat([received, chunk]);
+  for (let end; (end = received.indexOf(0)) >= 0; received = received.subarray(end + 1)) {
+    const message = JSON.parse(received.subarray(0, end).toString());
+    if (waiting.has(message.id)) { waiting.get(message.id)(message); waiting.delete(message.id); }
+  }
+});
+const send = (method, params = {}) => new Promise((resolve, reject) => {
+  const id = ++nextId;
+  waiting.set(id, (m) => (m.error ? reject(new Error(method + ': ' + m.error.message)) : resolve(m.result)));
+  chrome.stdio[3].write(JSON.stringify({ id, method, params, sessionId: session }) + '\0');
+});
+const js = async (expression) => {
+  const answer = await send('Runtime.evaluate', { expression, returnByValue: true });
+  if (answer.exceptionDetails) throw new Error(expression + ': ' + answer.exceptionDetails.text);
+  return answer.result.value;
+};
+// The run's state as the page exports it ({} until the page has one).
+const state = async () => {
+  const exported = await js("(() => { const e = document.getElementById('state'); return e ? e.textContent : ''; })()");
+  try { return JSON.parse(exported || '{}'); } catch { return {}; }
+};
+const text = (id) => js(`document.getElementById('${id}').textContent`);
+const mouse = (type, x, y, extra = {}) => send('Input.dispatchMouseEvent', { type, x, y, button: 'left', ...extra });
+const click = async (x, y) => {
+  await mouse('mousePressed', x, y, { buttons: 1, clickCount: 1 });
+  await mouse('mouseReleased', x, y, { clickCount: 1 });
+};
+const key = async (key, code, keyCode, modifiers = 0) => {
+  await send('Input.dispatchKeyEvent', { type: 'rawKeyDown', key, code, windowsVirtualKeyCode: keyCode, modifiers });
+  await send('Input.dispatchKeyEvent', { type: 'keyUp', key, code, windowsVirtualKeyCode: keyCode, modifiers });
+};
+// Waits until `test` of the page's state holds (at most `ms`): the frames run on their own clock.
+const until = async (test, ms = 5000) => {
+  for (const start = Date.now(); Date.now() - start < ms; await sleep(50)) {
+    const now = await state();
+    if (test(now)) return now;
+  }
+  return state();
+};
+
+let failed = false;
+const check = (what, ok, detail) => {
+  console.log((ok ? 'ok: ' : 'FAILED: ') + what + (detail ? ' (' + detail + ')' : ''));
+  if (!ok) failed = true;
+};
+
+try {
+  const { targetId } = await send('Target.createTarget', { url: 'about:blank' });
+  ({ sessionId: session } = await send('Target.attachToTarget', { targetId, flatten: true }));
+  await send('Page.navigate', { url: page + '?scene=10_pyramid' });
+  let run = await until((s) => s.time_s > 0.2, 30000);
+  check('the pyramid runs', run.time_s > 0.2, 't = ' + run.time_s);
+
+  // A sphere's point on the screen, from a share `top` of the canvas's height down: the
+  // canvas's points asked, in the page, which sphere is there (spheres_pick, the page's own
+  // click); none stays selected. [x, y, its number] in the canvas's pixels, or null.
+  const canvas = await js("(() => { const b = document.getElementById('view').getBoundingClientRect(); return [b.left, b.top, b.width, b.height]; })()");
+  const findSphere = (top) => js(`(() => {
+    const [w, h] = [${canvas[2]}, ${canvas[3]}];
+    for (let y = h * ${top}; y < h * 0.9; y += 12) for (let x = w * 0.3; x < w * 0.7; x += 12) {
+      const hit = JSON.parse(call('spheres_pick', 'string', ['number', 'number', 'number', 'number'], [x, y, w, h])).selected;
+      if (hit >= 0) { call('spheres_select', 'string', ['number'], [-1]); return [x, y, hit]; }
+    }
+    return null; })()`);
+  const target = await findSphere(0.3);
+  check('a sphere is in the view', target !== null);
+  const [x, y] = [canvas[0] + target[0], canvas[1] + target[1]];
+
+  // A click selects it: the inspector shows its numbers.
+  await click(x, y);
+  run = await until((s) => s.selected && s.selected.index === target[2]);
+  check('a click selects sphere #' + target[2], run.selected && run.selected.index === target[2],
+        'selected ' + JSON.stringify(run.selected && run.selected.index));
+  check('its inspector is shown', !(await js("document.getElementById('inspector').hidden")) &&
+        (await text('inspected')) === 'Sphere #' + target[2]);
+
+  // Paused, its numbers are fields: a new height typed with Enter moves it in the run; a
+  // radius the box cannot hold is refused in one line, and the sphere keeps its own.
+  await key('p', 'KeyP', 80);
+  run = await until((s) => s.paused);
+  const fieldsShown = !(await js("document.getElementById('sphere-fields').hidden"));
+  check('P pauses, and its numbers are fields', run.paused && fieldsShown);
+  const type = async (name, value) => {
+    await js(`(() => { const f = document.getElementById('sphere-fields').elements['${name}']; f.focus(); f.select(); })()`);
+    await send('Input.insertText', { text: value });
+    await key('Enter', 'Enter', 13);
+  };
+  await type('pz', '0.9');
+  run = await until((s) => Math.abs(s.selected.p[2] - 0.9) < 1e-12);
+  check('p z typed 0.9 moves it', Math.abs(run.selected.p[2] - 0.9) < 1e-12, 'p = ' + JSON.stringify(run.selected.p));
+  const radius = run.selected.r;
+  await type('r', '9');
+  await sleep(200);
+  const refused = await text('refusal');
+  run = await state();
+  check('r = 9 m is refused in one line', refused.length > 0 && !refused.includes('\n') && run.selected.r === radius, refused);
+
+  // Esc backs out one level at a time: out of the field, then the selection.
+  await key('Escape', 'Escape', 27);
+  await sleep(200);
+  run = await state();
+  check('Esc leaves the field first', run.selected && !(await js("document.activeElement.closest('#sphere-fields') !== null")));
+  await key('Escape', 'Escape', 27);
+  run = await until((s) => !s.selected);
+  check('then Esc deselects', !run.selected);
+
+  // Ctrl+drag (still paused, so that the sphere found stays where it is): the sphere follows
+  // the mouse and is thrown at the mouse's speed.
+  const grab = await findSphere(0.2);
+  const [gx, gy] = [canvas[0] + grab[0], canvas[1] + grab[1]];
+  const ctrl = 2;  // the protocol's modifier bit for Ctrl
+  await mouse('mousePressed', gx, gy, { buttons: 1, clickCount: 1, modifiers: ctrl });
+  for (let k = 1; k <= 8; ++k) {
+    await sleep(16);
+    await mouse('mouseMoved', gx + 12 * k, gy - 6 * k, { buttons: 1, modifiers: ctrl });
+  }
+  await mouse('mouseReleased', gx + 96, gy - 48, { clickCount: 1, modifiers: ctrl });
+  const thrown = await text('said');
+  const speed = Number((thrown.match(/thrown at ([0-9.]+) m\/s/) || [])[1]);
+  check('Ctrl+drag throws sphere #' + grab[2], thrown.startsWith('sphere #' + grab[2] + ' thrown at') && speed > 0.1, thrown);
+  run = await state();
+  check('the thrown sphere is selected', run.selected && run.selected.index === grab[2]);
+
+  // Shooting: the button along the view, and F through the mouse pointer, each add a
+  // sphere; paused, a second shot through the pointer would overlap the first and is
+  // refused in one line.
+  const before = (await state()).spheres;
+  await js("document.getElementById('shoot').click()");
+  run = await until((s) => s.spheres === before + 1);
+  const along = await text('said');
+  check('the Shoot button shoots along the view', run.spheres === before + 1 && along.startsWith('shot sphere #' + before), along);
+  await mouse('mouseMoved', canvas[0] + canvas[2] * 0.3, canvas[1] + canvas[3] * 0.3);
+  await key('f', 'KeyF', 70);
+  run = await until((s) => s.spheres === before + 2);
+  const shot = await text('said');
+  check('F shoots a sphere through the pointer', run.spheres === before + 2 && shot.startsWith('shot sphere #' + (before + 1)), shot);
+  await key('f', 'KeyF', 70);
+  await sleep(200);
+  const second = await text('refusal');
+  run = await state();
+  check('a shot into the last one is refused in one line',
+        run.spheres === before + 2 && second.startsWith('cannot shoot:') && !second.includes('\n'), second);
+
+  // ← steps back one kept frame (the shots were kept).
+  const cursor = run.timeline.cursor;
+  await key('ArrowLeft', 'ArrowLeft', 37);
+  run = await until((s) => s.timeline.cursor === cursor - 1);
+  check('← steps back a frame', run.timeline.cursor === cursor - 1 && run.paused,
+        'cursor ' + cursor + ' -> ' + run.timeline.cursor);
+
+  // R restarts: the shots are gone, the time is back at the start.
+  await key('r', 'KeyR', 82);
+  run = await until((s) => s.spheres === before);
+  check('R restarts the scene', run.spheres === before && run.time_s < 0.5, run.spheres + ' spheres, t = ' + run.time_s);
+} catch (error) {
+  check('the page answers', false, String(error));
+}
+clearTimeout(giveUp);
+chrome.kill();
+process.exit(failed ? 1 : 0);
