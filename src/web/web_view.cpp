@@ -465,6 +465,13 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_look(const char* name, const char* valu
     return refusal.c_str();
 }
 
+// The overlays' names, in the window's order (what spheres_look and a link's overlay= take).
+EMSCRIPTEN_KEEPALIVE const char* spheres_overlays() {
+    Json names = Json::array();
+    for (const char* name : app::kOverlayNames) names.push_back(name);
+    return answer(names);
+}
+
 // The run now: {"time_s", "steps", "spheres", "hash", "paused" (by the page, or by an
 // alarm: a value not finite), "kinetic_J", "potential_J", "penetration_r",
 // "behind_real_time", "views" (side by side: each view's label lines, viewsOf), "selected"
