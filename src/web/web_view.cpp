@@ -204,6 +204,27 @@ Json timelineOf(const app::Session& session) {
             {"to_s", timeline.at(timeline.size() - 1).time}};
 }
 
+// The scene's text as this run measured it, as the window's "The text, measured":
+// {"watched" (claims in all), "interrupted" (changed by hand: stopped until a restart),
+// "lines": [{"holds", "says", "measured"}] (those judged so far)}.
+Json claimsOf(const app::Simulation& run) {
+    Json lines = Json::array();
+    for (const scenes::ClaimCheck& check : run.measuredClaims()) {
+        lines.push_back({{"holds", check.holds}, {"says", check.claim->says}, {"measured", check.measured}});
+    }
+    return {{"watched", run.claimsWatched()}, {"interrupted", run.claimsInterrupted()}, {"lines", lines}};
+}
+
+// The invariant alarms, most serious first, as the window's panel shows them:
+// [{"text", "hint", "lit" (recent; else shown dimmed until a restart)}].
+Json alarmsOf(const app::Simulation& run) {
+    Json alarms = Json::array();
+    for (const app::AlarmLine& line : run.alarms().lines(run.world().time)) {
+        alarms.push_back({{"text", line.text}, {"hint", line.hint}, {"lit", line.lit}});
+    }
+    return alarms;
+}
+
 }  // namespace
 
 extern "C" {
@@ -475,7 +496,8 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_overlays() {
 // The run now: {"time_s", "steps", "spheres", "hash", "paused" (by the page, or by an
 // alarm: a value not finite), "kinetic_J", "potential_J", "penetration_r",
 // "behind_real_time", "views" (side by side: each view's label lines, viewsOf), "selected"
-// (selectedOf), "timeline" (timelineOf), "look": {"color_by", "overlays"}}.
+// (selectedOf), "timeline" (timelineOf), "claims" (claimsOf), "alarms" (alarmsOf), "look":
+// {"color_by", "overlays"}}.
 EMSCRIPTEN_KEEPALIVE const char* spheres_state() {
     LiveView& v = live();
     if (!v.simulation || !v.session) return answer(Json::object());
@@ -493,6 +515,8 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_state() {
                    {"views", viewsOf(v)},
                    {"selected", selectedOf(v)},
                    {"timeline", timelineOf(*v.session)},
+                   {"claims", claimsOf(*v.simulation)},
+                   {"alarms", alarmsOf(*v.simulation)},
                    {"look", {{"color_by", kColorings[v.look.colorBy]},
                              {"overlays", app::overlayNames(app::overlayFlags(v.look))}}}});
 }

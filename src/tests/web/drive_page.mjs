@@ -1,8 +1,9 @@
 // The live page driven as a student drives it, with real mouse and key events in
 // headless Chromium: a click selects a sphere; paused, its numbers typed in the inspector
 // move it (a bad one is refused in one line); Ctrl+drag throws it; F and the Shoot button
-// shoot a sphere, and a shot into another is refused; ← steps back; Esc deselects. Each
-// check prints a line; the exit status is 1 when one fails.
+// shoot a sphere, and a shot into another is refused; ← steps back; Esc deselects; the
+// panel shows the scene's text measured and an invariant alarm. Each check prints a line;
+// the exit status is 1 when one fails.
 // Chrome's DevTools protocol over a pipe (--remote-debugging-pipe: fd 3 in, fd 4 out,
 // messages ended by a NUL), since Debian 12's node 18 has no WebSocket.
 // Usage: node drive_page.mjs URL_OF_INDEX_HTML PROFILE_DIR
@@ -173,6 +174,20 @@ try {
   await key('r', 'KeyR', 82);
   run = await until((s) => s.spheres === before);
   check('R restarts the scene', run.spheres === before && run.time_s < 0.5, run.spheres + ' spheres, t = ' + run.time_s);
+
+  // What the panel tells beside the view, as the desktop's: the scene's text measured (the
+  // cradle's seven claims, none failed), and an invariant alarm, lit, with why under it
+  // (the velocity-based bounce at beta = 1 gains energy at its first bounce, t = 0.55 s).
+  await send('Page.navigate', { url: page + '?scene=08_newtons_cradle' });
+  run = await until((s) => s.claims && s.claims.lines.length === 7, 30000);
+  const claims = await text('claims-count');
+  check('the cradle\'s text, measured: 7 claims held', claims === 'The text, measured: 7 ✓ 0 ✗ of 7' &&
+        !(await js("document.getElementById('claims').hidden")), claims);
+  await send('Page.navigate', { url: page + '?scene=02_bounce_projection&method=velocity&beta=1' });
+  run = await until((s) => s.alarms && s.alarms.length > 0, 30000);
+  const alarm = await js("(() => { const a = document.querySelector('#alarms .lit'); return a ? [...a.children].map((line) => line.textContent) : null; })()");
+  check('energy created: an alarm, lit, with why', alarm !== null && alarm[0].startsWith('ENERGY CREATED') &&
+        alarm[1].startsWith('velocity-based bounce'), JSON.stringify(alarm));
 } catch (error) {
   check('the page answers', false, String(error));
 }

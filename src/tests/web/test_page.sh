@@ -243,7 +243,8 @@ print(verdict)
 PY
 
 # The live page driven with real mouse and key events (src/tests/web/drive_page.mjs): a
-# click selects, typed numbers move a sphere, Ctrl+drag throws, F shoots, Esc, ←, P, R.
+# click selects, typed numbers move a sphere, Ctrl+drag throws, F shoots, Esc, ←, P, R;
+# the scene's text measured, and an invariant alarm.
 rm -rf "$profile" && mkdir -p "$profile"
 if ! timeout 200 node "$source/src/tests/web/drive_page.mjs" "http://127.0.0.1:$port/index.html" "$profile"; then
   echo "the live page, driven: failed (above)"
