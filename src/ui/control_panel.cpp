@@ -13,7 +13,6 @@
 namespace ui {
 namespace {
 
-constexpr double kTimeScaleRange[2] = {0.01, 4.0};
 const ImVec4 kAlarmLit{1.0f, 0.30f, 0.25f, 1.0f};     // red, readable on the dark panel
 const ImVec4 kAlarmDimmed{0.72f, 0.42f, 0.40f, 1.0f};  // fired earlier
 const ImVec4 kHintColor{0.85f, 0.78f, 0.70f, 1.0f};

@@ -20,6 +20,8 @@ namespace ui {
 
 // The presentation layout's type: this times the screen's UI scale.
 constexpr float kPresentScale = 1.5f;
+// The time scale's range (simulated seconds per real second): slow motion to 4x.
+constexpr double kTimeScaleRange[2] = {0.01, 4.0};
 
 // The panel's own settings, kept between frames.
 struct PanelState {

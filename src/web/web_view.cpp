@@ -230,9 +230,9 @@ Json alarmsOf(const app::Simulation& run) {
 extern "C" {
 
 // Opens the scene (as --scene names it) with `settings` ("name=value" lines) in the
-// canvas of width x height px: {"title", "slide", "description", "compare" (the
-// overrides the scene opens side by side with, as the desktop does; "" none)} or
-// {"error"}.
+// canvas of width x height px: {"title", "time_scale" (its range), "slide", "description",
+// "compare" (the overrides the scene opens side by side with, as the desktop does; ""
+// none)} or {"error"}.
 EMSCRIPTEN_KEEPALIVE const char* spheres_open(const char* name, const char* settings, int width, int height) {
     LiveView& v = live();
     try {
@@ -255,6 +255,7 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_open(const char* name, const char* sett
         v.simulation = std::move(simulation);
         fitCamera(columnOf(0, v.session->runCount(), width).width, height);
         return answer({{"title", scenes::withCount(s.title, s)},
+                       {"time_scale", {ui::kTimeScaleRange[0], ui::kTimeScaleRange[1]}},
                        {"slide", s.slide},
                        {"description", scenes::describedText(s)},
                        {"compare", app::joinedOverrides(s.compare)}});
@@ -406,12 +407,45 @@ EMSCRIPTEN_KEEPALIVE void spheres_explain(int step) {
 EMSCRIPTEN_KEEPALIVE void spheres_orbit(float dx, float dy) { live().camera.orbit(dx, dy); }
 EMSCRIPTEN_KEEPALIVE void spheres_zoom(float steps) { live().camera.zoom(steps); }
 
-// Pause or run; restart from the scene's initial state.
+// Pause or run; one time step h (every run, paused or not); restart from the scene's
+// initial state.
 EMSCRIPTEN_KEEPALIVE void spheres_pause(int paused) {
     if (live().simulation) live().simulation->paused = paused != 0;
 }
+EMSCRIPTEN_KEEPALIVE void spheres_step() {
+    if (live().session) live().session->singleStep();
+}
 EMSCRIPTEN_KEEPALIVE void spheres_restart() {
     if (live().session) live().session->restart();
+}
+
+// Simulated seconds per real second (below 1: slow motion; h does not change), within
+// ui::kTimeScaleRange: "" or why refused (the scale stays).
+EMSCRIPTEN_KEEPALIVE const char* spheres_time_scale(double scale) {
+    LiveView& v = live();
+    static std::string refusal;
+    refusal.clear();
+    if (!v.simulation) return (refusal = "no scene is open").c_str();
+    if (!(scale >= ui::kTimeScaleRange[0] && scale <= ui::kTimeScaleRange[1])) {
+        char text[96];
+        std::snprintf(text, sizeof text, "time scale %g: from %g to %g", scale, ui::kTimeScaleRange[0], ui::kTimeScaleRange[1]);
+        return (refusal = text).c_str();
+    }
+    v.simulation->timeScale = scale;
+    return refusal.c_str();
+}
+
+// The readouts' last samples, as the window's plots (app::History, the first run's):
+// {"times": [s, oldest first], "series": [{"name" (with its unit), "values"}]}.
+EMSCRIPTEN_KEEPALIVE const char* spheres_plots() {
+    LiveView& v = live();
+    Json series = Json::array();
+    if (!v.simulation) return answer({{"times", Json::array()}, {"series", series}});
+    const app::History& history = v.simulation->history();
+    for (int s = 0; s < int(app::Series::Count); ++s) {
+        series.push_back({{"name", app::History::name(app::Series(s))}, {"values", history.values(app::Series(s))}});
+    }
+    return answer({{"times", history.times()}, {"series", series}});
 }
 
 // One parameter, as --set names it and through the panel's checks: "" or why refused
@@ -494,7 +528,7 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_overlays() {
 }
 
 // The run now: {"time_s", "steps", "spheres", "hash", "paused" (by the page, or by an
-// alarm: a value not finite), "kinetic_J", "potential_J", "penetration_r",
+// alarm: a value not finite), "time_scale", "kinetic_J", "potential_J", "penetration_r",
 // "behind_real_time", "views" (side by side: each view's label lines, viewsOf), "selected"
 // (selectedOf), "timeline" (timelineOf), "claims" (claimsOf), "alarms" (alarmsOf), "look":
 // {"color_by", "overlays"}}.
@@ -508,6 +542,7 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_state() {
                    {"spheres", world.size()},
                    {"hash", web::hexHash(d.hash)},
                    {"paused", v.simulation->paused},
+                   {"time_scale", v.simulation->timeScale},
                    {"kinetic_J", d.kinetic},
                    {"potential_J", d.potential},
                    {"penetration_r", d.maxPenetration},

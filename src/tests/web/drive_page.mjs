@@ -1,8 +1,9 @@
 // The live page driven as a student drives it, with real mouse and key events in
 // headless Chromium: a click selects a sphere; paused, its numbers typed in the inspector
 // move it (a bad one is refused in one line); Ctrl+drag throws it; F and the Shoot button
-// shoot a sphere, and a shot into another is refused; ← steps back; Esc deselects; the
-// panel shows the scene's text measured and an invariant alarm. Each check prints a line;
+// shoot a sphere, and a shot into another is refused; ← steps back; Esc deselects; P, O,
+// R; the time scale; the plots; the panel shows the scene's text measured and an
+// invariant alarm. Each check prints a line;
 // the exit status is 1 when one fails.
 // Chrome's DevTools protocol over a pipe (--remote-debugging-pipe: fd 3 in, fd 4 out,
 // messages ended by a NUL), since Debian 12's node 18 has no WebSocket.
@@ -174,6 +175,26 @@ try {
   await key('r', 'KeyR', 82);
   run = await until((s) => s.spheres === before);
   check('R restarts the scene', run.spheres === before && run.time_s < 0.5, run.spheres + ' spheres, t = ' + run.time_s);
+
+  // O (and Step) runs one time step h, paused; the time scale slows the run down; the
+  // plots, unfolded, draw every readout against time.
+  const h = JSON.parse(await js("call('spheres_parameters', 'string', [], [])")).find((p) => p.name === 'h').value;
+  const t0 = (await state()).time_s;
+  await key('o', 'KeyO', 79);
+  run = await until((s) => s.time_s > t0);
+  check('O runs one time step h and pauses', Math.abs(run.time_s - t0 - h) < 1e-9 && run.paused, 't ' + t0 + ' -> ' + run.time_s);
+  await js(`(() => { const s = document.getElementById('time-scale'); s.value = 1000 * Math.log(0.25 / 0.01) / Math.log(4 / 0.01);
+                     s.dispatchEvent(new Event('input')); })()`);
+  run = await until((s) => s.time_scale !== 1);
+  check('the time scale slider slows the run to 0.25 x', run.time_scale === 0.25 && (await text('time-scale-shown')) === '0.25 x',
+        run.time_scale + ', shown ' + (await text('time-scale-shown')));
+  await key('p', 'KeyP', 80);
+  await js("document.getElementById('plots').open = true");
+  await until((s) => s.time_s > t0 + 0.2);
+  await sleep(300);
+  const plots = await js("[...document.getElementById('plot-list').children].map((e) => e.tagName + ':' + e.textContent)");
+  check('the plots: seven readouts against time', plots.length === 14 && plots[0].startsWith('DIV:kinetic energy (J): ') &&
+        plots.filter((e) => e.startsWith('CANVAS')).length === 7, plots.filter((e) => e.startsWith('DIV')).join('; '));
 
   // What the panel tells beside the view, as the desktop's: the scene's text measured (the
   // cradle's seven claims, none failed), and an invariant alarm, lit, with why under it
