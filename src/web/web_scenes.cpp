@@ -1,6 +1,7 @@
 #include "web/web_scenes.h"
 
 #include <cstdio>
+#include <filesystem>
 #include <sstream>
 #include <stdexcept>
 
@@ -20,6 +21,11 @@ std::string hexHash(std::uint64_t hash) {
     char text[17];
     std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(hash));
     return text;
+}
+
+std::string presetName(const std::string& name) {
+    std::string why;
+    return std::filesystem::path(scenes::matchPreset(name, why)).stem().string();
 }
 
 scenes::Scene sceneWithSettings(const std::string& name, const std::string& settings) {

@@ -18,6 +18,9 @@ const char* answer(const Json& json);
 // A state hash as the desktop prints it: 16 hexadecimal digits.
 std::string hexHash(std::uint64_t hash);
 
+// The preset that `name` names, as the preset list names it ("cradle" -> "08_newtons_cradle").
+std::string presetName(const std::string& name);
+
 // The scene `name` with `settings`, one "name=value" per line; throws
 // std::runtime_error saying what is wrong (a scene error, a refused setting).
 scenes::Scene sceneWithSettings(const std::string& name, const std::string& settings);

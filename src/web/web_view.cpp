@@ -6,6 +6,7 @@
 // page makes its controls from the parameter table (spheres_parameters) and calls these
 // entry points.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <iterator>
 #include <memory>
@@ -26,6 +27,7 @@
 #include "render/camera.h"
 #include "render/frame_snapshot.h"
 #include "render/renderer.h"
+#include "scenes/overrides.h"
 #include "scenes/parameters.h"
 #include "scenes/scene.h"
 #include "ui/control_panel.h"
@@ -119,6 +121,7 @@ struct CanvasPoint {
     int view;
     render::Ray ray;
 };
+bool onCanvas(float x, float y) { return std::isfinite(x) && std::isfinite(y); }
 CanvasPoint canvasPoint(const LiveView& v, float x, float y, int width, int height, int view = -1) {
     const int runs = v.session->runCount();
     int k = std::clamp(view, 0, runs - 1);
@@ -230,9 +233,10 @@ Json alarmsOf(const app::Simulation& run) {
 extern "C" {
 
 // Opens the scene (as --scene names it) with `settings` ("name=value" lines) in the
-// canvas of width x height px: {"title", "time_scale" (its range), "slide", "description",
-// "compare" (the overrides the scene opens side by side with, as the desktop does; ""
-// none)} or {"error"}.
+// canvas of width x height px: {"title", "preset" (its name in the preset list), "sliders"
+// (those its text names: the presentation layout's), "time_scale" (its range), "slide",
+// "description", "compare" (the overrides the scene opens side by side with, as the
+// desktop does; "" none)} or {"error"}.
 EMSCRIPTEN_KEEPALIVE const char* spheres_open(const char* name, const char* settings, int width, int height) {
     LiveView& v = live();
     try {
@@ -255,6 +259,8 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_open(const char* name, const char* sett
         v.simulation = std::move(simulation);
         fitCamera(columnOf(0, v.session->runCount(), width).width, height);
         return answer({{"title", scenes::withCount(s.title, s)},
+                       {"preset", web::presetName(name)},
+                       {"sliders", scenes::slidersToMove(s)},
                        {"time_scale", {ui::kTimeScaleRange[0], ui::kTimeScaleRange[1]}},
                        {"slide", s.slide},
                        {"description", scenes::describedText(s)},
@@ -309,7 +315,7 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_compare(const char* overrides) {
 // sphere under it in the view there, or none. {"selected": its number or -1}.
 EMSCRIPTEN_KEEPALIVE const char* spheres_pick(float x, float y, int width, int height) {
     LiveView& v = live();
-    if (!v.session) return answer({{"selected", -1}});
+    if (!v.session || !onCanvas(x, y)) return answer({{"selected", -1}});
     const CanvasPoint at = canvasPoint(v, x, y, width, height);
     const int hit = app::pickSphere(v.session->run(at.view).world(), at.ray);
     selectSphere(v, hit);
@@ -321,7 +327,7 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_pick(float x, float y, int width, int h
 // in every run, until spheres_throw. {"grabbed": its number, or -1 where none is there}.
 EMSCRIPTEN_KEEPALIVE const char* spheres_grab(float x, float y, int width, int height, double seconds) {
     LiveView& v = live();
-    if (!v.session) return answer({{"grabbed", -1}});
+    if (!v.session || !onCanvas(x, y)) return answer({{"grabbed", -1}});
     const CanvasPoint at = canvasPoint(v, x, y, width, height);
     const int hit = app::pickSphere(v.session->run(at.view).world(), at.ray);
     if (hit < 0 || !v.session->beginDrag(at.view, std::size_t(hit), at.ray, v.camera.forward(), seconds)) {
@@ -334,7 +340,7 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_grab(float x, float y, int width, int h
 // The grabbed sphere follows the pointer at (x, y) px, kept inside the box.
 EMSCRIPTEN_KEEPALIVE void spheres_drag(float x, float y, int width, int height, double seconds) {
     LiveView& v = live();
-    if (!v.session || !v.session->dragging()) return;
+    if (!v.session || !v.session->dragging() || !onCanvas(x, y)) return;
     v.session->dragTo(canvasPoint(v, x, y, width, height, v.session->dragView()).ray, seconds);
 }
 
@@ -343,8 +349,9 @@ EMSCRIPTEN_KEEPALIVE void spheres_drag(float x, float y, int width, int height, 
 EMSCRIPTEN_KEEPALIVE const char* spheres_throw() {
     LiveView& v = live();
     if (!v.session || !v.session->dragging()) return answer({{"thrown", -1}, {"speed", 0.0}});
+    const int sphere = v.session->draggedSphere();
     const glm::dvec3 velocity = v.session->endDrag();
-    return answer({{"thrown", v.session->selected()}, {"speed", glm::length(velocity)}});
+    return answer({{"thrown", sphere}, {"speed", glm::length(velocity)}});
 }
 
 // A new sphere shot at `speed` (m/s) through the pointer at (x, y) px, or along the
@@ -353,6 +360,7 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_throw() {
 EMSCRIPTEN_KEEPALIVE const char* spheres_shoot(float x, float y, int width, int height, double speed) {
     LiveView& v = live();
     if (!v.session) return answer({{"error", "no scene is open"}});
+    if (!onCanvas(x, y)) return answer({{"error", "cannot shoot: the pointer is not on the view"}});
     const render::Ray aim =
         x < 0.0f ? render::Ray{v.camera.position(), v.camera.forward()} : canvasPoint(v, x, y, width, height).ray;
     if (!(speed >= 0.0 && speed <= app::kEditSpeed)) {

@@ -120,6 +120,7 @@ std::optional<glm::dvec3> SphereDrag::move(const physics::World& world, const re
     if (t <= 0.0) return std::nullopt;  // the plane is behind the eye
     const glm::dvec3 centre = keepInsideBox(world, glm::dvec3(ray.origin) + t * direction + grabOffset_,
                                             world.radius[index_]);
+    if (!std::isfinite(centre.x) || !std::isfinite(centre.y) || !std::isfinite(centre.z)) return std::nullopt;  // no mouse
     tracker_.add(time, centre);
     return centre;
 }

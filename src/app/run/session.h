@@ -71,6 +71,7 @@ public:
     glm::dvec3 endDrag();  // m/s, the velocity it was thrown with
     bool dragging() const { return drag_.active(); }
     int dragView() const { return dragView_; }  // the run whose view the drag began in
+    int draggedSphere() const { return drag_.active() ? static_cast<int>(drag_.index()) : -1; }
 
     // A new sphere along `aim` at `speed` (m/s) in every run, selected; "" or why not.
     std::string shoot(const render::Ray& aim, double speed);

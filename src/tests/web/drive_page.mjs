@@ -3,7 +3,7 @@
 // move it (a bad one is refused in one line); Ctrl+drag throws it; F and the Shoot button
 // shoot a sphere, and a shot into another is refused; ← steps back; Esc deselects; P, O,
 // R; the time scale; the plots; the panel shows the scene's text measured and an
-// invariant alarm. Each check prints a line;
+// invariant alarm; the presentation layout, [ ] and Esc. Each check prints a line;
 // the exit status is 1 when one fails.
 // Chrome's DevTools protocol over a pipe (--remote-debugging-pipe: fd 3 in, fd 4 out,
 // messages ended by a NUL), since Debian 12's node 18 has no WebSocket.
@@ -61,6 +61,19 @@ const until = async (test, ms = 5000) => {
   return state();
 };
 
+// Runs `leave` (a function returning a promise) and waits until it has replaced the page's
+// document by a new one, loaded: until then `state` could read the old one's.
+const newDocument = async (leave) => {
+  await js('window.leaving = true');
+  await leave();
+  for (const start = Date.now(); Date.now() - start < 30000; await sleep(50)) {
+    try {
+      if (await js("window.leaving === undefined && document.readyState === 'complete'")) return;
+    } catch { /* between the documents */ }
+  }
+};
+const navigate = (query) => newDocument(() => send('Page.navigate', { url: page + '?' + query }));
+
 let failed = false;
 const check = (what, ok, detail) => {
   console.log((ok ? 'ok: ' : 'FAILED: ') + what + (detail ? ' (' + detail + ')' : ''));
@@ -70,7 +83,7 @@ const check = (what, ok, detail) => {
 try {
   const { targetId } = await send('Target.createTarget', { url: 'about:blank' });
   ({ sessionId: session } = await send('Target.attachToTarget', { targetId, flatten: true }));
-  await send('Page.navigate', { url: page + '?scene=10_pyramid' });
+  await navigate('scene=10_pyramid');
   let run = await until((s) => s.time_s > 0.2, 30000);
   check('the pyramid runs', run.time_s > 0.2, 't = ' + run.time_s);
 
@@ -199,16 +212,35 @@ try {
   // What the panel tells beside the view, as the desktop's: the scene's text measured (the
   // cradle's seven claims, none failed), and an invariant alarm, lit, with why under it
   // (the velocity-based bounce at beta = 1 gains energy at its first bounce, t = 0.55 s).
-  await send('Page.navigate', { url: page + '?scene=08_newtons_cradle' });
+  await navigate('scene=08_newtons_cradle');
   run = await until((s) => s.claims && s.claims.lines.length === 7, 30000);
   const claims = await text('claims-count');
   check('the cradle\'s text, measured: 7 claims held', claims === 'The text, measured: 7 ✓ 0 ✗ of 7' &&
         !(await js("document.getElementById('claims').hidden")), claims);
-  await send('Page.navigate', { url: page + '?scene=02_bounce_projection&method=velocity&beta=1' });
+  await navigate('scene=02_bounce_projection&method=velocity&beta=1');
   run = await until((s) => s.alarms && s.alarms.length > 0, 30000);
   const alarm = await js("(() => { const a = document.querySelector('#alarms .lit'); return a ? [...a.children].map((line) => line.textContent) : null; })()");
   check('energy created: an alarm, lit, with why', alarm !== null && alarm[0].startsWith('ENERGY CREATED') &&
         alarm[1].startsWith('velocity-based bounce'), JSON.stringify(alarm));
+
+  // The presentation layout (a link's &present): large type, the scene's text and only the
+  // sliders it names; ] opens the next preset in it; Esc leaves it.
+  await navigate('scene=09_column&present');
+  await until((s) => s.time_s > 0, 30000);
+  const shown = () => js(`(() => ({ present: document.documentElement.classList.contains('present'),
+    sliders: [...document.querySelectorAll('#controls label')].filter((l) => l.offsetParent).map((l) => l.dataset.named),
+    tools: document.getElementById('tools').offsetParent !== null, title: document.getElementById('title').textContent }))()`);
+  let layout = await shown();
+  check('&present: only the sliders the text names, no tools', layout.present && layout.sliders.length > 0 &&
+        layout.sliders.every((named) => named === 'true') && !layout.tools, JSON.stringify(layout));
+  await newDocument(() => key(']', 'BracketRight', 221));
+  layout = await shown();
+  check('] opens the next preset, still presented', layout.present && layout.title.startsWith('A pyramid'), JSON.stringify(layout));
+  await key('Escape', 'Escape', 27);
+  await sleep(200);
+  layout = await shown();
+  check('Esc leaves the presentation layout: every control', !layout.present && layout.tools &&
+        layout.sliders.includes('false'), JSON.stringify({ ...layout, sliders: layout.sliders.length }));
 } catch (error) {
   check('the page answers', false, String(error));
 }
