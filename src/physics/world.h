@@ -292,7 +292,7 @@ struct Workspace {
         std::uint32_t overflow = 0;  // how many of them found no free colour
     };
     std::vector<ColoringTask> coloringTasks;
-    std::vector<SpherePair> colorSorted;  // scratch: the pairs placed colour by colour
+    std::vector<SpherePair> colorSorted;  // the pairs placed colour by colour; once swapped into visitOrder, the same in index order
     std::vector<std::uint32_t> colorNext;  // scratch: where each colour's next pair goes
     std::vector<double> slabSample;  // m: scratch of the share-out, coordinates that place its slabs
     // The lecture's orders wavefront by wavefront (wavefronts.cpp): wavefront w's pairs at

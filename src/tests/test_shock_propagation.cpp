@@ -169,13 +169,14 @@ TEST(ShockPropagation, TheGraphIsTheSameInEveryPairOrder) {
 
 // The sweep keeps its graph from step to step, updated around the pairs and levels that
 // changed: after every step it is the graph found anew from the same pairs, entry for entry
-// (a 2k pile landing and settling for 2.5 s, in the index and reversed orders, which update
-// it; the shuffled and colored orders find it anew at every step), and the update leaves
+// (a 2k pile landing and settling for 2.5 s, in the index, reversed and colored orders,
+// which update it: colored from the same pairs in index order, which colorPairs swapped out
+// of its visit order; the shuffled order finds it anew at every step), and the update leaves
 // its per-sphere marks cleared for the sweep. It fails when the spheres one level above a
 // sphere that lost its level are not checked again, or when only the spheres with changed
 // pairs get their runs found again.
 TEST(ShockPropagation, TheGraphKeptFromStepToStepIsTheGraphFoundAnew) {
-    for (const char* order : {"order=index", "order=reversed"}) {
+    for (const char* order : {"order=index", "order=reversed", "order=colored"}) {
         scenes::Scene scene = scenes::loadScene(scenes::presetPath("11_pile"));
         for (const std::string setting : {"count=2000", "radius=0.04", "shock=on", order}) {
             ASSERT_EQ(scenes::applySetting(scene, setting), "");
