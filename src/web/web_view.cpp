@@ -536,7 +536,8 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_overlays() {
 }
 
 // The run now: {"time_s", "steps", "spheres", "hash", "paused" (by the page, or by an
-// alarm: a value not finite), "time_scale", "kinetic_J", "potential_J", "penetration_r",
+// alarm: a value not finite), "time_scale", "camera": {"azimuth_rad", "elevation_rad",
+// "distance_m"}, "kinetic_J", "potential_J", "penetration_r",
 // "behind_real_time", "views" (side by side: each view's label lines, viewsOf), "selected"
 // (selectedOf), "timeline" (timelineOf), "claims" (claimsOf), "alarms" (alarmsOf), "look":
 // {"color_by", "overlays"}}.
@@ -551,6 +552,8 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_state() {
                    {"hash", web::hexHash(d.hash)},
                    {"paused", v.simulation->paused},
                    {"time_scale", v.simulation->timeScale},
+                   {"camera", {{"azimuth_rad", v.camera.azimuth}, {"elevation_rad", v.camera.elevation},
+                               {"distance_m", v.camera.distance}}},
                    {"kinetic_J", d.kinetic},
                    {"potential_J", d.potential},
                    {"penetration_r", d.maxPenetration},

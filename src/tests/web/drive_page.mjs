@@ -2,8 +2,8 @@
 // headless Chromium: a click selects a sphere; paused, its numbers typed in the inspector
 // move it (a bad one is refused in one line); Ctrl+drag throws it; F and the Shoot button
 // shoot a sphere, and a shot into another is refused; ← steps back; Esc deselects; P, O,
-// R; the time scale; the plots; the panel shows the scene's text measured and an
-// invariant alarm; the presentation layout, [ ] and Esc. Each check prints a line;
+// R; the time scale; the plots; a phone's fingers (turn, pinch, throw); the panel shows the
+// scene's text measured and an invariant alarm; the presentation layout, [ ] and Esc. Each check prints a line;
 // the exit status is 1 when one fails.
 // Chrome's DevTools protocol over a pipe (--remote-debugging-pipe: fd 3 in, fd 4 out,
 // messages ended by a NUL), since Debian 12's node 18 has no WebSocket.
@@ -208,6 +208,34 @@ try {
   const plots = await js("[...document.getElementById('plot-list').children].map((e) => e.tagName + ':' + e.textContent)");
   check('the plots: seven readouts against time', plots.length === 14 && plots[0].startsWith('DIV:kinetic energy (J): ') &&
         plots.filter((e) => e.startsWith('CANVAS')).length === 7, plots.filter((e) => e.startsWith('DIV')).join('; '));
+
+  // A phone's fingers: one turns the view, two pinch it closer, and with "Drag throws
+  // spheres" ticked one finger on a sphere throws it.
+  await send('Emulation.setTouchEmulationEnabled', { enabled: true, maxTouchPoints: 2 });
+  const touch = (type, points) => send('Input.dispatchTouchEvent', { type, touchPoints: points.map(([x, y], id) => ({ x, y, id })) });
+  const [cx, cy] = [canvas[0] + canvas[2] / 2, canvas[1] + canvas[3] / 2];
+  let camera = (await state()).camera;
+  await touch('touchStart', [[cx, cy]]);
+  for (let k = 1; k <= 5; ++k) await touch('touchMove', [[cx + 20 * k, cy]]);
+  await touch('touchEnd', []);
+  let turned = (await state()).camera;
+  check('one finger turns the view', turned.azimuth_rad !== camera.azimuth_rad && turned.distance_m === camera.distance_m,
+        JSON.stringify([camera, turned]));
+  await touch('touchStart', [[cx - 40, cy], [cx + 40, cy]]);
+  for (let k = 1; k <= 5; ++k) await touch('touchMove', [[cx - 40 - 20 * k, cy], [cx + 40 + 20 * k, cy]]);
+  await touch('touchEnd', []);
+  camera = (await state()).camera;
+  check('two fingers spread: closer', camera.distance_m < 0.9 * turned.distance_m, turned.distance_m + ' -> ' + camera.distance_m);
+  await js("document.getElementById('grab').checked = true");
+  const fingered = await findSphere(0.2);
+  const [fx, fy] = [canvas[0] + fingered[0], canvas[1] + fingered[1]];
+  await touch('touchStart', [[fx, fy]]);
+  for (let k = 1; k <= 6; ++k) { await sleep(16); await touch('touchMove', [[fx + 10 * k, fy - 10 * k]]); }
+  await touch('touchEnd', []);
+  const flung = await text('said');
+  check('ticked, a finger throws sphere #' + fingered[2], flung.startsWith('sphere #' + fingered[2] + ' thrown at'), flung);
+  await js("document.getElementById('grab').checked = false");
+  await send('Emulation.setTouchEmulationEnabled', { enabled: false });
 
   // What the panel tells beside the view, as the desktop's: the scene's text measured (the
   // cradle's seven claims, none failed), and an invariant alarm, lit, with why under it
