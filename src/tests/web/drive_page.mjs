@@ -227,6 +227,8 @@ try {
   camera = (await state()).camera;
   check('two fingers spread: closer', camera.distance_m < 0.9 * turned.distance_m, turned.distance_m + ' -> ' + camera.distance_m);
   await js("document.getElementById('grab').checked = true");
+  if (!(await state()).paused) await key('p', 'KeyP', 80);  // paused: the sphere found stays where it is
+  await until((s) => s.paused);
   const fingered = await findSphere(0.2);
   const [fx, fy] = [canvas[0] + fingered[0], canvas[1] + fingered[1]];
   await touch('touchStart', [[fx, fy]]);
@@ -273,5 +275,7 @@ try {
   check('the page answers', false, String(error));
 }
 clearTimeout(giveUp);
+const closed = new Promise((resolve) => chrome.on('exit', resolve));
 chrome.kill();
+await closed;  // its profile is then free to remove
 process.exit(failed ? 1 : 0);
