@@ -213,6 +213,7 @@ void colorPairs(World& world, int threads) {
         for (const std::uint32_t k : overflow) ws.colorSorted[next[overflowKey]++] = pairs[k];
     }
     ws.visitOrder.swap(ws.colorSorted);
+    ws.colorSortedStep = world.stepCount;  // colorSorted: this step's pairs in index order
 }
 
 }  // namespace physics

@@ -355,7 +355,7 @@ void propagateShock(World& world, const Params& params, StepStats& stats, bool m
     // pairs were found with (a pair it leaves out is then more than half the margin apart).
     std::vector<SpherePair>* pairs = &world.workspace.visitOrder;
     PairOrder order = params.order;
-    if (order == PairOrder::Colored && world.workspace.colorSorted.size() == pairs->size()) {
+    if (order == PairOrder::Colored && world.workspace.colorSortedStep == world.stepCount) {
         // The same pairs in index order (colorPairs swapped them out of visitOrder this
         // step): the graph is the same, and can be kept from step to step (keepContactGraph
         // updates it only from pairs in index order; in colour order it was found anew).

@@ -293,6 +293,7 @@ struct Workspace {
     };
     std::vector<ColoringTask> coloringTasks;
     std::vector<SpherePair> colorSorted;  // the pairs placed colour by colour; once swapped into visitOrder, the same in index order
+    std::uint64_t colorSortedStep = ~std::uint64_t(0);  // the solver step (World::stepCount) whose pairs colorSorted holds
     std::vector<std::uint32_t> colorNext;  // scratch: where each colour's next pair goes
     std::vector<double> slabSample;  // m: scratch of the share-out, coordinates that place its slabs
     // The lecture's orders wavefront by wavefront (wavefronts.cpp): wavefront w's pairs at
