@@ -14,7 +14,7 @@ packages=(
   libglfw3-dev libglm-dev libimgui-dev libstb-dev python3-glad
   libosmesa6-dev libegl-dev libgl-dev
   nlohmann-json3-dev libcli11-dev libgtest-dev
-  fonts-dejavu-core xvfb xauth xdotool
+  fonts-dejavu-core xvfb xauth xdotool x11-xkb-utils
 )
 for option in "$@"; do
   case "$option" in

@@ -179,6 +179,27 @@ TEST(WindowInteraction, F5SwitchesToThePresentationLayoutAndBack) {
     EXPECT_GT(fraction(load(unfolded.string()), 1000, 100, 1270, 700, notSky), 0.8);
 }
 
+// [ and ] open the previous and next preset by the character typed, and the window's title
+// names the scene: ] on the column opens the pyramid, [ the column again; then, on a German
+// layout, AltGr+9 types ] (the pyramid), and the key where a US keyboard has [ types ü
+// there, which opens nothing.
+TEST(WindowInteraction, BracketsOpenTheNeighbourPresetsAsTypedOnAnyLayout) {
+    if (!haveXvfb() || !haveXdotool()) GTEST_SKIP() << "xvfb-run or xdotool not found";
+    const fs::path folder = fs::path(SPHERES_TEST_OUTPUT_DIR) / "window_brackets";
+    const std::string name = "xdotool getwindowname $w >> names.txt\n";
+    const std::string altGr9 = "xdotool keydown ISO_Level3_Shift keydown 9 sleep 0.3 keyup 9 keyup ISO_Level3_Shift sleep 1\n";
+    const int status = runScript(folder, sessionOnTheColumn("--paused", name + press("bracketright") + name + press("bracketleft") +
+                                                                            name + "setxkbmap de\n" + altGr9 + name +
+                                                                            press("udiaeresis") + name));
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 0);
+    std::ifstream names(folder / "names.txt");
+    std::vector<std::string> titles;
+    for (std::string line; std::getline(names, line);) titles.push_back(line);
+    const std::string column = "Rigid Spheres: A column of ten spheres", pyramid = "Rigid Spheres: A pyramid of 55 spheres";
+    EXPECT_EQ(titles, (std::vector<std::string>{column, pyramid, column, pyramid, pyramid}));
+}
+
 // A teacher in the presentation layout with a sphere explained presses Esc, as in a slide
 // show, once too often: the first leaves the presentation (F12's first screenshot: the bar
 // and the dock with the explanation are back), the next two close the explanation and

@@ -51,6 +51,7 @@ public:
 
 private:
     static void onKey(GLFWwindow* w, int key, int scancode, int action, int mods);
+    static void onCharacter(GLFWwindow* w, unsigned int codepoint);
     static void onScroll(GLFWwindow* w, double dx, double dy);
     void handleKey(int key, int mods);
     void backOut();
@@ -60,6 +61,7 @@ private:
     void drawScene(const ViewLayout& views);
     void apply(const ui::PanelActions& actions);
     void loadPreset(int index);
+    void showSceneTitle();
     void loadFile(const std::string& path);
     // The preset whose file `path` names (any spelling of its path), or -1.
     int presetIndexOf(const std::string& path) const;
@@ -110,6 +112,7 @@ WindowApp::WindowApp(std::unique_ptr<platform::Window> window, scenes::Scene sce
     panel_.scenePath = resolveScenePath(options.scene);
     panel_.outputFolder = outputFolder();
     panel_.presetIndex = presetIndexOf(panel_.scenePath);
+    showSceneTitle();
     // --compare, or else the scene's own "compare" (checked by the loader).
     const std::vector<std::string>& compare = options.compare.empty() ? simulation_.scene().compare : options.compare;
     if (!compare.empty()) {
@@ -129,6 +132,7 @@ WindowApp::WindowApp(std::unique_ptr<platform::Window> window, scenes::Scene sce
     glfwSetWindowUserPointer(handle, this);
     // Ours first: ImGui's backend chains to the callbacks installed before it.
     glfwSetKeyCallback(handle, onKey);
+    glfwSetCharCallback(handle, onCharacter);
     glfwSetScrollCallback(handle, onScroll);
     ImGui::CreateContext();
     ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini left in the working directory
@@ -229,13 +233,23 @@ void WindowApp::onKey(GLFWwindow* w, int key, int, int action, int mods) {
     static_cast<WindowApp*>(glfwGetWindowUserPointer(w))->handleKey(key, mods);
 }
 
+// [ and ] open the previous and next preset by the character typed, not the key: many
+// keyboards type them with AltGr or Option (a German one with AltGr+8 and AltGr+9).
+void WindowApp::onCharacter(GLFWwindow* w, unsigned int codepoint) {
+    if (codepoint != '[' && codepoint != ']') return;
+    if (ImGui::GetCurrentContext() && ImGui::GetIO().WantTextInput) return;
+    auto* app = static_cast<WindowApp*>(glfwGetWindowUserPointer(w));
+    const int count = static_cast<int>(app->presets_.size());
+    if (count == 0) return;
+    app->loadPreset((app->panel_.presetIndex + (codepoint == ']' ? 1 : count - 1)) % count);
+}
+
 void WindowApp::onScroll(GLFWwindow* w, double, double dy) {
     if (ImGui::GetCurrentContext() && ImGui::GetIO().WantCaptureMouse) return;
     static_cast<WindowApp*>(glfwGetWindowUserPointer(w))->camera_.zoom(float(dy));
 }
 
 void WindowApp::handleKey(int key, int mods) {
-    const int count = static_cast<int>(presets_.size());
     if (key == GLFW_KEY_Q && (mods & GLFW_MOD_CONTROL)) {
         window_->requestClose();
         return;
@@ -249,8 +263,6 @@ void WindowApp::handleKey(int key, int mods) {
         case GLFW_KEY_F: input_.shoot(layout().views, camera_, true, window_->time()); break;
         case GLFW_KEY_V: if (input_.toggleCompare(window_->time())) fitCamera(); break;
         case GLFW_KEY_E: input_.toggleExplainer(); break;
-        case GLFW_KEY_RIGHT_BRACKET: loadPreset((panel_.presetIndex + 1) % count); break;
-        case GLFW_KEY_LEFT_BRACKET: loadPreset((panel_.presetIndex + count - 1) % count); break;
         case GLFW_KEY_TAB: panel_.visible = !panel_.visible; break;
         case GLFW_KEY_F5: togglePresentation(); break;
         case GLFW_KEY_F12: screenshotRequested_ = true; break;
@@ -296,6 +308,12 @@ void WindowApp::loadPreset(int index) {
     panel_.presetIndex = index;
 }
 
+// The window's title names the scene: in the taskbar, and for a screen reader.
+void WindowApp::showSceneTitle() {
+    const std::string& title = simulation_.scene().title;
+    window_->setTitle(title.empty() ? "Rigid Spheres" : "Rigid Spheres: " + title);
+}
+
 int WindowApp::presetIndexOf(const std::string& path) const {
     for (std::size_t k = 0; k < presets_.size(); ++k) {
         std::error_code error;
@@ -309,6 +327,7 @@ void WindowApp::loadFile(const std::string& path) {
         const double timeScale = simulation_.timeScale;
         simulation_.setScene(scenes::loadScene(path));
         simulation_.timeScale = timeScale;
+        showSceneTitle();
         panel_.scenePath = path;
         panel_.presetIndex = presetIndexOf(path);  // a preset's file by any path: [ and ] go on from it
         panel_.scrollToTop = true;
