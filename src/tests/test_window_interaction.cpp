@@ -179,20 +179,21 @@ TEST(WindowInteraction, F5SwitchesToThePresentationLayoutAndBack) {
     EXPECT_GT(fraction(load(unfolded.string()), 1000, 100, 1270, 700, notSky), 0.8);
 }
 
-// [ and ] open the previous and next preset by the character typed, and the window's title
-// names the scene: ] on the column opens the pyramid, [ the column again; then, on a German
-// layout, AltGr+9 types ] (the pyramid), and the key where a US keyboard has [ types ü
-// there, which opens nothing.
-TEST(WindowInteraction, BracketsOpenTheNeighbourPresetsAsTypedOnAnyLayout) {
+// The keys go by what the keyboard types. [ and ] open the previous and next preset, and
+// the window's title names the scene: ] on the column opens the pyramid, [ the column
+// again; then, on a German layout, AltGr+9 types ] (the pyramid), and the key where a US
+// keyboard has [ types ü there, which opens nothing. Last, on a French layout, Ctrl+Q (on
+// the key where a US keyboard has A) quits.
+TEST(WindowInteraction, KeysGoByWhatTheKeyboardTypes) {
     if (!haveXvfb() || !haveXdotool()) GTEST_SKIP() << "xvfb-run or xdotool not found";
     const fs::path folder = fs::path(SPHERES_TEST_OUTPUT_DIR) / "window_brackets";
     const std::string name = "xdotool getwindowname $w >> names.txt\n";
     const std::string altGr9 = "xdotool keydown ISO_Level3_Shift keydown 9 sleep 0.3 keyup 9 keyup ISO_Level3_Shift sleep 1\n";
     const int status = runScript(folder, sessionOnTheColumn("--paused", name + press("bracketright") + name + press("bracketleft") +
                                                                             name + "setxkbmap de\n" + altGr9 + name +
-                                                                            press("udiaeresis") + name));
+                                                                            press("udiaeresis") + name + "setxkbmap fr\n"));
     ASSERT_TRUE(WIFEXITED(status));
-    EXPECT_EQ(WEXITSTATUS(status), 0);
+    EXPECT_EQ(WEXITSTATUS(status), 0) << "Ctrl+Q on a French layout did not quit";
     std::ifstream names(folder / "names.txt");
     std::vector<std::string> titles;
     for (std::string line; std::getline(names, line);) titles.push_back(line);

@@ -227,9 +227,15 @@ void WindowApp::followViewShape(const ViewLayout& views) {
     viewAspect_ = aspect;
 }
 
-void WindowApp::onKey(GLFWwindow* w, int key, int, int action, int mods) {
+// GLFW names keys by where they sit on a US keyboard; a letter key is taken as the letter
+// the keyboard's layout gives it (on a French one, Ctrl+Q is where a US keyboard has A).
+void WindowApp::onKey(GLFWwindow* w, int key, int scancode, int action, int mods) {
     if (action != GLFW_PRESS && action != GLFW_REPEAT) return;
     if (ImGui::GetCurrentContext() && ImGui::GetIO().WantTextInput) return;
+    const char* typed = glfwGetKeyName(key, scancode);
+    if (key >= GLFW_KEY_A && key <= GLFW_KEY_Z && typed && typed[0] >= 'a' && typed[0] <= 'z' && typed[1] == '\0') {
+        key = GLFW_KEY_A + (typed[0] - 'a');
+    }
     static_cast<WindowApp*>(glfwGetWindowUserPointer(w))->handleKey(key, mods);
 }
 
