@@ -1,6 +1,7 @@
 // The real window under Xvfb with the interaction features started from the
 // command line: two views side by side (--compare), the selected sphere's
-// inspector and explainer (--select, --explain), and refused input.
+// inspector and explainer (--select, --explain), refused input, keys as typed and the
+// view settings kept between sessions.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -10,6 +11,7 @@
 #include <fstream>
 #include <string>
 
+#include "app/window/window_settings.h"
 #include "render/image_io.h"
 
 namespace {
@@ -90,13 +92,16 @@ TEST(WindowInteraction, SelectOpensTheInspectorAndTheExplainer) {
 bool haveXdotool() { return std::system("command -v xdotool >/dev/null 2>&1") == 0; }
 
 // Writes `script` (sh) into a fresh `folder` and runs it under Xvfb there (90 s at
-// most); returns std::system's status.
-int runScript(const fs::path& folder, const std::string& script) {
+// most); returns std::system's status. The window keeps its view settings in
+// folder/config (XDG_CONFIG_HOME): no session reads another's, or the user's own; a
+// `settings` text is written there first.
+int runScript(const fs::path& folder, const std::string& script, const std::string& settings = "") {
     fs::remove_all(folder);
-    fs::create_directories(folder);
+    fs::create_directories(folder / "config" / "rigid-spheres");
     std::ofstream(folder / "session.sh") << script;
-    const std::string command = "cd '" + folder.string() +
-                                "' && timeout 90 xvfb-run -a -s '-screen 0 1280x800x24' sh session.sh >/dev/null 2>&1";
+    if (!settings.empty()) std::ofstream(folder / "config" / "rigid-spheres" / "window.json") << settings;
+    const std::string command = "cd '" + folder.string() + "' && XDG_CONFIG_HOME='" + (folder / "config").string() +
+                                "' timeout 90 xvfb-run -a -s '-screen 0 1280x800x24' sh session.sh >/dev/null 2>&1";
     return std::system(command.c_str());
 }
 
@@ -199,6 +204,25 @@ TEST(WindowInteraction, KeysGoByWhatTheKeyboardTypes) {
     for (std::string line; std::getline(names, line);) titles.push_back(line);
     const std::string column = "Rigid Spheres: A column of ten spheres", pyramid = "Rigid Spheres: A pyramid of 55 spheres";
     EXPECT_EQ(titles, (std::vector<std::string>{column, pyramid, column, pyramid, pyramid}));
+}
+
+// The view settings are kept between sessions: a session started with a UI scale of 2,
+// the colouring by number and no floor grid (the last session's) shows the panel as wide as
+// that scale makes it (F12), and keeps the same settings when Ctrl+Q ends it.
+TEST(WindowInteraction, TheViewSettingsAreKeptBetweenSessions) {
+    if (!haveXvfb() || !haveXdotool()) GTEST_SKIP() << "xvfb-run or xdotool not found";
+    const fs::path folder = fs::path(SPHERES_TEST_OUTPUT_DIR) / "window_kept_settings";
+    const std::string kept = R"({"ui_scale": 2.0, "color_by": 0, "show_box": true, "show_grid": false})";
+    const int status = runScript(folder, sessionOnTheColumn("--paused", press("F12")), kept);
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 0);
+    const fs::path shot = folder / "spheres_output" / "screenshot_0001.png";
+    ASSERT_TRUE(fs::exists(shot)) << "F12 wrote no screenshot";
+    EXPECT_GT(fraction(load(shot.string()), 440, 300, 560, 780, dark), 0.6);  // the panel at twice its width
+    std::string warning;
+    EXPECT_TRUE(app::readWindowSettings(folder / "config" / "rigid-spheres" / "window.json", warning) ==
+                app::WindowSettings({2.0f, 0, true, false}));
+    EXPECT_EQ(warning, "");
 }
 
 // A teacher in the presentation layout with a sphere explained presses Esc, as in a slide

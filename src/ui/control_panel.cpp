@@ -387,7 +387,7 @@ void viewSection(PanelState& state, PanelActions& actions) {
             "coloured by level "
             "(0 red: touches a plane, 1 orange: touches level 0, 2 yellow, 3 green, 4 cyan, 5 blue, then red "
             "again; grey: reaches no plane). Shock propagation sweeps the levels from the floor up.");
-    if (ImGui::SliderFloat("UI scale", &state.uiScale, 0.75f, 3.0f, "%.2f")) actions.fontChanged = true;
+    if (ImGui::SliderFloat("UI scale", &state.uiScale, kUiScaleRange[0], kUiScaleRange[1], "%.2f")) actions.fontChanged = true;
     if (ImGui::Button("Reset view (C)")) actions.resetCamera = true;
     ImGui::SameLine();
     if (ImGui::Button("Screenshot (F12)")) actions.screenshot = true;

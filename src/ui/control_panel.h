@@ -22,6 +22,9 @@ namespace ui {
 constexpr float kPresentScale = 1.5f;
 // The time scale's range (simulated seconds per real second): slow motion to 4x.
 constexpr double kTimeScaleRange[2] = {0.01, 4.0};
+// The UI scale's slider (the panel's font multiplier), which capture's --ui-scale and the
+// window's kept settings hold to.
+constexpr float kUiScaleRange[2] = {0.75f, 3.0f};
 
 // The panel's own settings, kept between frames.
 struct PanelState {

@@ -51,7 +51,6 @@ constexpr int kMaxSamples = 16;                          // per pixel
 constexpr double kMaxElevationDeg = 88.0;                // the orbit camera must stay off the pole
 constexpr double kMaxDistance = 1000.0;                  // m, render::Camera's zoom limit
 constexpr int kUiWarmUpFrames = 3;                       // ImGui frames laid out before frame 0
-constexpr float kUiScaleRange[2] = {0.75f, 3.0f};         // as the panel's slider
 constexpr int kViewGap = 4;                              // px between views side by side, as the window
 
 // ---------------------------------------------------------------- the options, checked
@@ -214,7 +213,7 @@ CapturePlan planCapture(const CaptureOptions& options) {
     if (options.samples < 0 || options.samples > kMaxSamples)
         throw UsageError("--samples: must be between 0 and 16");
     if (options.out.empty()) throw UsageError("--out: give a folder for the frames");
-    if (!(options.uiScale >= kUiScaleRange[0] && options.uiScale <= kUiScaleRange[1]))
+    if (!(options.uiScale >= ui::kUiScaleRange[0] && options.uiScale <= ui::kUiScaleRange[1]))
         throw UsageError("--ui-scale: must be between 0.75 and 3");
     if (options.present && !options.withUi) throw UsageError("--present draws the panel: give --with-ui too");
     return plan;

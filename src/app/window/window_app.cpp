@@ -17,6 +17,7 @@
 #include "app/window/frame_profile.h"
 #include "app/window/interaction_input.h"
 #include "app/window/multisampled_views.h"
+#include "app/window/window_settings.h"
 #include "app/views/interaction_windows.h"
 #include "app/run/output_files.h"
 #include "app/run/scene_source.h"
@@ -62,6 +63,8 @@ private:
     void apply(const ui::PanelActions& actions);
     void loadPreset(int index);
     void showSceneTitle();
+    void applyKeptSettings();
+    void keepSettings() const;
     void loadFile(const std::string& path);
     // The preset whose file `path` names (any spelling of its path), or -1.
     int presetIndexOf(const std::string& path) const;
@@ -140,6 +143,7 @@ WindowApp::WindowApp(std::unique_ptr<platform::Window> window, scenes::Scene sce
     imguiRenderer_.init();
     screenScale_ = std::max(1.0f, window_->contentScale().x);
     panel_.uiScale = screenScale_;
+    applyKeptSettings();
     rebuildFont();
     if (options.present) togglePresentation();
 }
@@ -538,8 +542,32 @@ int WindowApp::run() {
     if (options_.frames > 0) {
         const std::chrono::duration<double> timed = std::chrono::steady_clock::now() - timedFrom;
         profile_.print(drawn, timed.count());
+    } else {
+        keepSettings();
     }
     return 0;
+}
+
+// The view settings the last session kept (window_settings.h). A broken file is said in one
+// line; the session opens as it would without it.
+void WindowApp::applyKeptSettings() {
+    if (options_.frames > 0) return;  // scripted runs (tests, benchmarks) look the same everywhere
+    std::string warning;
+    const WindowSettings kept = readWindowSettings(windowSettingsPath(), warning);
+    if (!warning.empty()) std::fprintf(stderr, "spheres: settings: %s\n", warning.c_str());
+    if (kept.uiScale > 0.0f) panel_.uiScale = kept.uiScale;
+    panel_.colorBy = kept.colorBy;
+    panel_.showBox = kept.showBox;
+    panel_.showGrid = kept.showGrid;
+}
+
+// The UI scale is kept only where the user chose one (not the screen's own, which another
+// screen may not share), and as it was before the presentation layout enlarged it.
+void WindowApp::keepSettings() const {
+    const float chosen = panel_.present ? scaleBeforePresenting_ : panel_.uiScale;
+    const std::string error = writeWindowSettings(
+        windowSettingsPath(), {chosen == screenScale_ ? 0.0f : chosen, panel_.colorBy, panel_.showBox, panel_.showGrid});
+    if (!error.empty()) std::fprintf(stderr, "spheres: settings not kept: %s\n", error.c_str());
 }
 
 }  // namespace

@@ -1,0 +1,81 @@
+#include "app/window/window_settings.h"
+
+#include <cstdint>
+#include <cstdlib>
+#include <fstream>
+#include <system_error>
+
+#include <nlohmann/json.hpp>
+
+#include "ui/control_panel.h"
+
+namespace app {
+namespace {
+
+using Json = nlohmann::json;
+namespace fs = std::filesystem;
+
+constexpr int kColorings = 3;  // render::ColorBy's values
+
+// The field's value where it is `kind` and `accept`s it; else its name and value go into
+// `wrong`, and `value` keeps its default.
+template <class T, class Accept>
+void take(const Json& json, const char* field, Json::value_t kind, T& value, const Accept& accept, std::string& wrong) {
+    if (!json.contains(field)) return;
+    const Json& given = json[field];
+    const bool number = kind == Json::value_t::number_float && given.is_number();
+    if ((given.type() == kind || number) && accept(given)) {
+        value = given.get<T>();
+        return;
+    }
+    wrong += std::string(wrong.empty() ? "" : ", ") + field + " " + given.dump();
+}
+
+}  // namespace
+
+fs::path windowSettingsPath() {
+    if (const char* config = std::getenv("XDG_CONFIG_HOME"); config && *config) {
+        return fs::path(config) / "rigid-spheres" / "window.json";
+    }
+    if (const char* home = std::getenv("HOME"); home && *home) {
+        return fs::path(home) / ".config" / "rigid-spheres" / "window.json";
+    }
+    return {};
+}
+
+WindowSettings readWindowSettings(const fs::path& path, std::string& warning) {
+    WindowSettings settings;
+    std::error_code error;
+    if (path.empty() || !fs::exists(path, error)) return settings;
+    std::ifstream file(path);
+    const Json json = Json::parse(file, nullptr, false);
+    if (!file || json.is_discarded() || !json.is_object()) {
+        warning = path.string() + ": not a JSON object; the default view settings instead";
+        return settings;
+    }
+    std::string wrong;
+    take(json, "ui_scale", Json::value_t::number_float, settings.uiScale, [](const Json& s) {
+        return s.get<double>() >= ui::kUiScaleRange[0] && s.get<double>() <= ui::kUiScaleRange[1];
+    }, wrong);
+    take(json, "color_by", Json::value_t::number_unsigned, settings.colorBy,
+         [](const Json& c) { return c.get<std::uint64_t>() < kColorings; }, wrong);
+    const auto anyBool = [](const Json&) { return true; };
+    take(json, "show_box", Json::value_t::boolean, settings.showBox, anyBool, wrong);
+    take(json, "show_grid", Json::value_t::boolean, settings.showGrid, anyBool, wrong);
+    if (!wrong.empty()) warning = path.string() + ": " + wrong + " out of range; the default instead";
+    return settings;
+}
+
+std::string writeWindowSettings(const fs::path& path, const WindowSettings& settings) {
+    if (path.empty()) return "no HOME or XDG_CONFIG_HOME to keep them in";
+    std::error_code error;
+    fs::create_directories(path.parent_path(), error);
+    if (error) return path.parent_path().string() + ": " + error.message();
+    Json json = {{"color_by", settings.colorBy}, {"show_box", settings.showBox}, {"show_grid", settings.showGrid}};
+    if (settings.uiScale > 0.0f) json["ui_scale"] = settings.uiScale;
+    std::ofstream file(path);
+    file << json.dump(2) << '\n';
+    return file ? "" : path.string() + ": cannot be written";
+}
+
+}  // namespace app

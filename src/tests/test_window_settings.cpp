@@ -1,0 +1,108 @@
+// The window's kept view settings (app/window/window_settings.h): read back as written,
+// and a broken or out-of-range file named in one line, never taken.
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "app/window/window_settings.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path freshFile(const std::string& name, const std::string& text) {
+    const fs::path folder = fs::path(SPHERES_TEST_OUTPUT_DIR) / "window_settings";
+    fs::create_directories(folder);
+    const fs::path path = folder / name;
+    std::ofstream(path) << text;
+    return path;
+}
+
+// Sets an environment variable for one scope, then puts back what was there.
+class ScopedVariable {
+  public:
+    ScopedVariable(const char* name, const char* value) : name_(name) {
+        if (const char* was = std::getenv(name)) was_ = was, had_ = true;
+        value ? setenv(name, value, 1) : unsetenv(name);
+    }
+    ~ScopedVariable() { had_ ? setenv(name_, was_.c_str(), 1) : unsetenv(name_); }
+
+  private:
+    const char* name_;
+    std::string was_;
+    bool had_ = false;
+};
+
+}  // namespace
+
+TEST(WindowSettings, WhatIsWrittenIsReadBack) {
+    const fs::path path = fs::path(SPHERES_TEST_OUTPUT_DIR) / "window_settings" / "made" / "window.json";
+    fs::remove_all(path.parent_path());
+    ASSERT_EQ(app::writeWindowSettings(path, {1.5f, 1, false, true}), "");
+    std::string warning;
+    EXPECT_TRUE(app::readWindowSettings(path, warning) == app::WindowSettings({1.5f, 1, false, true}));
+    EXPECT_EQ(warning, "");
+}
+
+TEST(WindowSettings, TheScreensOwnScaleIsNotKept) {
+    const fs::path path = freshFile("screen_scale.json", "");
+    ASSERT_EQ(app::writeWindowSettings(path, {0.0f, 2, true, true}), "");
+    std::ifstream file(path);
+    const std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+    EXPECT_EQ(text.find("ui_scale"), std::string::npos) << text;
+    std::string warning;
+    EXPECT_EQ(app::readWindowSettings(path, warning).uiScale, 0.0f);
+    EXPECT_EQ(warning, "");
+}
+
+TEST(WindowSettings, NoFileGivesTheDefaultsSilently) {
+    std::string warning;
+    EXPECT_TRUE(app::readWindowSettings(fs::path(SPHERES_TEST_OUTPUT_DIR) / "no_such.json", warning) ==
+                app::WindowSettings());
+    EXPECT_EQ(warning, "");
+}
+
+TEST(WindowSettings, ABrokenFileIsNamedAndTheDefaultsServe) {
+    for (const char* text : {"{\"ui_scale\": 2", "[1, 2]", "", "\x01\x02"}) {
+        const fs::path path = freshFile("broken.json", text);
+        std::string warning;
+        const app::WindowSettings read = app::readWindowSettings(path, warning);
+        EXPECT_EQ(warning, path.string() + ": not a JSON object; the default view settings instead") << text;
+        EXPECT_EQ(read.uiScale, 0.0f) << text;
+        EXPECT_EQ(read.colorBy, 2) << text;
+    }
+}
+
+TEST(WindowSettings, ValuesOutOfRangeAreNamedAndNotTaken) {
+    const fs::path path = freshFile(
+        "out_of_range.json", R"({"ui_scale": 9, "color_by": 7, "show_box": "yes", "show_grid": false, "later": 1})");
+    std::string warning;
+    const app::WindowSettings read = app::readWindowSettings(path, warning);
+    EXPECT_EQ(warning, path.string() + ": ui_scale 9, color_by 7, show_box \"yes\" out of range; the default instead");
+    EXPECT_TRUE(read == app::WindowSettings({0.0f, 2, true, false}));  // the one good value is taken
+    for (const char* bad : {R"({"color_by": -1})", R"({"color_by": 1.5})", R"({"color_by": 4294967297})",
+                            R"({"ui_scale": 0.5})", R"({"ui_scale": null})"}) {
+        std::string said;
+        app::readWindowSettings(freshFile("bad.json", bad), said);
+        EXPECT_NE(said.find("out of range"), std::string::npos) << bad;
+    }
+}
+
+TEST(WindowSettings, KeptInTheUsersConfigurationFolder) {
+    {
+        const ScopedVariable config("XDG_CONFIG_HOME", "/tmp/config"), home("HOME", "/home/student");
+        EXPECT_EQ(app::windowSettingsPath(), fs::path("/tmp/config/rigid-spheres/window.json"));
+    }
+    {
+        const ScopedVariable config("XDG_CONFIG_HOME", nullptr), home("HOME", "/home/student");
+        EXPECT_EQ(app::windowSettingsPath(), fs::path("/home/student/.config/rigid-spheres/window.json"));
+    }
+    {
+        const ScopedVariable config("XDG_CONFIG_HOME", nullptr), home("HOME", nullptr);
+        EXPECT_EQ(app::windowSettingsPath(), fs::path());
+        EXPECT_EQ(app::writeWindowSettings(app::windowSettingsPath(), {}), "no HOME or XDG_CONFIG_HOME to keep them in");
+    }
+}
