@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 #include "app/window/window_settings.h"
@@ -206,23 +207,28 @@ TEST(WindowInteraction, KeysGoByWhatTheKeyboardTypes) {
     EXPECT_EQ(titles, (std::vector<std::string>{column, pyramid, column, pyramid, pyramid}));
 }
 
-// The view settings are kept between sessions: a session started with a UI scale of 2,
-// the colouring by number and no floor grid (the last session's) shows the panel as wide as
-// that scale makes it (F12), and keeps the same settings when Ctrl+Q ends it.
+// The view settings are kept between sessions. A session started with the last one's (a
+// UI scale of 1.25, the colouring by number, no floor grid) shows the panel as wide as that
+// scale makes it (F12); F5 enlarges the type for the presentation, and Ctrl+Q there keeps
+// the scale the user chose, not the presentation's, in a file written anew.
 TEST(WindowInteraction, TheViewSettingsAreKeptBetweenSessions) {
     if (!haveXvfb() || !haveXdotool()) GTEST_SKIP() << "xvfb-run or xdotool not found";
     const fs::path folder = fs::path(SPHERES_TEST_OUTPUT_DIR) / "window_kept_settings";
-    const std::string kept = R"({"ui_scale": 2.0, "color_by": 0, "show_box": true, "show_grid": false})";
-    const int status = runScript(folder, sessionOnTheColumn("--paused", press("F12")), kept);
+    const std::string kept = R"({"ui_scale": 1.25, "color_by": 0, "show_box": true, "show_grid": false, "later": 1})";
+    const int status = runScript(folder, sessionOnTheColumn("--paused", press("F12") + press("F5")), kept);
     ASSERT_TRUE(WIFEXITED(status));
     EXPECT_EQ(WEXITSTATUS(status), 0);
     const fs::path shot = folder / "spheres_output" / "screenshot_0001.png";
     ASSERT_TRUE(fs::exists(shot)) << "F12 wrote no screenshot";
-    EXPECT_GT(fraction(load(shot.string()), 440, 300, 560, 780, dark), 0.6);  // the panel at twice its width
+    const render::Image image = load(shot.string());
+    EXPECT_GT(fraction(image, 445, 300, 520, 780, dark), 0.6);  // the panel a quarter wider
+    EXPECT_LT(fraction(image, 580, 300, 640, 780, dark), 0.1);
+    const fs::path file = folder / "config" / "rigid-spheres" / "window.json";
     std::string warning;
-    EXPECT_TRUE(app::readWindowSettings(folder / "config" / "rigid-spheres" / "window.json", warning) ==
-                app::WindowSettings({2.0f, 0, true, false}));
+    EXPECT_TRUE(app::readWindowSettings(file, warning) == app::WindowSettings({1.25f, 0, true, false}));
     EXPECT_EQ(warning, "");
+    std::ifstream text(file);
+    EXPECT_EQ(std::string(std::istreambuf_iterator<char>(text), {}).find("later"), std::string::npos) << "not written anew";
 }
 
 // A teacher in the presentation layout with a sphere explained presses Esc, as in a slide

@@ -3,6 +3,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -45,6 +46,12 @@ TEST(WindowSettings, WhatIsWrittenIsReadBack) {
     std::string warning;
     EXPECT_TRUE(app::readWindowSettings(path, warning) == app::WindowSettings({1.5f, 1, false, true}));
     EXPECT_EQ(warning, "");
+    // The slider's 1.1 (a float) is written as 1.1, and nothing is left beside the file.
+    ASSERT_EQ(app::writeWindowSettings(path, {1.1f, 1, false, true}), "");
+    std::ifstream file(path);
+    const std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+    EXPECT_NE(text.find("\"ui_scale\": 1.1\n"), std::string::npos) << text;
+    EXPECT_EQ(std::distance(fs::directory_iterator(path.parent_path()), fs::directory_iterator()), 1);
 }
 
 TEST(WindowSettings, TheScreensOwnScaleIsNotKept) {
@@ -74,6 +81,18 @@ TEST(WindowSettings, ABrokenFileIsNamedAndTheDefaultsServe) {
         EXPECT_EQ(read.uiScale, 0.0f) << text;
         EXPECT_EQ(read.colorBy, 2) << text;
     }
+}
+
+// A folder where the file should be: named when read (it threw from inside the parser,
+// and the window never opened), and refused when written.
+TEST(WindowSettings, AFolderInItsPlaceIsNamedNotThrown) {
+    const fs::path folder = fs::path(SPHERES_TEST_OUTPUT_DIR) / "window_settings" / "a_folder.json";
+    fs::create_directories(folder);
+    std::string warning;
+    EXPECT_TRUE(app::readWindowSettings(folder, warning) == app::WindowSettings());
+    EXPECT_EQ(warning, folder.string() + ": not a JSON object; the default view settings instead");
+    EXPECT_NE(app::writeWindowSettings(folder, {}), "");
+    EXPECT_TRUE(fs::is_directory(folder));
 }
 
 TEST(WindowSettings, ValuesOutOfRangeAreNamedAndNotTaken) {

@@ -231,16 +231,24 @@ void WindowApp::followViewShape(const ViewLayout& views) {
     viewAspect_ = aspect;
 }
 
-// GLFW names keys by where they sit on a US keyboard; a letter key is taken as the letter
-// the keyboard's layout gives it (on a French one, Ctrl+Q is where a US keyboard has A).
+// GLFW names keys by where they sit on a US keyboard. The printable ones go by what the
+// keyboard's layout types on them: a key that types a letter is that letter's key (on a
+// French keyboard, Ctrl+Q is where a US one has A; on a Dvorak one, V is where it has .),
+// and one a US keyboard has a letter on that types some other character is no letter's.
+// A key that types no single ASCII character (Cyrillic, say) keeps its US letter.
+int keyAsTyped(int key, int scancode) {
+    if (key < GLFW_KEY_APOSTROPHE || key > GLFW_KEY_WORLD_2) return key;  // not printable: as it is
+    const char* typed = glfwGetKeyName(key, scancode);
+    if (!typed || typed[0] == '\0' || typed[1] != '\0' || static_cast<unsigned char>(typed[0]) >= 128) return key;
+    const char c = typed[0];
+    if (c >= 'a' && c <= 'z') return GLFW_KEY_A + (c - 'a');
+    return key >= GLFW_KEY_A && key <= GLFW_KEY_Z ? GLFW_KEY_UNKNOWN : key;
+}
+
 void WindowApp::onKey(GLFWwindow* w, int key, int scancode, int action, int mods) {
     if (action != GLFW_PRESS && action != GLFW_REPEAT) return;
     if (ImGui::GetCurrentContext() && ImGui::GetIO().WantTextInput) return;
-    const char* typed = glfwGetKeyName(key, scancode);
-    if (key >= GLFW_KEY_A && key <= GLFW_KEY_Z && typed && typed[0] >= 'a' && typed[0] <= 'z' && typed[1] == '\0') {
-        key = GLFW_KEY_A + (typed[0] - 'a');
-    }
-    static_cast<WindowApp*>(glfwGetWindowUserPointer(w))->handleKey(key, mods);
+    static_cast<WindowApp*>(glfwGetWindowUserPointer(w))->handleKey(keyAsTyped(key, scancode), mods);
 }
 
 // [ and ] open the previous and next preset by the character typed, not the key: many
@@ -249,9 +257,13 @@ void WindowApp::onCharacter(GLFWwindow* w, unsigned int codepoint) {
     if (codepoint != '[' && codepoint != ']') return;
     if (ImGui::GetCurrentContext() && ImGui::GetIO().WantTextInput) return;
     auto* app = static_cast<WindowApp*>(glfwGetWindowUserPointer(w));
-    const int count = static_cast<int>(app->presets_.size());
+    const int count = static_cast<int>(app->presets_.size()), at = app->panel_.presetIndex;
     if (count == 0) return;
-    app->loadPreset((app->panel_.presetIndex + (codepoint == ']' ? 1 : count - 1)) % count);
+    if (at < 0) {  // a scene file: ] the first preset, [ the last
+        app->loadPreset(codepoint == ']' ? 0 : count - 1);
+    } else {
+        app->loadPreset((at + (codepoint == ']' ? 1 : count - 1)) % count);
+    }
 }
 
 void WindowApp::onScroll(GLFWwindow* w, double, double dy) {
@@ -563,10 +575,13 @@ void WindowApp::applyKeptSettings() {
 
 // The UI scale is kept only where the user chose one (not the screen's own, which another
 // screen may not share), and as it was before the presentation layout enlarged it.
+// Nothing is kept where there is no home to keep it in.
 void WindowApp::keepSettings() const {
+    const std::filesystem::path path = windowSettingsPath();
+    if (path.empty()) return;
     const float chosen = panel_.present ? scaleBeforePresenting_ : panel_.uiScale;
-    const std::string error = writeWindowSettings(
-        windowSettingsPath(), {chosen == screenScale_ ? 0.0f : chosen, panel_.colorBy, panel_.showBox, panel_.showGrid});
+    const std::string error =
+        writeWindowSettings(path, {chosen == screenScale_ ? 0.0f : chosen, panel_.colorBy, panel_.showBox, panel_.showGrid});
     if (!error.empty()) std::fprintf(stderr, "spheres: settings not kept: %s\n", error.c_str());
 }
 

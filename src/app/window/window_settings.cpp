@@ -1,5 +1,6 @@
 #include "app/window/window_settings.h"
 
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <fstream>
@@ -47,9 +48,14 @@ WindowSettings readWindowSettings(const fs::path& path, std::string& warning) {
     WindowSettings settings;
     std::error_code error;
     if (path.empty() || !fs::exists(path, error)) return settings;
-    std::ifstream file(path);
-    const Json json = Json::parse(file, nullptr, false);
-    if (!file || json.is_discarded() || !json.is_object()) {
+    Json json;
+    try {  // a folder or an unreadable file throws from inside the parser
+        std::ifstream file(path);
+        json = fs::is_regular_file(path, error) && file ? Json::parse(file, nullptr, false) : Json(Json::value_t::discarded);
+    } catch (const std::exception&) {
+        json = Json::value_t::discarded;
+    }
+    if (json.is_discarded() || !json.is_object()) {
         warning = path.string() + ": not a JSON object; the default view settings instead";
         return settings;
     }
@@ -72,10 +78,18 @@ std::string writeWindowSettings(const fs::path& path, const WindowSettings& sett
     fs::create_directories(path.parent_path(), error);
     if (error) return path.parent_path().string() + ": " + error.message();
     Json json = {{"color_by", settings.colorBy}, {"show_box", settings.showBox}, {"show_grid", settings.showGrid}};
-    if (settings.uiScale > 0.0f) json["ui_scale"] = settings.uiScale;
-    std::ofstream file(path);
+    if (settings.uiScale > 0.0f) json["ui_scale"] = std::round(double(settings.uiScale) * 100.0) / 100.0;
+    // Written beside it, then moved over it: a full disk leaves the last settings as they were.
+    const fs::path written = path.string() + ".new";
+    std::ofstream file(written);
     file << json.dump(2) << '\n';
-    return file ? "" : path.string() + ": cannot be written";
+    file.close();
+    if (!file) {
+        fs::remove(written, error);
+        return path.string() + ": cannot be written";
+    }
+    fs::rename(written, path, error);
+    return error ? path.string() + ": " + error.message() : "";
 }
 
 }  // namespace app
