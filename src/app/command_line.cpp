@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/commands/capture_command.h"
+#include "app/commands/claims_command.h"
 #include "app/run/scene_source.h"
 #include "app/commands/simulate_command.h"
 #include "app/window/window_app.h"
@@ -72,6 +73,12 @@ void addCapture(CLI::App& cli, CaptureOptions& o) {
     cap->add_option("--samples", o.samples, "Multisampling: samples per pixel, 0 to 16")->capture_default_str();
 }
 
+void addClaims(CLI::App& cli, ClaimsOptions& o) {
+    CLI::App* claims = cli.add_subcommand(
+        "claims", "Measure what each scene's text claims, as the lab sheet's test does; exit 1 if a claim fails");
+    claims->add_option("--scene", o.scenes, "Scene file or preset name (repeatable; default: every preset)");
+}
+
 void addWindowOptions(CLI::App& cli, WindowAppOptions& o) {
     cli.add_option("--scene", o.scene, "Scene file or preset name (see `spheres presets`)");
     cli.add_option("--set", o.settings, "Override a parameter: name=value (repeatable)");
@@ -112,6 +119,8 @@ int runCommandLine(int argc, char** argv) {
     addSimulate(cli, simulate);
     CaptureOptions capture;
     addCapture(cli, capture);
+    ClaimsOptions claims;
+    addClaims(cli, claims);
     CLI::App* presets = cli.add_subcommand("presets", "List the shipped scenes");
     try {
         cli.parse(argc, argv);
@@ -123,6 +132,7 @@ int runCommandLine(int argc, char** argv) {
     try {
         if (cli.got_subcommand("simulate")) return runSimulate(simulate);
         if (cli.got_subcommand("capture")) return runCapture(capture);
+        if (cli.got_subcommand("claims")) return runClaims(claims);
         if (presets->parsed()) return listPresets();
         return runWindowApp(window);
     } catch (const UsageError& e) {

@@ -1,16 +1,21 @@
 // The lab sheet: every claim a preset's text (or its row of the README's teaching
-// table) makes is data in the preset (scenes/claims.h), and this test runs them all.
+// table) makes is data in the preset (scenes/claims.h), and this test runs them all, as
+// `spheres claims` does (tested at the end).
 // A text changed without its claim, or physics that no longer does what the text
 // says, fails here. The texts are also checked for claims nobody backs: every number
 // and every sentence of a description, and every clause of a teaching-table row, lies
 // in the quote of some claim.
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 
+#include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <iterator>
 #include <regex>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "scenes/claims.h"
@@ -170,3 +175,63 @@ TEST(LabSheetReadme, EveryClauseOfTheTeachingTableIsAClaim) {
 }
 
 }  // namespace
+
+namespace {
+
+// What `spheres ARGUMENTS` prints (stdout and stderr) and its exit code.
+std::pair<std::string, int> runSpheres(const std::string& arguments) {
+    const std::string command = std::string("'") + SPHERES_EXECUTABLE + "' " + arguments + " 2>&1";
+    FILE* pipe = popen(command.c_str(), "r");
+    std::string output;
+    char buffer[512];
+    while (pipe && std::fgets(buffer, sizeof buffer, pipe)) output += buffer;
+    const int status = pipe ? pclose(pipe) : -1;
+    return {output, WIFEXITED(status) ? WEXITSTATUS(status) : -1};
+}
+
+int countOf(const std::string& text, const std::string& part) {
+    int count = 0;
+    for (std::size_t at = text.find(part); at != std::string::npos; at = text.find(part, at + 1)) ++count;
+    return count;
+}
+
+}  // namespace
+
+// `spheres claims --scene NAME` measures the preset's claims as the lab sheet does: one
+// line each (✓, the quote, what was measured), then the count; exit 0.
+TEST(ClaimsCommandLine, MeasuresEachClaimOfAPresetAsTheLabSheetDoes) {
+    const std::size_t claims = scenes::checkClaims(scenes::loadScene(scenes::presetPath("03_head_on"))).size();
+    const auto [output, code] = runSpheres("claims --scene head_on");
+    EXPECT_EQ(code, 0) << output;
+    EXPECT_EQ(countOf(output, "  \u2713 \""), int(claims)) << output;
+    EXPECT_EQ(countOf(output, "\u2717 \""), 0) << output;
+    EXPECT_NE(output.find("  \u2713 \"the other leaves at 1 m/s\": vx = 1"), std::string::npos) << output;
+    EXPECT_NE(output.find("\"Lower \u03b2 to see the lecture's attenuation v1 \u2190 \u03b1 v1\u2225 + \u03b2 v2\u22a5\" (with beta=0.5)"),
+              std::string::npos) << output;
+    const std::string total = std::to_string(claims);
+    EXPECT_NE(output.find("The text, measured: " + total + " \u2713 0 \u2717 of " + total + " claims in 1 scene\n"),
+              std::string::npos) << output;
+}
+
+// A teacher's scene file whose text claims what the run does not do: its claim is marked ✗
+// with what was measured instead, and the command exits 1. A scene that cannot be found:
+// one line, exit 2.
+TEST(ClaimsCommandLine, AClaimThatFailsIsMarkedAndTheExitCodeSaysSo) {
+    std::ifstream preset(scenes::presetPath("03_head_on"));
+    std::string text((std::istreambuf_iterator<char>(preset)), std::istreambuf_iterator<char>());
+    const std::string claim = R"({"says": "the other leaves at 1 m/s", "measure": "vx", "sphere": 1, "from": 0.9, "to": 1.2, "near": 1,)";
+    const std::size_t at = text.find(claim);
+    ASSERT_NE(at, std::string::npos) << "the preset's claim changed: update this test";
+    text.replace(at, claim.size(), R"({"says": "the other leaves at 1 m/s", "measure": "vx", "sphere": 1, "from": 0.9, "to": 1.2, "near": 2,)");
+    const std::filesystem::path file = std::filesystem::temp_directory_path() / "spheres_claims_false.json";
+    std::ofstream(file) << text;
+    const auto [output, code] = runSpheres("claims --scene '" + file.string() + "'");
+    EXPECT_EQ(code, 1) << output;
+    EXPECT_NE(output.find("  \u2717 \"the other leaves at 1 m/s\": vx = 1"), std::string::npos) << output;
+    EXPECT_NE(output.find(" 1 \u2717 of "), std::string::npos) << output;
+    std::filesystem::remove(file);
+    const auto [missing, refused] = runSpheres("claims --scene no_such_scene");
+    EXPECT_EQ(refused, 2) << missing;
+    EXPECT_EQ(missing.rfind("spheres: ", 0), 0u) << missing;
+    EXPECT_EQ(countOf(missing, "\n"), 1) << missing;
+}

@@ -1,0 +1,43 @@
+#include "app/commands/claims_command.h"
+
+#include <cstdio>
+
+#include "app/run/scene_source.h"
+#include "scenes/claims.h"
+#include "scenes/presets.h"
+#include "scenes/scene_json.h"
+
+namespace app {
+namespace {
+
+// " (with beta=0.5, mu=1)" for a claim about the scene with other settings; "" for its own.
+std::string withSettings(const std::vector<std::string>& settings) {
+    std::string text;
+    for (const std::string& setting : settings) text += (text.empty() ? " (with " : ", ") + setting;
+    return text.empty() ? text : text + ")";
+}
+
+}  // namespace
+
+int runClaims(const ClaimsOptions& options) {
+    const std::vector<std::string> names = options.scenes.empty() ? scenes::listPresets() : options.scenes;
+    std::vector<scenes::Scene> loaded;  // all loaded first: a bad name ends the command before any run
+    for (const std::string& name : names) loaded.push_back(loadSceneWithSettings(name, {}));
+    int held = 0, failed = 0;
+    for (std::size_t k = 0; k < names.size(); ++k) {
+        const scenes::Scene& scene = loaded[k];
+        std::printf("%s  %s\n", names[k].c_str(), scene.title.c_str());
+        if (scene.claims.empty()) std::printf("  (its text claims nothing a run can measure)\n");
+        for (const scenes::ClaimCheck& check : scenes::checkClaims(scene)) {
+            std::printf("  %s \"%s\"%s: %s = %s\n", check.holds ? "\u2713" : "\u2717", check.claim->says.c_str(),
+                        withSettings(check.claim->settings).c_str(), check.claim->measure.c_str(), check.measured.c_str());
+            (check.holds ? held : failed) += 1;
+        }
+        std::fflush(stdout);
+    }
+    std::printf("The text, measured: %d \u2713 %d \u2717 of %d claims in %zu scene%s\n", held, failed, held + failed,
+                names.size(), names.size() == 1 ? "" : "s");
+    return failed == 0 ? 0 : 1;
+}
+
+}  // namespace app
