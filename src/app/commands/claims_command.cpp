@@ -5,7 +5,6 @@
 #include "app/run/scene_source.h"
 #include "scenes/claims.h"
 #include "scenes/presets.h"
-#include "scenes/scene_json.h"
 
 namespace app {
 namespace {
