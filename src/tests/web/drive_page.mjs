@@ -264,6 +264,7 @@ try {
   check('&present: only the sliders the text names, no tools', layout.present && layout.sliders.length > 0 &&
         layout.sliders.every((named) => named === 'true') && !layout.tools, JSON.stringify(layout));
   await newDocument(() => key(']', 'BracketRight', 221));
+  await until((s) => s.time_s > 0, 30000);  // the title is the running scene's
   layout = await shown();
   check('] opens the next preset, still presented', layout.present && layout.title.startsWith('A pyramid'), JSON.stringify(layout));
   await key('Escape', 'Escape', 27);
@@ -278,6 +279,7 @@ try {
   const stayed = await js('window.leaving === true');
   check('Ctrl+[ opens nothing', stayed, stayed ? 'the same document' : 'a new document');
   await newDocument(() => key('[', 'Digit8', 56, 3));
+  await until((s) => s.time_s > 0, 30000);
   layout = await shown();
   check('[ typed with AltGr (Ctrl+Alt) opens the previous preset', layout.title.startsWith('A column'), layout.title);
 } catch (error) {
