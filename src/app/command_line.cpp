@@ -109,6 +109,24 @@ int fail(const std::string& message, int code) {
     return code;
 }
 
+// The window's options are the command line's own, so one written before a subcommand
+// (`spheres --set beta=5 simulate ...`) parses as the window's and the subcommand would
+// run without it: "" when none was, else why that is refused.
+std::string windowOptionBeforeSubcommand(const CLI::App& cli) {
+    const std::vector<CLI::App*> chosen = cli.get_subcommands();
+    if (chosen.empty()) return "";
+    for (const CLI::Option* option : cli.get_options()) {
+        if (option->count() == 0 || option->get_name() == "--help") continue;
+        const std::string name = option->get_name(), command = chosen.front()->get_name();
+        if (chosen.front()->get_option_no_throw(name) == nullptr) {
+            return name + " is the window's option; `spheres " + command + "` takes none of that name";
+        }
+        return name + " before `" + command + "` is the window's option: write it after the command (spheres " +
+               command + " " + name + " ...)";
+    }
+    return "";
+}
+
 }  // namespace
 
 int runCommandLine(int argc, char** argv) {
@@ -127,7 +145,11 @@ int runCommandLine(int argc, char** argv) {
     } catch (const CLI::CallForHelp& e) {
         return cli.exit(e);
     } catch (const CLI::ParseError& e) {
-        return fail(e.what(), kBadInput);
+        const std::string misplaced = windowOptionBeforeSubcommand(cli);
+        return fail(misplaced.empty() ? e.what() : misplaced, kBadInput);
+    }
+    if (const std::string misplaced = windowOptionBeforeSubcommand(cli); !misplaced.empty()) {
+        return fail(misplaced, kBadInput);
     }
     try {
         if (cli.got_subcommand("simulate")) return runSimulate(simulate);

@@ -80,7 +80,14 @@ std::string overrideVariants(const Scene& scene, const std::vector<std::string>&
     std::vector<std::pair<std::string, std::vector<std::string>>> settings;
     for (const std::string& part : splitOverrides(lists)) {
         if (hasName(part)) {
-            settings.push_back({settingName(part), {std::string(trim(std::string_view(part).substr(part.find('=') + 1)))}});
+            const std::string name = settingName(part), value(trim(std::string_view(part).substr(part.find('=') + 1)));
+            const auto written = std::find_if(settings.begin(), settings.end(), [&](const auto& s) { return s.first == name; });
+            if (written == settings.end()) {
+                settings.push_back({name, {value}});
+            } else {  // a name written again: one more of its values
+                written->second.push_back(value);
+                std::rotate(written, written + 1, settings.end());  // a bare value after it is its too
+            }
             continue;
         }
         if (settings.empty()) return "'" + part + "' has no name: write name=value,value";
@@ -117,9 +124,7 @@ std::string overrideVariants(const Scene& scene, const std::vector<std::string>&
     // Views that show what A shows are left out, unless none differs.
     Variants differing;
     for (const std::vector<std::string>& variant : all) {
-        Scene copy = scene;
-        for (const std::string& setting : variant) applySetting(copy, setting);
-        if (overrideLabel(copy, variant, true) != overrideLabel(scene, variant, true)) differing.push_back(variant);
+        if (!changesNothing(scene, {variant})) differing.push_back(variant);
     }
     if (!differing.empty()) all = std::move(differing);
     if (int(all.size()) > kMostViews - 1) {
@@ -127,6 +132,15 @@ std::string overrideVariants(const Scene& scene, const std::vector<std::string>&
     }
     variants = std::move(all);
     return "";
+}
+
+bool changesNothing(const Scene& scene, const Variants& variants) {
+    for (const std::vector<std::string>& variant : variants) {
+        Scene copy = scene;
+        for (const std::string& setting : variant) applySetting(copy, setting);
+        if (overrideLabel(copy, variant, true) != overrideLabel(scene, variant, true)) return false;
+    }
+    return true;
 }
 
 std::string settingName(std::string_view setting) { return std::string(trim(setting.substr(0, setting.find('=')))); }

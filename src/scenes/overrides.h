@@ -18,7 +18,8 @@ constexpr int kMostViews = 4;
 std::vector<std::string> splitOverrides(const std::vector<std::string>& lists);
 
 // The overrides of each view but A. A value after a comma without a name is another
-// value of the name before it, and each of that name's values is a view of its own:
+// value of the name before it (as is a name written again: "beta=0.5,beta=0.2" is
+// "beta=0.5,0.2"), and each of that name's values is a view of its own:
 // "method=reflection,continuous,passes=1" gives {method=reflection, passes=1} and
 // {method=continuous, passes=1}. Several names with several values make a view per
 // combination: "shock=off,on,passes=1,4" gives four (the names with several values first,
@@ -27,6 +28,8 @@ std::vector<std::string> splitOverrides(const std::vector<std::string>& lists);
 // something (A shows it already). Returns "" or why not; `variants` is then filled.
 using Variants = std::vector<std::vector<std::string>>;
 std::string overrideVariants(const Scene& scene, const std::vector<std::string>& lists, Variants& variants);
+// Whether no view's overrides change anything in `scene` (every view shows what A shows).
+bool changesNothing(const Scene& scene, const Variants& variants);
 // "" when overrideVariants takes the lists, else why not.
 inline std::string checkCompare(const Scene& scene, const std::vector<std::string>& lists) {
     Variants variants;

@@ -10,6 +10,7 @@
 #include <sys/wait.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <glm/geometric.hpp>
 #include <string>
@@ -209,20 +210,74 @@ TEST(CaptureCommandLine, RefusedInputExitsWithCodeTwoAndOneLine) {
     EXPECT_FALSE(exists(out));
 }
 
+
 namespace {
 
-// What the real executable prints (stdout and stderr) for `arguments`.
-std::string outputOf(const std::string& arguments) {
+struct Outcome {
+    int code = -1;
+    std::string output;  // stdout and stderr
+};
+
+// The real executable's exit code and output for `arguments` (a shell line).
+Outcome runSpheres(const std::string& arguments) {
     const std::string command = std::string("'") + SPHERES_EXECUTABLE + "' " + arguments + " 2>&1";
+    Outcome outcome;
     FILE* pipe = popen(command.c_str(), "r");
-    std::string output;
+    if (!pipe) return outcome;
     char buffer[256];
-    while (pipe && std::fgets(buffer, sizeof buffer, pipe)) output += buffer;
-    if (pipe) pclose(pipe);
-    return output;
+    while (std::fgets(buffer, sizeof buffer, pipe)) outcome.output += buffer;
+    const int status = pclose(pipe);
+    outcome.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return outcome;
 }
 
+// What the real executable prints (stdout and stderr) for `arguments`.
+std::string outputOf(const std::string& arguments) { return runSpheres(arguments).output; }
+
 }  // namespace
+
+// Input the command line cannot take is one line naming it, exit code 2, and nothing
+// written: a window option before a subcommand (it would be dropped, the subcommand
+// running without it), a scene path that names no readable file, an output path whose
+// folder is missing, a screenshot of a window that cannot open.
+TEST(CommandLine, RefusedInputIsOneLineNamingItAndLeavesNothing) {
+    const std::string folder = capture_test::freshFolder("cli_refusals");
+    std::filesystem::create_directories(folder);
+    std::filesystem::create_symlink("loop.json", folder + "/loop.json");
+    const struct {
+        std::string arguments, starts;
+    } cases[] = {
+        {"--set beta=5 simulate --scene cradle --steps 1",
+         "spheres: --set before `simulate` is the window's option: write it after the command"},
+        {"--set beta=0.1 simulate --scene cradle --steps 1", "spheres: --set before `simulate`"},
+        {"--scene pile simulate --steps 1", "spheres: --scene before `simulate`"},
+        {"--frames 3 simulate --scene cradle --steps 1", "spheres: --frames is the window's option; `spheres simulate` takes none"},
+        {"--set beta=5 presets", "spheres: --set is the window's option; `spheres presets` takes none"},
+        {"simulate --scene /dev/null --steps 1", "spheres: --scene /dev/null: is not a regular file"},
+        {"simulate --scene '" + folder + "/loop.json' --steps 1", "spheres: --scene " + folder + "/loop.json: "},
+        {"claims --scene '" + folder + "/loop.json'", "spheres: --scene " + folder + "/loop.json: "},
+        {"simulate --scene cradle --steps 1 --state '" + folder + "/none/state.csv'",
+         "spheres: --state " + folder + "/none/state.csv: its folder " + folder + "/none does not exist"},
+        {"simulate --scene cradle --steps 1 --save '" + folder + "/cradle.json' --state '" + folder + "/none/s.csv'",
+         "spheres: --state "},
+        {"--scene cradle --select 99 --screenshot '" + folder + "/shot.png'", "spheres: "},
+    };
+    const std::string display = std::getenv("DISPLAY") ? std::getenv("DISPLAY") : "";
+    unsetenv("DISPLAY");  // the screenshot's window cannot open
+    for (const auto& c : cases) {
+        const Outcome outcome = runSpheres(c.arguments);
+        EXPECT_EQ(outcome.code, 2) << c.arguments << ": " << outcome.output;
+        EXPECT_EQ(outcome.output.rfind(c.starts, 0), 0u) << c.arguments << ": " << outcome.output;
+        EXPECT_EQ(std::count(outcome.output.begin(), outcome.output.end(), '\n'), 1) << c.arguments << ": " << outcome.output;
+    }
+    // What was refused wrote nothing (the checks of the output paths included).
+    std::vector<std::string> left;
+    for (const auto& entry : std::filesystem::directory_iterator(folder)) left.push_back(entry.path().filename().string());
+    EXPECT_EQ(left, std::vector<std::string>{"loop.json"});
+    if (!display.empty()) setenv("DISPLAY", display.c_str(), 1);
+    const Outcome after = runSpheres("simulate --scene cradle --steps 1 --set beta=0.1");  // where it belongs
+    EXPECT_EQ(after.code, 0) << after.output;
+}
 
 // Slide 14: `simulate` ends with the five properties when the scene had contacts; none
 // before the first contact.

@@ -142,6 +142,13 @@ TEST(SideBySide, ANameWithSeveralValuesMakesAViewEach) {
     EXPECT_EQ(variants, (app::Variants{{"method=velocity"}}));
     EXPECT_EQ(app::overrideVariants(scene, {"method=position"}, variants), "");  // nothing differs: kept
     EXPECT_EQ(variants, (app::Variants{{"method=position"}}));
+    EXPECT_TRUE(scenes::changesNothing(scene, variants));
+    // A name written again is one more of its values, not the last one kept.
+    ASSERT_EQ(app::overrideVariants(scene, {"method=velocity,passes=1,method=reflection"}, variants), "");
+    EXPECT_EQ(variants, (app::Variants{{"method=velocity", "passes=1"}, {"method=reflection", "passes=1"}}));
+    EXPECT_FALSE(scenes::changesNothing(scene, variants));
+    ASSERT_EQ(app::overrideVariants(scene, {"beta=0.5", "beta=0.2,0.3"}, variants), "");
+    EXPECT_EQ(variants, (app::Variants{{"beta=0.5"}, {"beta=0.2"}, {"beta=0.3"}}));
     EXPECT_EQ(app::overrideVariants(scene, {"reflection"}, variants), "'reflection' has no name: write name=value,value");
     EXPECT_EQ(app::overrideVariants(scene, {"method=velocity,reflection,beta=0.5,0.6"}, variants),
               "at most 4 views: A and 3 others");  // four combinations, none of them A's

@@ -676,10 +676,7 @@ int Capturer::run() {
 int runCapture(const CaptureOptions& options) {
     const CapturePlan plan = planCapture(options);
     scenes::Scene scene = loadSceneWithSettings(options.scene, options.settings);
-    if (!options.compare.empty()) {
-        if (const std::string error = checkCompare(scene, options.compare); !error.empty())
-            throw UsageError("--compare " + error);
-    }
+    checkCompareOption(scene, options.compare);
     auto context = openContext(plan.backend, plan.size);
     prepareOutFolder(options.out);
     std::printf("GL backend: %s (%s)\n", context->name(), glText(GL_RENDERER).c_str());

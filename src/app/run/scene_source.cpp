@@ -1,8 +1,10 @@
 #include "app/run/scene_source.h"
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 
+#include "scenes/overrides.h"
 #include "scenes/parameters.h"
 #include "scenes/presets.h"
 #include "scenes/scene_json.h"
@@ -13,25 +15,61 @@ bool endsWith(const std::string& s, const std::string& suffix) {
     return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
+// Opening the file to append tells whether it can be written, and creates it where it was
+// not: a probe that created it removes it again, so a refused run leaves nothing behind.
 void checkWritable(const std::string& flag, const std::string& path, const std::string& extension) {
     if (path.empty()) return;
     if (!extension.empty() && !endsWith(path, extension)) {
         throw UsageError(flag + " " + path + ": the file must end in " + extension);
     }
+    namespace fs = std::filesystem;
+    std::error_code error;
+    if (fs::is_directory(path, error)) throw UsageError(flag + " " + path + ": is a folder, not a file");
+    const fs::path folder = fs::path(path).parent_path();
+    if (!folder.empty() && !fs::is_directory(folder, error)) {
+        throw UsageError(flag + " " + path + ": its folder " + folder.string() + " does not exist");
+    }
+    const bool existed = fs::exists(path, error);
     std::ofstream probe(path, std::ios::app);
     if (!probe) throw UsageError(flag + " " + path + ": cannot open the file for writing");
+    probe.close();
+    if (!existed) fs::remove(path, error);
 }
 
 std::string resolveScenePath(const std::string& nameOrPath) {
-    if (std::filesystem::is_regular_file(nameOrPath)) return nameOrPath;
+    namespace fs = std::filesystem;
+    std::error_code error;
+    const fs::file_status status = fs::status(nameOrPath, error);
+    if (fs::is_regular_file(status)) return nameOrPath;
     std::string why;
     const std::string preset = scenes::matchPreset(nameOrPath, why);
+    const bool presetFound = !preset.empty() && why.empty();
     // A folder is no scene: a preset of its name wins (`capture --scene cradle --out cradle/`).
-    if (std::filesystem::is_directory(nameOrPath) && (preset.empty() || !why.empty())) {
+    if (fs::is_directory(status) && !presetFound) {
         throw UsageError("--scene " + nameOrPath + ": is a folder, not a scene file");
+    }
+    if (fs::exists(status) && !presetFound) {  // a device, a pipe, a socket
+        throw UsageError("--scene " + nameOrPath + ": is not a regular file, so no scene file");
+    }
+    if (error && error != std::errc::no_such_file_or_directory && !presetFound) {
+        throw UsageError("--scene " + nameOrPath.substr(0, 80) + (nameOrPath.size() > 80 ? "...: " : ": ") + error.message());
     }
     if (!why.empty()) throw UsageError("--scene " + nameOrPath + ": " + why);
     return preset;
+}
+
+void checkCompareOption(const scenes::Scene& scene, const std::vector<std::string>& lists) {
+    if (lists.empty()) return;
+    scenes::Variants variants;
+    if (const std::string error = scenes::overrideVariants(scene, lists, variants); !error.empty()) {
+        throw UsageError("--compare " + error);
+    }
+    if (scenes::changesNothing(scene, variants)) {
+        std::string written;
+        for (const std::string& list : lists) written += (written.empty() ? "" : " ") + list;
+        std::fprintf(stderr, "spheres: --compare %s changes nothing in this scene (%s already): the views are the same\n",
+                     written.c_str(), scenes::overrideLabel(scene, variants.front()).c_str());
+    }
 }
 
 scenes::Scene loadSceneWithSettings(const std::string& nameOrPath,

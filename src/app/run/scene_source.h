@@ -12,8 +12,8 @@ struct UsageError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-// Throws UsageError "FLAG PATH: cannot open the file for writing" unless `path` is
-// empty or can be written, and "FLAG PATH: the file must end in EXTENSION" when it
+// Throws UsageError "FLAG PATH: ..." (cannot be written, its folder does not exist, is a
+// folder) unless `path` is empty or can be written (nothing is left there by the check), and "FLAG PATH: the file must end in EXTENSION" when it
 // ends otherwise (a CSV written into x.json): output files are checked before any work.
 void checkWritable(const std::string& flag, const std::string& path, const std::string& extension = "");
 
@@ -25,6 +25,10 @@ bool endsWith(const std::string& s, const std::string& suffix);
 // Throws scenes::SceneError (file:line:col) or UsageError.
 scenes::Scene loadSceneWithSettings(const std::string& nameOrPath,
                                     const std::vector<std::string>& settings);
+
+// --compare's lists for `scene`: throws UsageError "--compare ..." naming what is refused;
+// where they change nothing in it (beta=1 where beta is 1), says so in one line on stderr.
+void checkCompareOption(const scenes::Scene& scene, const std::vector<std::string>& lists);
 
 // The file behind a preset name or path; empty when there is none. Throws
 // UsageError when a fragment matches several presets.

@@ -590,11 +590,7 @@ void WindowApp::keepSettings() const {
 int runWindowApp(const WindowAppOptions& options) {
     scenes::Scene scene = loadSceneWithSettings(options.scene, options.settings);
     checkWritable("--screenshot", options.screenshot, ".png");
-    if (!options.compare.empty()) {
-        if (const std::string error = checkCompare(scene, options.compare); !error.empty()) {
-            throw UsageError("--compare " + error);
-        }
-    }
+    checkCompareOption(scene, options.compare);
     if (options.explain && options.select < 0) throw UsageError("--explain needs --select INDEX");
     std::string error;
     platform::WindowOptions windowOptions;
