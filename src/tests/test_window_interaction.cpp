@@ -188,7 +188,8 @@ TEST(WindowInteraction, F5SwitchesToThePresentationLayoutAndBack) {
 // The keys go by what the keyboard types. [ and ] open the previous and next preset, and
 // the window's title names the scene: ] on the column opens the pyramid, [ the column
 // again; then, on a German layout, AltGr+9 types ] (the pyramid), and the key where a US
-// keyboard has [ types ü there, which opens nothing. Last, on a French layout, Ctrl+Q (on
+// keyboard has [ types ü there, which opens nothing; AltGr+9 again, the pile, its title
+// with its count. Last, on a French layout, Ctrl+Q (on
 // the key where a US keyboard has A) quits.
 TEST(WindowInteraction, KeysGoByWhatTheKeyboardTypes) {
     if (!haveXvfb() || !haveXdotool()) GTEST_SKIP() << "xvfb-run or xdotool not found";
@@ -197,14 +198,16 @@ TEST(WindowInteraction, KeysGoByWhatTheKeyboardTypes) {
     const std::string altGr9 = "xdotool keydown ISO_Level3_Shift keydown 9 sleep 0.3 keyup 9 keyup ISO_Level3_Shift sleep 1\n";
     const int status = runScript(folder, sessionOnTheColumn("--paused", name + press("bracketright") + name + press("bracketleft") +
                                                                             name + "setxkbmap de\n" + altGr9 + name +
-                                                                            press("udiaeresis") + name + "setxkbmap fr\n"));
+                                                                            press("udiaeresis") + name + altGr9 + name +
+                                                                            "setxkbmap fr\n"));
     ASSERT_TRUE(WIFEXITED(status));
     EXPECT_EQ(WEXITSTATUS(status), 0) << "Ctrl+Q on a French layout did not quit";
     std::ifstream names(folder / "names.txt");
     std::vector<std::string> titles;
     for (std::string line; std::getline(names, line);) titles.push_back(line);
     const std::string column = "Rigid Spheres: A column of ten spheres", pyramid = "Rigid Spheres: A pyramid of 55 spheres";
-    EXPECT_EQ(titles, (std::vector<std::string>{column, pyramid, column, pyramid, pyramid}));
+    const std::string pile = "Rigid Spheres: A pile of 1000 spheres";  // its count, not "{count}"
+    EXPECT_EQ(titles, (std::vector<std::string>{column, pyramid, column, pyramid, pyramid, pile}));
 }
 
 // The view settings are kept between sessions. A session started with the last one's (a

@@ -96,6 +96,7 @@ private:
     double frameSeconds_ = 0.0;  // s, a running average of the real frame time
     bool screenshotRequested_ = false;
     bool cameraFitted_ = false;  // fitted in the first frame, once the panel's width is known
+    std::string shownTitle_;     // the window title set last
     float screenScale_ = 1.0f;   // the screen's content scale: UI scale 1 there
     float scaleBeforePresenting_ = 1.0f;
     std::vector<ViewLabel> labels_;  // side by side: this frame's labels, measured for the layout
@@ -331,9 +332,14 @@ void WindowApp::loadPreset(int index) {
 }
 
 // The window's title names the scene: in the taskbar, and for a screen reader.
+// The scene's title as the panel shows it ("A pile of 1000 spheres"), set again only when it
+// changes (a new scene, or its count set).
 void WindowApp::showSceneTitle() {
-    const std::string& title = simulation_.scene().title;
-    window_->setTitle(title.empty() ? "Rigid Spheres" : "Rigid Spheres: " + title);
+    const scenes::Scene& scene = simulation_.scene();
+    const std::string title = scene.title.empty() ? "Rigid Spheres" : "Rigid Spheres: " + scenes::withCount(scene.title, scene);
+    if (title == shownTitle_) return;
+    window_->setTitle(title);
+    shownTitle_ = title;
 }
 
 int WindowApp::presetIndexOf(const std::string& path) const {
@@ -471,6 +477,7 @@ void WindowApp::frame(double dt) {
         resetCamera();
     }
     cameraFitted_ = true;
+    showSceneTitle();
     input_.expireMessage(window_->time());
     handleMouse();
     session_.setCatchEveryStep(input_.tools().explainer);
