@@ -14,6 +14,7 @@
 
 #include "app/window/window_settings.h"
 #include "render/image_io.h"
+#include "scenes/scene_json.h"
 
 namespace {
 
@@ -154,6 +155,35 @@ TEST(WindowInteraction, ACountThePileCannotHoldIsRefusedUnderItsSliderAndTheWind
     EXPECT_LT(fraction(image, 5, 40, 420, 679, orange), 0.001) << "orange elsewhere in the panel";
     // The pile (its lattice, paused) is still there, in the view.
     EXPECT_GT(fraction(image, kSceneX0 + 180, 220, 940, 480, saturated), 0.2);
+}
+
+// A student types beta = 1.5 into its slider (Ctrl+click): it is refused under the slider,
+// and beta stays 0.8 (it counts when Enter is pressed, not key by key: the 1 typed on the
+// way was applied before, and the refusal then left it). Typed 0.55, it is applied. Save
+// state writes what the run uses. Positions at 1280x800: beta's slider at (86, 503) in the
+// column's panel as it opens; Save state at (102, 732) once the panel is scrolled to its end
+// (ten wheel notches), where the line under it ("files go to" the working folder) is one line
+// only in a short folder.
+TEST(WindowInteraction, ANumberTypedIntoASliderCountsWhenEnterIsPressed) {
+    if (!haveXvfb() || !haveXdotool()) GTEST_SKIP() << "xvfb-run or xdotool not found";
+    const fs::path folder = fs::path(SPHERES_TEST_OUTPUT_DIR) / "window_typed_value";
+    const auto betaTyped = [&](const std::string& value) {
+        const fs::path saved = folder / ("beta_" + value + ".json");
+        const std::string keys =
+            "xdotool mousemove 86 503 sleep 0.3 keydown ctrl click 1 keyup ctrl sleep 0.5 key ctrl+a\n"
+            "xdotool type --delay 300 " + value + "\n"
+            "xdotool keydown Return sleep 0.3 keyup Return sleep 1\n"
+            "xdotool mousemove 200 500 sleep 0.3 click --repeat 10 --delay 30 5 sleep 1\n"
+            "xdotool mousemove 102 732 sleep 0.3 click 1 sleep 1\n";
+        const int status = runScript(folder, "d=$(mktemp -d /tmp/stXXXXXX); cd \"$d\"\n" +
+                                                 sessionOnTheColumn("--paused", keys) +
+                                                 "cp spheres_output/state_0001.json '" + saved.string() + "'; s=$?\n"
+                                                 "rm -rf \"$d\"; exit $s\n");
+        EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << value << ": Save state was not clicked";
+        return fs::exists(saved) ? scenes::loadScene(saved.string()).params.beta : -1.0;
+    };
+    EXPECT_EQ(betaTyped("1.5"), 0.8);
+    EXPECT_EQ(betaTyped("0.55"), 0.55);
 }
 
 // A teacher presses F5 on the column: the presentation layout (the panel in large type

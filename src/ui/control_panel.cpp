@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include <imgui.h>
+#include <imgui_internal.h>  // TempInputIsActive: a number typed into a slider
 #include <imgui_stdlib.h>
 
 #include "scenes/overrides.h"
@@ -70,8 +71,11 @@ void parameterWidget(const scenes::Parameter& p, const scenes::Scene& scene, Pan
         changed = ImGui::SliderScalar(label.c_str(), ImGuiDataType_Double, &value, &p.min, &p.max,
                                       "%.4g", logarithmic ? ImGuiSliderFlags_Logarithmic : 0);
     }
+    // A number typed into the slider (Ctrl+click) counts once Enter is pressed, not key by
+    // key: typing 1.5 for beta would apply 1 on the way (and a refusal of 1.5 leave it).
+    const bool typing = ImGui::TempInputIsActive(ImGui::GetItemID());
     tooltip(p.tooltip);
-    if (p.applies == scenes::Applies::Live || p.kind == scenes::ParameterKind::Choice) {
+    if ((p.applies == scenes::Applies::Live || p.kind == scenes::ParameterKind::Choice) && !typing && !pending) {
         if (changed) actions.edits.push_back({&p, value});
     } else {
         // A restart rebuilds the world: only when the slider is let go, not on every drag frame.
