@@ -127,20 +127,19 @@ bool orange(glm::u8vec4 p) { return p.x > 200 && p.y > 120 && p.y < 190 && p.z <
 // pile stays; F12 then writes a screenshot and Ctrl+Q ends the session (exit 0).
 // Keys are held for 0.3 s: ImGui misses a key pressed and released within one frame.
 // The panel is scrolled down three wheel notches first (the pile's text is long), so
-// (88, 694) is the N slider at 1280x800 and UI scale 1: a change to the panel above it (the
+// (88, 715) is the N slider at 1280x800 and UI scale 1: a change to the panel above it (the
 // pile's text, its measured claims' line, a new control) moves it, and this test then
 // fails, not passes.
 TEST(WindowInteraction, ACountThePileCannotHoldIsRefusedUnderItsSliderAndTheWindowStays) {
     if (!haveXvfb() || !haveXdotool()) GTEST_SKIP() << "xvfb-run or xdotool not found";
     const fs::path folder = fs::path(SPHERES_TEST_OUTPUT_DIR) / "window_refusal";
-    // Paused: a loaded machine cannot put "behind real time" over the panel, which
-    // would move the slider down a line.
+    // Paused: the pile stays in its lattice for the screenshot.
     const int status = runScript(folder,
                   "'" SPHERES_EXECUTABLE "' --scene 11_pile --paused & pid=$!\n"
                   "w=$(timeout 30 xdotool search --sync --onlyvisible --name 'Rigid Spheres')\n"
                   "xdotool windowfocus --sync $w; sleep 3\n"
                   "xdotool mousemove 200 500 sleep 0.3 click --repeat 3 --delay 30 5 sleep 1\n"
-                  "xdotool mousemove 88 694 sleep 0.3 keydown ctrl click 1 keyup ctrl sleep 0.5 key ctrl+a\n"
+                  "xdotool mousemove 88 715 sleep 0.3 keydown ctrl click 1 keyup ctrl sleep 0.5 key ctrl+a\n"
                   "xdotool type --delay 50 7483\n"  // type takes every argument after it as text
                   "xdotool keydown Return sleep 0.3 keyup Return sleep 0.5 mousemove 700 300 sleep 2 \\\n"
                   "  keydown F12 sleep 0.3 keyup F12 sleep 2 keydown ctrl+q sleep 0.3 keyup ctrl+q\n"
@@ -151,8 +150,8 @@ TEST(WindowInteraction, ACountThePileCannotHoldIsRefusedUnderItsSliderAndTheWind
     ASSERT_TRUE(fs::exists(shot)) << "F12 wrote no screenshot: the window was gone";
     const render::Image image = load(shot.string());
     // The refusal, in orange, under the N slider (the panel's lower left).
-    EXPECT_GT(fraction(image, 5, 704, 420, 774, orange), 0.02);
-    EXPECT_LT(fraction(image, 5, 40, 420, 679, orange), 0.001) << "orange elsewhere in the panel";
+    EXPECT_GT(fraction(image, 5, 725, 420, 795, orange), 0.02);
+    EXPECT_LT(fraction(image, 5, 40, 420, 700, orange), 0.001) << "orange elsewhere in the panel";
     // The pile (its lattice, paused) is still there, in the view.
     EXPECT_GT(fraction(image, kSceneX0 + 180, 220, 940, 480, saturated), 0.2);
 }
@@ -160,7 +159,7 @@ TEST(WindowInteraction, ACountThePileCannotHoldIsRefusedUnderItsSliderAndTheWind
 // A student types beta = 1.5 into its slider (Ctrl+click): it is refused under the slider,
 // and beta stays 0.8 (it counts when Enter is pressed, not key by key: the 1 typed on the
 // way was applied before, and the refusal then left it). Typed 0.55, it is applied. Save
-// state writes what the run uses. Positions at 1280x800: beta's slider at (86, 503) in the
+// state writes what the run uses. Positions at 1280x800: beta's slider at (86, 524) in the
 // column's panel as it opens; Save state at (102, 732) once the panel is scrolled to its end
 // (ten wheel notches), where the line under it ("files go to" the working folder) is one line
 // only in a short folder.
@@ -170,7 +169,7 @@ TEST(WindowInteraction, ANumberTypedIntoASliderCountsWhenEnterIsPressed) {
     const auto betaTyped = [&](const std::string& value) {
         const fs::path saved = folder / ("beta_" + value + ".json");
         const std::string keys =
-            "xdotool mousemove 86 503 sleep 0.3 keydown ctrl click 1 keyup ctrl sleep 0.5 key ctrl+a\n"
+            "xdotool mousemove 86 524 sleep 0.3 keydown ctrl click 1 keyup ctrl sleep 0.5 key ctrl+a\n"
             "xdotool type --delay 300 " + value + "\n"
             "xdotool keydown Return sleep 0.3 keyup Return sleep 1\n"
             "xdotool mousemove 200 500 sleep 0.3 click --repeat 10 --delay 30 5 sleep 1\n"
@@ -184,6 +183,30 @@ TEST(WindowInteraction, ANumberTypedIntoASliderCountsWhenEnterIsPressed) {
     };
     EXPECT_EQ(betaTyped("1.5"), 0.8);
     EXPECT_EQ(betaTyped("0.55"), 0.55);
+}
+
+bool alarmRed(glm::u8vec4 p) { return p.x > 170 && p.y < 120 && p.z < 115 && p.x - p.y > 60; }  // lit or dimmed
+
+// An alarm that fires while the pointer is over the panel waits until it leaves: shown at
+// once, its lines would push every control below them down under the pointer. The bounce
+// under the velocity method at beta = 1 creates energy at its first bounce (t = 0.55 s);
+// the pointer rests on the panel from the start to past it (F12: no alarm's red in the
+// panel), then leaves it (F12: the alarm is there).
+TEST(WindowInteraction, AnAlarmWaitsUntilThePointerLeavesThePanel) {
+    if (!haveXvfb() || !haveXdotool()) GTEST_SKIP() << "xvfb-run or xdotool not found";
+    const fs::path folder = fs::path(SPHERES_TEST_OUTPUT_DIR) / "window_alarm_waits";
+    const int status = runScript(folder,
+                  "'" SPHERES_EXECUTABLE "' --scene 02_bounce_projection --set method=velocity --set beta=1 --paused & pid=$!\n"
+                  "w=$(timeout 30 xdotool search --sync --onlyvisible --name 'Rigid Spheres')\n"
+                  "xdotool windowfocus --sync $w; sleep 2; xdotool mousemove 300 650 sleep 1\n" +
+                  press("p") + "sleep 2\n" + press("F12") + "xdotool mousemove 900 400 sleep 1\n" + press("F12") +
+                  press("ctrl+q") + "wait $pid\n");
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 0);
+    const fs::path over = folder / "spheres_output" / "screenshot_0001.png", left = folder / "spheres_output" / "screenshot_0002.png";
+    ASSERT_TRUE(fs::exists(over) && fs::exists(left)) << "F12 wrote no screenshot";
+    EXPECT_LT(fraction(load(over.string()), 5, 30, 410, 790, alarmRed), 0.0005) << "the alarm pushed the controls";
+    EXPECT_GT(fraction(load(left.string()), 5, 30, 410, 790, alarmRed), 0.002) << "no alarm once the pointer left";
 }
 
 // A teacher presses F5 on the column: the presentation layout (the panel in large type

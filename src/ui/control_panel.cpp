@@ -123,10 +123,10 @@ void propertiesSection(const Readouts& r) {
 }
 
 // Invariant alarms, red while recent, dimmed once older; the hint under each.
-void alarmsSection(const Readouts& r) {
-    if (r.alarms.empty()) return;
+void alarmsSection(const std::vector<Readouts::Alarm>& alarms) {
+    if (alarms.empty()) return;
     ImGui::Separator();
-    for (const Readouts::Alarm& alarm : r.alarms) {
+    for (const Readouts::Alarm& alarm : alarms) {
         wrappedColored(alarm.lit ? kAlarmLit : kAlarmDimmed, alarm.text);
         if (!alarm.hint.empty()) {
             tooltip(alarm.hint);
@@ -175,8 +175,37 @@ void runSection(double& timeScale, const Readouts& r, PanelActions& actions) {
     ImGui::SliderScalar("time scale", ImGuiDataType_Double, &timeScale,
                         &kTimeScaleRange[0], &kTimeScaleRange[1], "%.3g x", ImGuiSliderFlags_Logarithmic);
     tooltip("Simulated seconds per real second: below 1 is slow motion. The step h does not change.");
-    ImGui::Text("t = %.3f s   %llu solver steps   %zu spheres", r.time, static_cast<unsigned long long>(r.steps), r.sphereCount);
-    if (r.behindRealTime) ImGui::TextColored({1.0f, 0.55f, 0.2f, 1.0f}, "behind real time: lower the time scale or N");
+    ImGui::Text("t = %.3f s   %llu solver steps   %zu %s", r.time, static_cast<unsigned long long>(r.steps), r.sphereCount,
+                r.sphereCount == 1 ? "sphere" : "spheres");
+    // A line of its own whatever it says: a warning that came and went moved every slider
+    // under it by a line, under the pointer.
+    if (r.behindRealTime) {
+        ImGui::TextColored({1.0f, 0.55f, 0.2f, 1.0f}, "behind real time: lower the time scale or N");
+    } else {
+        ImGui::TextDisabled(r.paused ? "paused" : "keeping up with real time");
+    }
+}
+
+// The alarms the panel shows. While the pointer is over the panel they stay as they were
+// when it came (a new one, several lines high, would push every control below it down
+// under the pointer: a click meant for h landed on substeps); the title counts the new ones.
+const std::vector<Readouts::Alarm>& alarmsToShow(const Readouts& r, PanelState& state, std::size_t& unseen) {
+    unseen = 0;
+    if (!state.pointerOverPanel) {
+        state.alarmsShown = r.alarms;
+        return state.alarmsShown;
+    }
+    for (const Readouts::Alarm& alarm : r.alarms) {
+        const auto same = [&](const Readouts::Alarm& shown) { return shown.text == alarm.text; };
+        unseen += std::none_of(state.alarmsShown.begin(), state.alarmsShown.end(), same);
+    }
+    return state.alarmsShown;
+}
+
+std::string panelTitle(std::size_t unseenAlarms) {
+    if (unseenAlarms == 0) return "Rigid spheres###Panel";
+    return std::to_string(unseenAlarms) + (unseenAlarms == 1 ? " new alarm" : " new alarms") +
+           " (shown when the pointer leaves)###Panel";
 }
 
 void sceneSection(const scenes::Scene& scene, PanelState& state, const std::vector<std::string>& presets,
@@ -461,7 +490,11 @@ PanelActions drawControlPanel(const scenes::Scene& scene, double& timeScale, con
     const ImGuiViewport* viewport = ImGui::GetMainViewport();
     ImGui::SetNextWindowPos(viewport->WorkPos, ImGuiCond_Always);
     ImGui::SetNextWindowSize(ImVec2(panelWidth(state, viewport->WorkSize.x), viewport->WorkSize.y), ImGuiCond_Always);
-    ImGui::Begin("Rigid spheres", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+    std::size_t unseenAlarms = 0;
+    const std::vector<Readouts::Alarm>& alarms = alarmsToShow(readouts, state, unseenAlarms);
+    ImGui::Begin(panelTitle(unseenAlarms).c_str(), nullptr,
+                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+    state.pointerOverPanel = ImGui::IsWindowHovered(ImGuiHoveredFlags_ChildWindows | ImGuiHoveredFlags_AllowWhenBlockedByActiveItem);
     if (state.scrollToTop) {  // a new scene: its title and text are what the class reads first
         ImGui::SetScrollY(0.0f);
         state.scrollToTop = false;
@@ -479,7 +512,7 @@ PanelActions drawControlPanel(const scenes::Scene& scene, double& timeScale, con
         return actions;
     }
     runSection(timeScale, readouts, actions);
-    alarmsSection(readouts);
+    alarmsSection(alarms);
     if (ImGui::CollapsingHeader("Lecture parameters", ImGuiTreeNodeFlags_DefaultOpen)) {
         for (const scenes::Parameter& p : scenes::parameterTable()) {
             if (p.applies != scenes::Applies::Live || !p.availableIn(scene)) continue;

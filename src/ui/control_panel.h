@@ -27,6 +27,13 @@ constexpr double kTimeScaleRange[2] = {0.01, 4.0};
 constexpr float kUiScaleRange[2] = {0.75f, 3.0f};
 
 // The panel's own settings, kept between frames.
+// An invariant alarm as the panel shows it (Readouts::alarms).
+struct Alarm {
+    std::string text;
+    std::string hint;  // why: shown under it
+    bool lit = false;  // fired recently: bright red; else dimmed
+};
+
 struct PanelState {
     bool visible = true;
     // The presentation layout (F5, --present): large type, only the scene's title, text
@@ -63,6 +70,10 @@ struct PanelState {
     std::string notice;
     bool noticeIsError = false;
     std::string outputFolder;
+    // Whether the pointer was over the panel in the last frame, and the alarms it showed
+    // then: they stay while the pointer is there (drawControlPanel).
+    bool pointerOverPanel = false;
+    std::vector<Alarm> alarmsShown;
 };
 
 // Where the last frame's wall time went. A software GL draws after the draw calls
@@ -109,11 +120,7 @@ struct Readouts {
     };
     std::vector<Property> properties;
     // Invariant alarms (app/alarms.h), most serious first.
-    struct Alarm {
-        std::string text;
-        std::string hint;  // why: shown under it
-        bool lit = false;  // fired recently: bright red; else dimmed
-    };
+    using Alarm = ui::Alarm;
     std::vector<Alarm> alarms;
     // Measured restitution of floor bounces (app/restitution.h), shown by the beta slider.
     double betaSquared = 0.0;
