@@ -196,6 +196,36 @@ TEST(SideBySide, ASceneThatAsksForViewsOpensThemAndTheNextSceneClosesThem) {
     EXPECT_EQ(session.runCount(), 2);
 }
 
+// Side by side, a sphere clicked in a view is that view's: the inspector and the
+// explanation read its run. On slide 14's column (A: shock off, 1 pass; C: shock on, 1
+// pass) sphere 6 sits in a squashed column in A and in one standing as built in C: the
+// contacts explained differ by that much.
+TEST(SideBySide, ASphereSelectedInAViewIsThatViewsSphere) {
+    const auto deepestExplained = [](int view) {
+        app::Simulation simulation(preset("21_shock_column"));
+        app::Session session(simulation);
+        session.sceneChanged();
+        EXPECT_EQ(session.runCount(), 4);
+        session.select(6, view);
+        EXPECT_EQ(session.selectedView(), view);
+        for (int k = 0; k < session.runCount(); ++k) session.run(k).setSelectedSphere(6);  // as the views do
+        for (int frame = 0; frame < 120; ++frame) session.advance(kFrame);
+        double deepest = 0.0;  // m
+        for (const physics::ContactEvent& event : session.latestContacts().events) deepest = std::max(deepest, event.depth);
+        return deepest;
+    };
+    const double inA = deepestExplained(0), inC = deepestExplained(2);
+    std::printf("deepest explained: A %.3g m, C %.3g m\n", inA, inC);
+    EXPECT_GT(inA, 0.10 * 0.05);  // m: squashed, 13.6 % of r = 5 cm measured
+    EXPECT_LT(inC, 0.01 * 0.05);  // the sag of one solver step, 0.34 % measured
+    app::Simulation simulation(preset("21_shock_column"));
+    app::Session session(simulation);
+    session.sceneChanged();
+    session.select(6, 3);
+    session.stopComparison();
+    EXPECT_EQ(session.selectedView(), 0);  // the view is gone: run 0's sphere
+}
+
 // ---------------------------------------------------------------- capture --compare
 
 class CaptureCompare : public ::testing::Test {

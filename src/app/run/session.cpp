@@ -184,7 +184,7 @@ Session::Contacts contactsOf(const std::vector<physics::ContactEvent>& all, int 
 }  // namespace
 
 void Session::noteContacts() {
-    const physics::World& world = primary_.world();
+    const physics::World& world = run(selectedView()).world();
     Contacts contacts = contactsOf(world.contacts, selected_, world.time, world.stepCount);
     if (!contacts.events.empty()) latest_ = std::move(contacts);
 }
@@ -205,10 +205,11 @@ void Session::startAgain() {
     keep();
 }
 
-void Session::select(int index) {
-    const int previous = selected_;
+void Session::select(int index, int view) {
+    const int previous = selected_, previousView = selectedView();
     selected_ = index >= 0 && static_cast<std::size_t>(index) < primary_.world().size() ? index : -1;
-    if (selected_ != previous) latest_ = {};
+    selectedView_ = view >= 0 && view < runCount() ? view : 0;
+    if (selected_ != previous || selectedView() != previousView) latest_ = {};
 }
 
 void Session::edited() {
@@ -244,7 +245,7 @@ std::string Session::editSelected(const SphereFields& fields) {
 bool Session::beginDrag(int view, std::size_t index, const render::Ray& ray, const glm::vec3& facing, double time) {
     dragView_ = view < runCount() ? view : 0;
     if (!drag_.begin(run(dragView_).world(), index, ray, facing, time)) return false;
-    select(static_cast<int>(index));
+    select(static_cast<int>(index), view);
     return true;
 }
 

@@ -58,7 +58,10 @@ public:
 
     // ---- the selected sphere (-1: none) ----
     int selected() const { return selected_; }
-    void select(int index);
+    // Selects sphere `index` as seen in run `view` (the view clicked): the inspector and the
+    // explanation show that run's sphere and contacts (run 0 once that run is gone).
+    void select(int index, int view = 0);
+    int selectedView() const { return selectedView_ < runCount() ? selectedView_ : 0; }
     // Puts the fields into every run (sphere `selected()`), and keeps the new state.
     // Refused, with every run unchanged, when checkSphereFields refuses them: "" or
     // the one-line reason.
@@ -83,7 +86,7 @@ public:
     void stepForward() { scrubTo(timeline().cursor() + 1); }
 
     // ---- for the views ----
-    // The selected sphere's contact responses of the latest step that had any (run 0):
+    // The selected sphere's contact responses of the latest step that had any (in run selectedView()):
     // a bounce lasts one step, so the explainer keeps showing it after it. Empty when
     // none was recorded since the selection (Simulation records contacts while a
     // sphere is selected).
@@ -123,6 +126,7 @@ private:
     std::vector<RewindBuffer> rewind_;  // one per run
     std::size_t timelineBytes_;         // for one or two runs; more share twice as much
     int selected_ = -1;
+    int selectedView_ = 0;
     SphereDrag drag_;
     Contacts latest_;
     bool catchEveryStep_ = false;

@@ -141,13 +141,17 @@ void drawMessage(const glm::vec4& scene, const ToolWindowsState& state) {
     ImGui::End();
 }
 
-float drawInspector(const Placement& placement, const physics::World& world, int selected, bool paused,
+float drawInspector(const Placement& placement, const physics::World& world, int selected, char view, bool paused,
                     int graphLevel, ToolWindowsState& state, ToolActions& actions) {
     if (selected < 0 || static_cast<std::size_t>(selected) >= world.size()) return 0.0f;
     const auto i = static_cast<std::size_t>(selected);
     place(placement);
     char title[64];
-    std::snprintf(title, sizeof title, "Sphere #%d###inspector", selected);
+    if (view != '\0') {  // side by side: which view's sphere the numbers are
+        std::snprintf(title, sizeof title, "Sphere #%d in view %c###inspector", selected, view);
+    } else {
+        std::snprintf(title, sizeof title, "Sphere #%d###inspector", selected);
+    }
     ImGui::Begin(title, nullptr, kFixed | ImGuiWindowFlags_NoCollapse);
     ImGui::PushItemWidth(-ImGui::GetFontSize() * 3.5f);  // the fields take the width the labels leave
     SphereFields fields{world.position[i], world.velocity[i], world.radius[i], world.mass[i]};
@@ -344,7 +348,8 @@ Placement docked(const Rect& rect, bool fitHeight) {
 ToolActions drawInteractionWindows(const Session& session, const WindowLayout& layout, std::vector<ViewLabel> labels,
                                    ToolWindowsState& state) {
     ToolActions actions;
-    const Simulation& simulation = session.run(0);
+    // The sphere as seen in the view it was clicked in (side by side, each run has its own).
+    const Simulation& simulation = session.run(session.selectedView());
     const physics::World& world = simulation.world();
     const RewindBuffer& timeline = session.timeline();
     TimelineInfo info;
@@ -365,8 +370,9 @@ ToolActions drawInteractionWindows(const Session& session, const WindowLayout& l
     const int level = showsLevel ? simulation.contactGraph().level[std::size_t(selected)] : kLevelNotShown;
     state.inspectorHeight = 0.0f;
     if (!layout.inspector.empty()) {
-        state.inspectorHeight = drawInspector(docked(layout.inspector, true), world, selected, simulation.paused,
-                                              level, state, actions);
+        const char view = comparison ? char('A' + session.selectedView()) : '\0';
+        state.inspectorHeight = drawInspector(docked(layout.inspector, true), world, selected, view,
+                                              session.run(0).paused, level, state, actions);
     } else if (selected >= 0) {
         state.inspectorHeight = 10.0f * ImGui::GetFontSize();  // room for it from the next frame on
     }
@@ -374,7 +380,7 @@ ToolActions drawInteractionWindows(const Session& session, const WindowLayout& l
         const Session::Contacts& contacts = session.latestContacts();
         drawExplainer(docked(layout.explainer, false),
                       {selected, &contacts.events, contacts.time, contacts.steps, world.time, world.boxPlaneCount,
-                       &simulation.params(), simulation.paused, world.recordContacts, &contacts.solvedTogether},
+                       &simulation.params(), session.run(0).paused, world.recordContacts, &contacts.solvedTogether},
                       state, actions);
     }
     for (std::size_t k = 0; k < labels.size() && k < std::size_t(kMostViews); ++k) {

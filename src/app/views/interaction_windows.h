@@ -78,10 +78,11 @@ struct Placement {
 };
 
 // The selected sphere's p, v, r, m, editable while paused, and its level in slide 14's
-// contact graph (`graphLevel`: -1 reaches no plane; kLevelNotShown: not shown). Returns
-// the height its content needs (ImGui units), 0 when nothing was drawn.
+// contact graph (`graphLevel`: -1 reaches no plane; kLevelNotShown: not shown); `view`
+// names the view side by side whose sphere it is ('\0': one view). Returns the height its
+// content needs (ImGui units), 0 when nothing was drawn.
 constexpr int kLevelNotShown = -2;
-float drawInspector(const Placement& placement, const physics::World& world, int selected, bool paused,
+float drawInspector(const Placement& placement, const physics::World& world, int selected, char view, bool paused,
                     int graphLevel, ToolWindowsState& state, ToolActions& actions);
 
 // What the explainer explains: the selected sphere's latest contact responses.

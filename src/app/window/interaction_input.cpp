@@ -55,7 +55,7 @@ bool InteractionInput::handleMouse(const ViewLayout& views, const render::Camera
     if (ImGui::IsMouseReleased(ImGuiMouseButton_Left) && pressInScene_ &&
         io.MouseDragMaxDistanceSqr[ImGuiMouseButton_Left] < kClickPixels * kClickPixels) {
         if (const int view = views.viewAt(mouse); view >= 0) {
-            session_.select(pickSphere(session_.run(view).world(), views.ray(camera, view, mouse)));
+            session_.select(pickSphere(session_.run(view).world(), views.ray(camera, view, mouse)), view);
         }
     }
     return false;
