@@ -374,7 +374,13 @@ TEST(Overlays, TheContactGraphShowsEachLevelInItsColour) {
     for (int level = 0; level < 5; ++level) {  // the spheres take their level's colour too
         EXPECT_TRUE(sameColor(snapshot.colors[std::size_t(level)], app::levelColor(level))) << "sphere " << level;
     }
-    EXPECT_TRUE(sameColor(app::levelColor(6), app::levelColor(0)));  // the colours repeat every six levels
+    // The hues repeat every six levels, darker from 6, paler from 12, palest from 18: each of
+    // the column of twenty's levels has a colour of its own, and only level 0 is its red.
+    for (int a = 0; a < 24; ++a) {
+        for (int b = a + 1; b < 24; ++b) EXPECT_FALSE(sameColor(app::levelColor(a), app::levelColor(b))) << a << " " << b;
+        EXPECT_FALSE(sameColor(app::levelColor(a), app::kNoLevelColor)) << a;
+    }
+    EXPECT_TRUE(sameColor(app::levelColor(24), app::levelColor(0)));
     EXPECT_TRUE(sameColor(app::levelColor(-1), app::kNoLevelColor));
 }
 

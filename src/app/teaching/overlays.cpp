@@ -310,9 +310,21 @@ void appendPenetration(const std::vector<Overlap>& overlaps, render::FrameSnapsh
     }
 }
 
+// Levels 0-5 in their hues, 6-11 the same darker, 12-17 paler, 18-23 palest, then the four
+// again: in the column of twenty every level has its own colour, and level 6 is no longer
+// level 0's red ("touches a plane").
 glm::u8vec4 levelColor(int level) {
     constexpr int kColors = sizeof kLevelColors / sizeof kLevelColors[0];
-    return level < 0 ? kNoLevelColor : kLevelColors[level % kColors];
+    if (level < 0) return kNoLevelColor;
+    const glm::vec3 hue(kLevelColors[level % kColors]), white(255.0f);
+    glm::vec3 shaded = hue;
+    switch (level / kColors % 4) {
+        case 1: shaded = 0.55f * hue; break;                   // darker
+        case 2: shaded = hue + 0.5f * (white - hue); break;    // paler
+        case 3: shaded = hue + 0.75f * (white - hue); break;   // palest
+        default: break;
+    }
+    return {glm::u8vec3(glm::round(shaded)), 255};
 }
 
 void appendContactGraph(const physics::World& world, const physics::ContactGraph& graph,
@@ -380,7 +392,7 @@ std::vector<LegendLine> overlayLegend(const OverlayFlags& flags, std::size_t sph
     }
     if (flags.graph) {
         lines.push_back({"contact graph: spheres and links by level from the floor, 0 red, 1 orange, 2 yellow, "
-                         "3 green, 4 cyan, 5 blue, then red again; grey reaches no plane",
+                         "3 green, 4 cyan, 5 blue, then darker from 6, paler from 12, palest from 18; grey reaches no plane",
                          levelColor(1)});  // not red: the penetration line above is
     }
     return lines;

@@ -65,8 +65,8 @@ constexpr glm::u8vec4 kContactPointColor{255, 225, 0, 255};  // yellow
 constexpr glm::u8vec4 kImpulseColor{255, 255, 255, 255};    // white
 constexpr glm::u8vec4 kPenetrationColor{235, 20, 20, 255};  // red
 constexpr glm::u8vec4 kOutlineColor{20, 22, 30, 255};       // under every arrow, for contrast
-// The contact graph's levels from the floor up (level k: kLevelColors[k % 6]), and the
-// spheres that reach no plane.
+// The contact graph's levels from the floor up (level k: kLevelColors[k % 6], darker for
+// 6-11, paler for 12-17, palest for 18-23: levelColor), and the spheres that reach no plane.
 constexpr glm::u8vec4 kLevelColors[] = {{230, 40, 40, 255},  {255, 140, 0, 255},  {240, 220, 0, 255},
                                         {40, 200, 60, 255},  {0, 200, 225, 255},  {70, 90, 255, 255}};
 constexpr glm::u8vec4 kNoLevelColor{150, 150, 160, 255};
