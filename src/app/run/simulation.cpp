@@ -6,6 +6,8 @@
 #include <functional>
 #include <utility>
 
+#include "scenes/parameters.h"
+
 namespace app {
 
 Simulation::Simulation(scenes::Scene scene) : scene_(std::move(scene)) { restart(); }
@@ -35,6 +37,8 @@ void Simulation::startFrom(physics::World world) {
     claims_ = scenes::LiveClaims(scene_);
     claimsInterrupted_ = false;
     claimsParameters_ = scenes::tableValues(scene_);
+    settingsAtLastStep_.clear();
+    settingsChange_ = {};
     claims_.observe(world_);
     claimsState_ = physics::stateHash(world_);
     updateRecording();
@@ -164,7 +168,22 @@ bool Simulation::beforeStep() {
     energyBefore_ = physics::modifiedEnergy(world_, scene_.params);
     sizeBefore_ = world_.size();
     watchClaims();
+    noteSettingsChange();
     return true;
+}
+
+void Simulation::noteSettingsChange() {
+    std::vector<double> now = scenes::tableValues(scene_);
+    if (!settingsAtLastStep_.empty() && now != settingsAtLastStep_) {
+        settingsChange_ = {world_.time, ""};
+        const std::vector<scenes::Parameter>& table = scenes::parameterTable();
+        for (std::size_t k = 0; k < table.size() && k < now.size(); ++k) {
+            if (now[k] == settingsAtLastStep_[k]) continue;
+            if (!settingsChange_.what.empty()) settingsChange_.what += ", ";
+            settingsChange_.what += std::string(table[k].name) + " = " + scenes::formatValue(table[k], scene_);
+        }
+    }
+    settingsAtLastStep_ = std::move(now);
 }
 
 void Simulation::afterStep() {
@@ -179,7 +198,7 @@ void Simulation::afterStep() {
     const bool checkEnergy = !skipEnergyCheck_ && world_.size() == sizeBefore_;
     skipEnergyCheck_ = false;
     alarms_.checkEvents(lastStats_, scene_.params, world_.time);
-    if (!alarms_.checkStep(world_, scene_.params, checkEnergy ? energyBefore_ : energyAfter, energyAfter)) {
+    if (!alarms_.checkStep(world_, scene_.params, checkEnergy ? energyBefore_ : energyAfter, energyAfter, settingsChange_)) {
         paused = true;
         return;
     }

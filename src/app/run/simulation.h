@@ -117,6 +117,7 @@ private:
     void afterStep();
     void measureNow();
     void updateRecording();
+    void noteSettingsChange();
 
     scenes::Scene scene_;
     physics::World world_;
@@ -143,6 +144,10 @@ private:
     std::uint64_t claimsState_ = 0;
     std::vector<double> claimsParameters_;
     bool claimsInterrupted_ = false;
+    // The live settings at the last step, and the last change of them since the restart:
+    // the energy alarm's why when the new settings lift what the old ones let sink.
+    std::vector<double> settingsAtLastStep_;
+    SettingsChange settingsChange_;
     void watchClaims();  // before a step: stop the claims if the run was changed by hand
     mutable physics::ContactGraph graph_;  // contactGraph(), for the state whose hash is graphOf_
     mutable std::uint64_t graphOf_ = 0;

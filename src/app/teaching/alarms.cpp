@@ -89,7 +89,17 @@ bool energyCreated(double before, double after, double scale, const physics::Par
 // from 0.98; test_canonical_checks).
 constexpr double kProjectionLiftsFromMu = 0.87;
 
-std::string energyHint(const physics::Params& params) {
+// s: how long after a change of the settings a rise of E~ is put down to it (a column
+// squashed by one pass stands up again within a few steps once shock propagation is on).
+constexpr double kSettingsAftermath = 1.0;
+
+std::string energyHint(const physics::Params& params, const SettingsChange& change, double now) {
+    if (change.time >= 0.0 && now - change.time <= kSettingsAftermath) {
+        return "the settings changed at t = " + formatted("%.3f", change.time) + " s (" + change.what +
+               "): the new ones push apart the overlaps the old ones left, lifting the spheres that had sunk into "
+               "each other, and E~ gets back the potential energy the sinking lost (R restarts with the new "
+               "settings)";
+    }
     if (params.solver == physics::Solver::Simultaneous) {
         return "the simultaneous solver answers each contact as if it were alone and sums the answers: a sphere "
                "hit from several sides at once can leave faster than it came (slide 14: the global approach "
@@ -206,7 +216,8 @@ bool Alarms::recordNonFinite(const physics::World& world) {
 
 bool Alarms::checkFinite(const physics::World& world) { return recordNonFinite(world); }
 
-bool Alarms::checkStep(const physics::World& world, const physics::Params& params, double before, double after) {
+bool Alarms::checkStep(const physics::World& world, const physics::Params& params, double before, double after,
+                       const SettingsChange& change) {
     if (!std::isfinite(after) || !std::isfinite(before)) {
         // E~ sums every position, velocity and mass: the scan says which one.
         if (!recordNonFinite(world)) return false;
@@ -216,7 +227,8 @@ bool Alarms::checkStep(const physics::World& world, const physics::Params& param
     if (energyCreated(before, after, scale, params, energySlack(world, params))) {
         // Shown as a share of E~ before the step, as a student computes it from the plot
         // (the scale only decides whether it is a rise at all).
-        fire(AlarmKind::EnergyCreated, world.time, relativeEnergyRise(before, after, std::abs(before)), energyHint(params));
+        fire(AlarmKind::EnergyCreated, world.time, relativeEnergyRise(before, after, std::abs(before)),
+             energyHint(params, change, world.time));
     }
     // Fires when more spheres are outside than ever before (most stay there).
     outsideNow_ = physics::spheresOutsideBox(world, 0.0);

@@ -108,6 +108,13 @@ struct AlarmLine {
     bool lit = false;  // fired within kAlarmHoldSeconds (or still true)
 };
 
+// The last change of the live settings since the restart: when (s, simulated; negative:
+// none) and what ("shock = on").
+struct SettingsChange {
+    double time = -1.0;
+    std::string what;
+};
+
 class Alarms {
 public:
     void clear();
@@ -115,9 +122,11 @@ public:
     // Before a step: false (and the non-finite alarm set) when the world holds a
     // value that is not finite; the step must not run (the broad phase cannot place it).
     bool checkFinite(const physics::World& world);
-    // After a step that took E~ from `before` to `after` (J, both with `params`).
-    // Returns false when the step left a value that is not finite.
-    bool checkStep(const physics::World& world, const physics::Params& params, double before, double after);
+    // After a step that took E~ from `before` to `after` (J, both with `params`); `change`:
+    // the settings' last change, which may explain a rise. Returns false when the step
+    // left a value that is not finite.
+    bool checkStep(const physics::World& world, const physics::Params& params, double before, double after,
+                   const SettingsChange& change = {});
     // On each new measurement (once per frame).
     void checkMeasurement(const physics::Diagnostics& diagnostics, const physics::Params& params, double time);
     // After a step: whether a continuous step reached the cap on impacts (StepStats::cappedSteps).
