@@ -119,6 +119,22 @@ class VariantRun {
     double end_ = 0.0;
 };
 
+// A setting claim's value as the panel names it: "method = position", not "0".
+std::string settingShown(const Claim& c, const ClaimCheck& check) {
+    const Parameter* p = findParameter(c.parameter);
+    const auto shown = [&](double value) {
+        if (p->kind == ParameterKind::Choice && value >= 0.0 && value < double(p->choices.size())) {
+            return p->choiceShown(std::size_t(value));
+        }
+        return formatNumber(value);
+    };
+    std::optional<double> value = check.value;  // a setting holds throughout: any sample is it
+    if (!value && !check.samples.empty()) value = check.samples.back();
+    std::string text = std::string(p->name) + " = " + (value ? shown(*value) : "nothing measured");
+    if (!check.holds && c.near) text += ", expected " + shown(*c.near);
+    return text;
+}
+
 void judge(ClaimCheck& check, const std::vector<double>* ratioSamples) {
     const Claim& c = *check.claim;
     check.value = taken(c, check.samples);
@@ -138,7 +154,7 @@ void judge(ClaimCheck& check, const std::vector<double>* ratioSamples) {
         else out << "nothing measured";
     }
     if (!check.holds) out << ", expected " << expected(c);
-    check.measured = out.str();
+    check.measured = c.measure == "setting" ? settingShown(c, check) : out.str();
 }
 
 }  // namespace

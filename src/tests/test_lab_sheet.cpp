@@ -235,3 +235,22 @@ TEST(ClaimsCommandLine, AClaimThatFailsIsMarkedAndTheExitCodeSaysSo) {
     EXPECT_EQ(missing.rfind("spheres: ", 0), 0u) << missing;
     EXPECT_EQ(countOf(missing, "\n"), 1) << missing;
 }
+
+// A claim about a setting reads as the panel names the setting ("method = position", not
+// "setting = 0"); one that fails says the value the text expected, by its name too.
+TEST(ClaimsCommandLine, ASettingIsNamedByItsValue) {
+    scenes::Scene scene = scenes::loadScene(scenes::presetPath("21_shock_column"));
+    std::vector<std::string> measured;
+    for (const scenes::ClaimCheck& check : scenes::checkClaims(scene)) {
+        if (check.claim->measure == "setting") measured.push_back(check.measured);
+    }
+    EXPECT_EQ(measured, (std::vector<std::string>{"method = position", "passes = 1", "shock = off", "shock = on"}));
+    scene.claims = {scene.claims[1]};  // "position based": method near 0
+    scene.claims[0].near = 1.0;        // velocity
+    const std::vector<scenes::ClaimCheck> wrong = scenes::checkClaims(scene);
+    ASSERT_EQ(wrong.size(), 1u);
+    EXPECT_FALSE(wrong[0].holds);
+    EXPECT_EQ(wrong[0].measured, "method = position, expected velocity");
+    const auto [output, code] = runSpheres("claims --scene 21_shock_column");
+    EXPECT_NE(output.find("  \u2713 \"A, shock propagation off\": shock = off\n"), std::string::npos) << output;
+}
