@@ -7,7 +7,10 @@
 #include <string>
 #include <vector>
 
+#include <imgui.h>
+
 #include "app/views/window_layout.h"
+#include "ui/wrapped_text.h"
 
 namespace {
 
@@ -185,4 +188,24 @@ TEST(WindowLayout, TheBoxAspectFollowsTheBoxAndTheAngles) {
     EXPECT_NEAR(cube, 0.93f, 0.01f);
     const float column = app::boxAspectOnScreen(camera, glm::vec3(-0.5f, -0.5f, 0), glm::vec3(0.5f, 0.5f, 2.5f));
     EXPECT_NEAR(column, 0.48f, 0.01f);
+}
+
+// The panel's and the labels' text wraps at spaces, never beside '=' (a view's label
+// "A shock = off, passes = 1" broke into "passes =" / "1"), and a word wider than the
+// line (a hash in a narrow label) is cut where the line is full rather than clipped.
+TEST(WrappedText, KeepsNameEqualsValueWholeAndCutsAWordWiderThanTheLine) {
+    ImGuiContext* context = ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    io.DisplaySize = ImVec2(800.0f, 600.0f);
+    unsigned char* pixels = nullptr;
+    int width = 0, height = 0;
+    io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);  // builds the default font
+    ImGui::NewFrame();
+    const float glyph = ImGui::CalcTextSize("0").x;  // the default font's digits are all as wide
+    EXPECT_EQ(ui::wrapAtSpaces("shock = off, passes = 1", ImGui::CalcTextSize("shock = off, passes =").x),
+              "shock = off,\npasses = 1");
+    EXPECT_EQ(ui::wrapAtSpaces("hash bf78370cf05532d3", 10.5f * glyph), "hash\nbf78370cf0\n5532d3");
+    EXPECT_EQ(ui::wrapAtSpaces("files go to /tmp/a/b", ImGui::CalcTextSize("files go to /tmp/").x), "files go to\n/tmp/a/b");
+    ImGui::EndFrame();
+    ImGui::DestroyContext(context);
 }

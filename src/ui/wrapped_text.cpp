@@ -10,20 +10,46 @@ namespace {
 
 float widthOf(std::string_view text) { return ImGui::CalcTextSize(text.data(), text.data() + text.size()).x; }
 
-// Where a line that starts at text[0] ends: after as many whole words (up to a
-// space, which the break eats) as fit `width`, at least one. A first word wider than
-// the line (a long path) breaks after its last '/' that fits, if it has one.
+// The next space at or after `from` where a line may break: not one beside '=', so that
+// "passes = 1" stays on one line.
+std::size_t nextBreak(std::string_view text, std::size_t from) {
+    for (std::size_t at = text.find(' ', from); at != std::string_view::npos; at = text.find(' ', at + 1)) {
+        const bool besideEquals = (at > 0 && text[at - 1] == '=') || (at + 1 < text.size() && text[at + 1] == '=');
+        if (!besideEquals) return at;
+    }
+    return text.size();
+}
+
+// The longest start of `word` that fits `width`, cut between characters (not inside a
+// UTF-8 sequence), at least one character.
+std::size_t cutToFit(std::string_view word, float width) {
+    std::size_t fits = 0;
+    for (std::size_t at = 1; at <= word.size(); ++at) {
+        if (at < word.size() && (static_cast<unsigned char>(word[at]) & 0xC0) == 0x80) continue;  // inside a character
+        if (widthOf(word.substr(0, at)) > width) break;
+        fits = at;
+    }
+    if (fits > 0) return fits;
+    std::size_t one = 1;
+    while (one < word.size() && (static_cast<unsigned char>(word[one]) & 0xC0) == 0x80) ++one;
+    return one;
+}
+
+// Where a line that starts at text[0] ends: after as many whole words (up to a space,
+// which the break eats) as fit `width`, at least one. A first word wider than the line
+// breaks after its last '/' that fits (a long path), else where the line is full (a hash
+// in a narrow label: cut, not clipped).
 std::size_t lineEnd(std::string_view text, float width) {
-    std::size_t end = std::min(text.find(' ', 1), text.size());
+    std::size_t end = nextBreak(text, 1);
     if (widthOf(text.substr(0, end)) > width) {
         for (std::size_t slash = text.rfind('/', end - 1); slash != std::string_view::npos && slash > 0;
              slash = text.rfind('/', slash - 1)) {
             if (widthOf(text.substr(0, slash + 1)) <= width) return slash + 1;
         }
-        return end;
+        return text.find(' ') < end ? end : cutToFit(text.substr(0, end), width);  // "a = b" stays whole
     }
     while (end < text.size()) {
-        const std::size_t next = std::min(text.find(' ', end + 1), text.size());
+        const std::size_t next = nextBreak(text, end + 1);
         if (widthOf(text.substr(0, next)) > width) break;
         end = next;
     }
