@@ -39,6 +39,10 @@ const Keys kClaimKeys = {"says", "in",   "set", "measure", "sphere", "plane", "n
 const Keys kKinds = {"lattice", "random"};
 constexpr double kMaxTilt = 90.0;                   // degrees
 constexpr double kMaxInteger = 9007199254740992.0;  // whole numbers beyond 2^53 are not exact
+// The largest size (m), mass (kg), density, speed (m/s), coordinate (m) or time (s) a scene
+// file may give, and 1 over it the smallest positive one: far beyond any scene, and the
+// energies they make stay finite.
+constexpr double kPhysical = 1e9;
 
 // Control characters (a newline in a key) would break the one-line message.
 std::string oneLine(std::string text) {
@@ -143,13 +147,21 @@ class SceneReader {
         return v.get<double>();
     }
 
+    // A size, a mass, a density: positive, and within kPhysical of 1 (1e308 kg loaded, and
+    // its energy was infinite at the first step).
     double positive(const Json& v, const std::string& pointer, const char* unit) const {
         const double x = number(v, pointer);
         if (!(x > 0)) {
             fail(pointer,
                  where(pointer) + " = " + formatNumber(x) + " must be positive (" + unit + ")");
         }
+        if (x < 1.0 / kPhysical || x > kPhysical) outOfRange(pointer, x, 1.0 / kPhysical, kPhysical, unit);
         return x;
+    }
+
+    [[noreturn]] void outOfRange(const std::string& pointer, double x, double min, double max, const char* unit) const {
+        fail(pointer, where(pointer) + " = " + formatNumber(x) + " is out of range [" + formatNumber(min) + ", " +
+                          formatNumber(max) + "]" + (*unit ? std::string(" (") + unit + ")" : ""));
     }
 
     double inRange(const Json& v, const std::string& pointer, double min, double max) const {
@@ -180,8 +192,13 @@ class SceneReader {
                               typeName(v) +
                               (v.is_array() ? " of " + std::to_string(v.size()) : ""));
         }
-        return {number(v[0], pointer + "/0"), number(v[1], pointer + "/1"),
-                number(v[2], pointer + "/2")};
+        glm::dvec3 x;
+        for (int i = 0; i < 3; ++i) {
+            const std::string at = pointer + "/" + std::to_string(i);
+            x[i] = number(v[i], at);
+            if (std::abs(x[i]) > kPhysical) outOfRange(at, x[i], -kPhysical, kPhysical, "");
+        }
+        return x;
     }
 
     std::string string(const Json& object, const std::string& pointer, const char* key) const {
@@ -464,6 +481,7 @@ class SceneReader {
         if (const Json* time = find(root, "time")) {
             scene.snapshot = true;
             scene.time = nonNegative(*time, "/time", "s");
+            if (scene.time > kPhysical) outOfRange("/time", scene.time, 0.0, kPhysical, "s");
         }
         if (const Json* steps = find(root, "steps")) {
             integerOrNumber(*steps, "/steps", true);

@@ -107,6 +107,20 @@ TEST(SceneFile, RefusesNonPositiveRadiusAndMass) {
                 {"generate[0].density = -5 must be positive (kg/m^3)"});
 }
 
+// Sizes, masses, coordinates and times beyond 1e9 (or positive ones below 1e-9) in their
+// units: 1e308 kg loaded, and the first step's energy was infinite.
+TEST(SceneFile, RefusesMagnitudesNoSceneHas) {
+    expectError(R"({"spheres": [{"p": [0, 0, 0.5], "m": 1e308}]})", "1:38",
+                {"spheres[0].m = 1e+308 is out of range [1e-09, 1000000000] (kg)"});
+    expectError(R"({"spheres": [{"p": [0, 0, 0.5], "r": 1e-300}]})", "1:38",
+                {"spheres[0].r = 1e-300 is out of range [1e-09, 1000000000] (m)"});
+    expectError(R"({"box": null, "spheres": [{"p": [1e308, 0, 0.5]}]})", "1:34",
+                {"spheres[0].p[0] = 1e+308 is out of range [-1000000000, 1000000000]"});
+    expectError(R"({"spheres": [{"p": [0, 0, 0.5], "v": [0, -2e9, 0]}]})", "1:42",
+                {"spheres[0].v[1] = -2000000000 is out of range"});
+    expectError(R"({"time": 1e300, "spheres": [{"p": [0, 0, 0.5]}]})", "1:10", {"time = 1e+300 is out of range [0, 1000000000] (s)"});
+}
+
 TEST(SceneFile, RefusesNumbersTooLargeForADouble) {
     expectError("{\n  \"title\": \"1e999\",\n  \"spheres\": [\n    {\"p\": [0, 0, 1e999]}\n  ]\n}",
                 "4:18", {"number out of the range of a double"});
