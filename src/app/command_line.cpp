@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <exception>
+#include <stdexcept>
 
 #include <CLI/CLI.hpp>
 
@@ -28,6 +29,8 @@ CLI::Validator wholeNumberFrom(long long least) {
                 std::size_t used = 0;
                 const long long value = std::stoll(text, &used);
                 if (used == text.size() && value >= least) return {};
+            } catch (const std::out_of_range&) {
+                return "is too large a number (got " + text + ")";
             } catch (const std::exception&) {
             }
             return "must be a whole number, " + std::to_string(least) + " or more (got " + text + ")";

@@ -53,6 +53,11 @@ std::string OffscreenTarget::resize(int width, int height, int samples) {
     width_ = width;
     height_ = height;
     colorBuffer_ = makeRenderbuffer(GL_RGBA8, width, height, samples_);
+    if (samples_ > 0) {  // the GL may give more than asked (3 -> 4): what the image has
+        GLint given = samples_;
+        glGetRenderbufferParameteriv(GL_RENDERBUFFER, GL_RENDERBUFFER_SAMPLES, &given);
+        samples_ = given;
+    }
     depthBuffer_ = makeRenderbuffer(GL_DEPTH_COMPONENT24, width, height, samples_);
     framebuffer_ = makeFramebuffer(colorBuffer_, depthBuffer_);
     bool complete = glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;

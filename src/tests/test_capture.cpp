@@ -279,6 +279,21 @@ TEST(CommandLine, RefusedInputIsOneLineNamingItAndLeavesNothing) {
     EXPECT_EQ(after.code, 0) << after.output;
 }
 
+// A sample count the GL does not give (3: llvmpipe gives 4; 16: more than its most) is
+// said in a line, and the manifest records what the images have.
+TEST(CaptureCommandLine, SamplesTheGlGivesAreSaidAndRecorded) {
+    for (const int asked : {3, 16}) {
+        const std::string out = capture_test::freshFolder("cli_samples_" + std::to_string(asked));
+        const Outcome outcome = runSpheres("capture --scene cradle --at 0 --size 64x48 --samples " + std::to_string(asked) +
+                                           " --out '" + out + "'");
+        if (outcome.code != 0) GTEST_SKIP() << "no headless GL here: " << outcome.output;
+        const int given = capture_test::readManifest(out).at("samples").get<int>();
+        EXPECT_GT(given, 0);
+        const std::string said = "samples: " + std::to_string(given) + " per pixel (asked " + std::to_string(asked);
+        EXPECT_EQ(outcome.output.find(said) != std::string::npos, given != asked) << outcome.output;
+    }
+}
+
 // Slide 14: `simulate` ends with the five properties when the scene had contacts; none
 // before the first contact.
 TEST(SimulateCommandLine, PrintsTheFivePropertiesOnceThereWereContacts) {

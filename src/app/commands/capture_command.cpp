@@ -479,6 +479,10 @@ Capturer::Capturer(const CaptureOptions& options, const CapturePlan& plan,
         !error.empty()) {
         throw std::runtime_error(error);
     }
+    if (target_.samples() != options.samples) {  // the manifest records what the images have
+        std::printf("samples: %d per pixel (asked %d: %s)\n", target_.samples(), options.samples,
+                    target_.samples() < options.samples ? "the most this GL gives" : "the nearest count this GL gives");
+    }
     if (const std::string error = renderer_.init(); !error.empty())
         throw std::runtime_error("renderer: " + error);
     // Contacts and trails are recorded from the first step on, as in a window whose
