@@ -226,6 +226,21 @@ TEST(SideBySide, ASphereSelectedInAViewIsThatViewsSphere) {
     EXPECT_EQ(session.selectedView(), 0);  // the view is gone: run 0's sphere
 }
 
+// The parameters every other view sets itself: the panel's sliders of those reach view A
+// alone, and say so. On slide 14's column (shock=off,on,passes=1,4) K and shock; with
+// "method=velocity" alone, method; none when a view leaves it to the panel.
+TEST(SideBySide, TheParametersEveryOtherViewSetsAreNamed) {
+    app::Simulation simulation(preset("21_shock_column"));
+    app::Session session(simulation);
+    session.sceneChanged();
+    ASSERT_NE(session.comparison(), nullptr);
+    EXPECT_EQ(session.comparison()->setInEveryView(), (std::vector<std::string>{"passes", "shock"}));
+    ASSERT_EQ(session.startComparison({"method=velocity"}), "");
+    EXPECT_EQ(session.comparison()->setInEveryView(), (std::vector<std::string>{"method"}));
+    ASSERT_EQ(session.startComparison({"method=velocity,reflection,passes=4"}), "");
+    EXPECT_EQ(session.comparison()->setInEveryView(), (std::vector<std::string>{"passes", "method"}));
+}
+
 // ---------------------------------------------------------------- capture --compare
 
 class CaptureCompare : public ::testing::Test {

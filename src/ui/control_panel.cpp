@@ -89,6 +89,9 @@ void parameterWidget(const scenes::Parameter& p, const scenes::Scene& scene, Pan
         }
     }
     if (state.refusedName == p.name && !state.refusal.empty()) wrappedColored(kRefusalColor, state.refusal);
+    if (std::find(state.onlyViewA.begin(), state.onlyViewA.end(), p.name) != state.onlyViewA.end()) {
+        ImGui::TextDisabled("  view A only: the other views set their own");
+    }
 }
 
 // Under a button that reads or writes a file: what it did, or why not.

@@ -74,6 +74,9 @@ struct PanelState {
     // then: they stay while the pointer is there (drawControlPanel).
     bool pointerOverPanel = false;
     std::vector<Alarm> alarmsShown;
+    // Side by side: the parameters every other view sets itself, whose sliders move view A
+    // alone (said under them).
+    std::vector<std::string> onlyViewA;
 };
 
 // Where the last frame's wall time went. A software GL draws after the draw calls

@@ -538,7 +538,8 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_overlays() {
 // The run now: {"time_s", "steps", "spheres", "hash", "paused" (by the page, or by an
 // alarm: a value not finite), "time_scale", "camera": {"azimuth_rad", "elevation_rad",
 // "distance_m"}, "kinetic_J", "potential_J", "penetration_r",
-// "behind_real_time", "views" (side by side: each view's label lines, viewsOf), "selected"
+// "behind_real_time", "views" (side by side: each view's label lines, viewsOf), "only_view_a"
+// (side by side: the parameters every other view sets, Comparison::setInEveryView), "selected"
 // (selectedOf), "timeline" (timelineOf), "claims" (claimsOf), "alarms" (alarmsOf), "look":
 // {"color_by", "overlays"}}.
 EMSCRIPTEN_KEEPALIVE const char* spheres_state() {
@@ -559,6 +560,8 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_state() {
                    {"penetration_r", d.maxPenetration},
                    {"behind_real_time", v.simulation->behindRealTime()},
                    {"views", viewsOf(v)},
+                   {"only_view_a", v.session->comparison() ? v.session->comparison()->setInEveryView()
+                                                           : std::vector<std::string>{}},
                    {"selected", selectedOf(v)},
                    {"timeline", timelineOf(*v.session)},
                    {"claims", claimsOf(*v.simulation)},

@@ -19,12 +19,12 @@ Variants variantsOf(const scenes::Scene& scene, const std::vector<std::string>& 
 
 CaptureComparison::CaptureComparison(const Simulation& primary, const std::vector<std::string>& lists,
                                      glm::ivec2 size, float uiScale, bool present)
-    : comparison_(primary.scene(), variantsOf(primary.scene(), lists)), labels_(size, uiScale), titlesOnly_(present) {
+    : comparison_(primary.scene(), variantsOf(primary.scene(), lists)), labels_(size, uiScale), presented_(present) {
     for (int k = 0; k < comparison_.count(); ++k) comparison_.simulation(k).setOverlayFlags(primary.overlayFlags());
 }
 
 void CaptureComparison::sizeLabels(const Simulation& primary, LayoutRequest& request) {
-    sized_ = comparisonLabels(primary, comparison_, titlesOnly_);
+    sized_ = comparisonLabels(primary, comparison_, presented_);
     request.labelWidth = labels_.width(sized_);
     request.labelHeight = [this](float width) { return labels_.height(sized_, width); };
 }
@@ -43,7 +43,7 @@ void CaptureComparison::draw(render::Renderer& renderer, const render::Camera& c
         buildSnapshot(comparison_.simulation(k), view, snapshot_);
         renderer.draw(snapshot_, camera, v.x, v.y, v.z, v.w);
     }
-    std::vector<ViewLabel> labels = comparisonLabels(primary, comparison_, titlesOnly_);
+    std::vector<ViewLabel> labels = comparisonLabels(primary, comparison_, presented_);
     for (std::size_t k = 0; k < labels.size() && k < std::size_t(kMostViews); ++k) {
         labels[k].topLeft = layout_.labels[k].min;
         labels[k].room = layout_.labels[k].size;

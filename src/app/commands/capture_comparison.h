@@ -49,7 +49,7 @@ private:
     render::FrameSnapshot snapshot_;
     HeadlessViewLabels labels_;
     std::vector<glm::vec4> labelsDrawn_;
-    bool titlesOnly_ = false;
+    bool presented_ = false;
     std::vector<ViewLabel> sized_;  // the labels sizeLabels measured
 };
 

@@ -68,6 +68,18 @@ bool Comparison::changesNothing(const scenes::Scene& primary) const {
     return true;
 }
 
+std::vector<std::string> Comparison::setInEveryView() const {
+    std::vector<std::string> names;
+    for (const scenes::Parameter& p : scenes::parameterTable()) {
+        const auto sets = [&](const Run& run) {
+            return std::any_of(run.overrides.begin(), run.overrides.end(),
+                               [&](const std::string& setting) { return scenes::settingName(setting) == p.name; });
+        };
+        if (!runs_.empty() && std::all_of(runs_.begin(), runs_.end(), sets)) names.emplace_back(p.name);
+    }
+    return names;
+}
+
 std::vector<std::string> viewReadoutLines(const ViewReadout& view) {
     const physics::Diagnostics& d = view.diagnostics;
     char line[160];
@@ -95,7 +107,7 @@ std::string joinedOverrides(const std::vector<std::string>& lists) {
 }
 
 std::vector<std::vector<std::string>> comparisonReadouts(const Simulation& primary, const Comparison& comparison,
-                                                         bool titlesOnly) {
+                                                         bool presented) {
     std::vector<std::vector<std::string>> views;
     for (int k = 0; k <= comparison.count(); ++k) {
         const Simulation& run = k == 0 ? primary : comparison.simulation(k - 1);
@@ -108,7 +120,7 @@ std::vector<std::vector<std::string>> comparisonReadouts(const Simulation& prima
         for (const physics::Plane& m : run.scene().mirrors) mirrors.push_back(physics::mirrorAsymmetry(world, m));
         readout.properties = propertiesMarks(judgeProperties(run.impacts(), mirrors, run.params()));
         std::vector<std::string> lines = viewReadoutLines(readout);
-        if (titlesOnly) lines.resize(1);
+        if (presented) lines = {lines[0], lines[3]};  // the title and the penetration: what the slides compare
         views.push_back(std::move(lines));
     }
     return views;

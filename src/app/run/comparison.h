@@ -49,6 +49,9 @@ public:
     std::string label(int k = 0) const { return overrideLabel(simulation(k).scene(), overrides(k)); }
     // Whether every run shows what the primary shows: the overrides change nothing.
     bool changesNothing(const scenes::Scene& primary) const;
+    // The parameters every other run sets itself: the panel's edit of one reaches view A
+    // alone (on slide 14's column, K and shock).
+    std::vector<std::string> setInEveryView() const;
 
 private:
     struct Run {
@@ -78,9 +81,10 @@ std::vector<std::string> viewReadoutLines(const ViewReadout& view);
 std::string joinedOverrides(const std::vector<std::string>& lists);
 
 // Each view's label lines, A first: "A   method = position", then its readouts
-// (viewReadoutLines). `titlesOnly`: the first line alone (the presentation layout).
+// (viewReadoutLines). `presented`: the title and the penetration line alone (the
+// presentation layout: large type on a projector).
 // The window draws them with ImGui (view_labels.h), the browser's page as text.
 std::vector<std::vector<std::string>> comparisonReadouts(const Simulation& primary, const Comparison& comparison,
-                                                         bool titlesOnly = false);
+                                                         bool presented = false);
 
 }  // namespace app

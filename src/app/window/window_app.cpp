@@ -442,6 +442,7 @@ void WindowApp::drawScene(const ViewLayout& views) {
     renderer_.style.overlayOnTop = overlaysOnTop(panel_, simulation_.world().size());  // as capture draws them
     renderer_.style.lineScale = window_->contentScale().x;
     panel_.selectedSphere = session_.selected();
+    panel_.onlyViewA = session_.comparison() ? session_.comparison()->setInEveryView() : std::vector<std::string>{};
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     const glm::ivec2 size = window_->framebufferSize();
     glViewport(0, 0, size.x, size.y);

@@ -282,6 +282,18 @@ try {
   await until((s) => s.time_s > 0, 30000);
   layout = await shown();
   check('[ typed with AltGr (Ctrl+Alt) opens the previous preset', layout.title.startsWith('A column'), layout.title);
+  // Side by side with its field emptied, Enter: what to write, and the views stay.
+  await navigate('scene=08_newtons_cradle&compare=order=reversed');
+  await until((s) => s.time_s > 0, 30000);
+  await js("(() => { const f = document.getElementById('overrides'); f.value = ''; f.dispatchEvent(new KeyboardEvent('keydown', { key: 'Enter' })); })()");
+  const emptied = await js("({ refusal: document.getElementById('refusal').textContent, said: document.getElementById('compare-said').textContent, views: document.getElementById('labels').children.length })");
+  check('an emptied side-by-side field says what to write, the views stay', emptied.refusal.startsWith('Cannot compare: give at least one') &&
+        emptied.said === '' && emptied.views === 2, JSON.stringify(emptied));
+  // Slide 14's column side by side: every other view sets K and shock, so their sliders say they move view A only.
+  await navigate('scene=21_shock_column&present');
+  await until((s) => s.time_s > 0, 30000);
+  const onlyA = await js("[...document.querySelectorAll('#controls label.only-a')].filter((l) => l.offsetParent).map((l) => l.dataset.name)");
+  check('presented side by side, K and shock say they move view A only', JSON.stringify(onlyA) === '["passes","shock"]', JSON.stringify(onlyA));
 } catch (error) {
   check('the page answers', false, String(error));
 }
