@@ -185,7 +185,8 @@ TEST(WindowInteraction, ANumberTypedIntoASliderCountsWhenEnterIsPressed) {
     EXPECT_EQ(betaTyped("0.55"), 0.55);
 }
 
-bool alarmRed(glm::u8vec4 p) { return p.x > 170 && p.y < 120 && p.z < 115 && p.x - p.y > 60; }  // lit or dimmed
+// A lit alarm's red (255, 77, 64) and its text's edges; not the orange of "behind real time".
+bool alarmRed(glm::u8vec4 p) { return p.x > 170 && p.y < 0.45 * p.x && p.z < 0.45 * p.x; }
 
 // An alarm that fires while the pointer is over the panel waits until it leaves: shown at
 // once, its lines would push every control below them down under the pointer. The bounce
