@@ -52,7 +52,8 @@ std::string resolveScenePath(const std::string& nameOrPath) {
         throw UsageError("--scene " + nameOrPath + ": is not a regular file, so no scene file");
     }
     if (error && error != std::errc::no_such_file_or_directory && !presetFound) {
-        throw UsageError("--scene " + nameOrPath.substr(0, 80) + (nameOrPath.size() > 80 ? "...: " : ": ") + error.message());
+        const bool tooLong = error == std::errc::filename_too_long;  // then its start names it
+        throw UsageError("--scene " + (tooLong ? nameOrPath.substr(0, 60) + "..." : nameOrPath) + ": " + error.message());
     }
     if (!why.empty()) throw UsageError("--scene " + nameOrPath + ": " + why);
     return preset;
