@@ -184,8 +184,12 @@ void runSection(double& timeScale, const Readouts& r, PanelActions& actions) {
     // under it by a line, under the pointer.
     if (r.behindRealTime) {
         ImGui::TextColored({1.0f, 0.55f, 0.2f, 1.0f}, "behind real time: lower the time scale or N");
+    } else if (r.paused) {
+        ImGui::TextDisabled("paused");
+    } else if (r.timing.fps > 0.0) {
+        ImGui::TextDisabled("keeping up with real time");
     } else {
-        ImGui::TextDisabled(r.paused ? "paused" : "keeping up with real time");
+        ImGui::NewLine();  // a capture has no real time to keep up with
     }
 }
 
