@@ -378,8 +378,11 @@ std::string parseValue(const Parameter& p, std::string_view text, double& value)
         errno = 0;
         std::strtod(copy.c_str(), &end);
         const bool outOfRange = !copy.empty() && end == copy.c_str() + copy.size() && errno == ERANGE;
+        const bool decimalComma = copy.find(',') != std::string::npos && copy.find('.') == std::string::npos;
         return "value '" + copy + "' for " + std::string(p.name) +
-               (outOfRange ? " is beyond what a number can hold (about 1e-308 to 1e308)" : " is not a number");
+               (outOfRange     ? " is beyond what a number can hold (about 1e-308 to 1e308)"
+                : decimalComma ? " is not a number: write decimals with a point (0.5, not 0,5)"
+                               : " is not a number");
     }
     // A whole number past 2^53 reads as its nearest double (the seed's 9007199254740993 as
     // ...992, inside the range): the digits typed must be the value kept.

@@ -163,6 +163,7 @@ TEST(ApplySetting, RefusesValuesThatAreNotNumbersOrChoices) {
     EXPECT_EQ(applySetting(scene, "alpha=abc"), "value 'abc' for alpha is not a number");
     EXPECT_EQ(applySetting(scene, "alpha=0.5x"), "value '0.5x' for alpha is not a number");
     EXPECT_EQ(applySetting(scene, "alpha="), "value '' for alpha is not a number");
+    EXPECT_EQ(applySetting(scene, "alpha=0,5"), "value '0,5' for alpha is not a number: write decimals with a point (0.5, not 0,5)");
     EXPECT_EQ(applySetting(scene, "alpha=nan"), "value 'nan' for alpha is not a number");
     EXPECT_EQ(applySetting(scene, "h=1e400"), "value '1e400' for h is beyond what a number can hold (about 1e-308 to 1e308)");
     // The seed's largest is 2^53; one more read as the nearest double was 2^53 again.
