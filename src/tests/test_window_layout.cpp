@@ -196,6 +196,7 @@ TEST(WindowLayout, TheBoxAspectFollowsTheBoxAndTheAngles) {
 TEST(WrappedText, KeepsNameEqualsValueWholeAndCutsAWordWiderThanTheLine) {
     ImGuiContext* context = ImGui::CreateContext();
     ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr;  // writes no imgui.ini where the tests run
     io.DisplaySize = ImVec2(800.0f, 600.0f);
     unsigned char* pixels = nullptr;
     int width = 0, height = 0;
