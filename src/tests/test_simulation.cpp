@@ -108,4 +108,14 @@ TEST(Simulation, TheTextsClaimsAreMeasuredAsTheRunGoes) {
     sim.singleStep();
     EXPECT_TRUE(sim.claimsInterrupted());
     EXPECT_EQ(sim.claimsWatched(), 0u);
+    EXPECT_FALSE(sim.claimsForOtherSettings());  // stopped, and said so
+
+    // Restarted at settings the text claims nothing at: said, not a row that vanishes.
+    sim.editableScene().params.beta = 0.5;
+    sim.restart();
+    EXPECT_EQ(sim.claimsWatched(), 0u);
+    EXPECT_TRUE(sim.claimsForOtherSettings());
+    sim.editableScene().params.beta = 0.8;
+    sim.restart();
+    EXPECT_FALSE(sim.claimsForOtherSettings());
 }

@@ -449,7 +449,13 @@ void sceneText(const scenes::Scene& scene) {
 // Under the text: its claims as this run measured them (scenes/claims.h), folded under a
 // line that counts them, so that the sliders stay where they are.
 void measuredClaims(const Readouts& r) {
-    if (r.claimsWatched == 0 && !r.claimsInterrupted) return;
+    if (r.claimsWatched == 0 && !r.claimsInterrupted) {
+        if (!r.claimsForOtherSettings) return;
+        ImGui::TextDisabled("The text, measured: not at these settings");
+        tooltip("Each claim of the text is measured at the settings it names, and this run's differ from all of "
+                "them (a slider moved before the restart). The preset list or [ ] opens the text's settings again.");
+        return;
+    }
     int held = 0;
     for (const Readouts::ClaimLine& c : r.claims) held += c.holds;
     char header[160];

@@ -145,6 +145,7 @@ struct Readouts {
     std::vector<ClaimLine> claims;
     std::size_t claimsWatched = 0;
     bool claimsInterrupted = false;
+    bool claimsForOtherSettings = false;  // the text claims things at other settings than the run's
 };
 
 struct PanelActions {

@@ -209,13 +209,15 @@ Json timelineOf(const app::Session& session) {
 
 // The scene's text as this run measured it, as the window's "The text, measured":
 // {"watched" (claims in all), "interrupted" (changed by hand: stopped until a restart),
+// "other_settings" (the text's claims are for other settings than the run's),
 // "lines": [{"holds", "says", "measured"}] (those judged so far)}.
 Json claimsOf(const app::Simulation& run) {
     Json lines = Json::array();
     for (const scenes::ClaimCheck& check : run.measuredClaims()) {
         lines.push_back({{"holds", check.holds}, {"says", check.claim->says}, {"measured", check.measured}});
     }
-    return {{"watched", run.claimsWatched()}, {"interrupted", run.claimsInterrupted()}, {"lines", lines}};
+    return {{"watched", run.claimsWatched()}, {"interrupted", run.claimsInterrupted()},
+            {"other_settings", run.claimsForOtherSettings()}, {"lines", lines}};
 }
 
 // The invariant alarms, most serious first, as the window's panel shows them:

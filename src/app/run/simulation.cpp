@@ -45,6 +45,13 @@ void Simulation::startFrom(physics::World world) {
     measureNow();
 }
 
+bool Simulation::claimsForOtherSettings() const {
+    const bool claimed = std::any_of(scene_.claims.begin(), scene_.claims.end(), [](const scenes::Claim& c) {
+        return c.in == scenes::ClaimSource::Description && !c.ratioTo;
+    });
+    return claimed && claims_.empty() && !claimsInterrupted_;
+}
+
 void Simulation::watchClaims() {
     if (claims_.empty()) return;
     if (physics::stateHash(world_) != claimsState_ || scenes::tableValues(scene_) != claimsParameters_) {

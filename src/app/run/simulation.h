@@ -85,6 +85,9 @@ public:
     std::vector<scenes::ClaimCheck> measuredClaims() const { return claims_.judged(world_.time); }
     std::size_t claimsWatched() const { return claims_.size(); }  // judged or not yet
     bool claimsInterrupted() const { return claimsInterrupted_; }
+    // The text claims something, but at other settings than this run's (a restart with a
+    // slider moved): none of its claims is measured.
+    bool claimsForOtherSettings() const;
 
     const Alarms& alarms() const { return alarms_; }
     const RestitutionMeter& restitution() const { return restitution_; }

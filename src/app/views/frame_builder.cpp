@@ -125,6 +125,7 @@ ui::Readouts makeReadouts(const Simulation& simulation, const ui::FrameTimes& ti
         r.claims.push_back({check.claim->says, check.measured, check.holds});
     }
     r.claimsWatched = simulation.claimsWatched();
+    r.claimsForOtherSettings = simulation.claimsForOtherSettings();
     r.claimsInterrupted = simulation.claimsInterrupted();
     for (const AlarmLine& line : simulation.alarms().lines(simulation.world().time)) {
         r.alarms.push_back({line.text, line.hint, line.lit});
