@@ -426,8 +426,8 @@ void viewSection(PanelState& state, PanelActions& actions) {
     tooltip("Slide 14's contact graph: each sphere, and a line between the centres of spheres that touch, "
             "coloured by level "
             "(0 red: touches a plane, 1 orange: touches level 0, 2 yellow, 3 green, 4 cyan, 5 blue; 6 to 11 "
-            "the same darker, 12 to 17 paler, 18 to 23 palest; grey: reaches no plane). Shock propagation sweeps the levels from "
-            "the floor up.");
+            "the same darker, 12 to 17 paler, 18 to 23 palest; grey: reaches no plane). Shock propagation "
+            "sweeps the levels from the floor up.");
     if (ImGui::SliderFloat("UI scale", &state.uiScale, kUiScaleRange[0], kUiScaleRange[1], "%.2f")) actions.fontChanged = true;
     if (ImGui::Button("Reset view (C)")) actions.resetCamera = true;
     ImGui::SameLine();

@@ -12,9 +12,10 @@ struct UsageError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-// Throws UsageError "FLAG PATH: ..." (cannot be written, its folder does not exist, is a
-// folder) unless `path` is empty or can be written (nothing is left there by the check), and "FLAG PATH: the file must end in EXTENSION" when it
-// ends otherwise (a CSV written into x.json): output files are checked before any work.
+// Throws UsageError "FLAG PATH: ..." unless `path` is empty or can be written: it cannot
+// be written, its folder does not exist, it is a folder, or it does not end in EXTENSION (a
+// CSV written into x.json). Output files are checked before any work; the check leaves
+// nothing behind.
 void checkWritable(const std::string& flag, const std::string& path, const std::string& extension = "");
 
 // Whether `s` ends in `suffix`.
