@@ -65,8 +65,8 @@ void addCapture(CLI::App& cli, CaptureOptions& o) {
                     "azimuth,elevation[,distance] in degrees, degrees, m (default: the window's view of the box)");
     cap->add_option("--color-by", o.colorBy, "Sphere colours: id, speed or contact")->capture_default_str();
     cap->add_flag("--with-ui", o.withUi, "Draw the control panel and the readouts as the window does");
-    cap->add_option("--ui-scale", o.uiScale, "With --with-ui: the UI scale, 0.75 to 3 (2: as on a HiDPI screen)")
-        ->capture_default_str();
+    cap->add_option_function<float>("--ui-scale", [&o](const float& scale) { o.uiScale = scale; },
+                                    "With --with-ui or --compare: the UI scale, 0.75 to 3 (default 1; 2: as on a HiDPI screen)");
     cap->add_flag("--present", o.present, "With --with-ui: the presentation layout (as F5 in the window)");
     cap->add_option("--compare", o.compare,
                     "Side by side: more views with these overrides, name=value[,name=value] (e.g. method=velocity; several values of one name make a view each, at most 4 views)");

@@ -239,7 +239,8 @@ std::string outputOf(const std::string& arguments) { return runSpheres(arguments
 // Input the command line cannot take is one line naming it, exit code 2, and nothing
 // written: a window option before a subcommand (it would be dropped, the subcommand
 // running without it), a scene path that names no readable file, an output path whose
-// folder is missing, a screenshot of a window that cannot open.
+// folder is missing, a screenshot of a window that cannot open, a UI scale for a capture
+// that draws no panel and no labels (the scene's own side by side would have labels).
 TEST(CommandLine, RefusedInputIsOneLineNamingItAndLeavesNothing) {
     const std::string folder = capture_test::freshFolder("cli_refusals");
     std::filesystem::create_directories(folder);
@@ -261,6 +262,8 @@ TEST(CommandLine, RefusedInputIsOneLineNamingItAndLeavesNothing) {
         {"simulate --scene cradle --steps 1 --save '" + folder + "/cradle.json' --state '" + folder + "/none/s.csv'",
          "spheres: --state "},
         {"--scene cradle --select 99 --screenshot '" + folder + "/shot.png'", "spheres: "},
+        {"capture --scene cradle --at 0 --ui-scale 2 --out '" + folder + "/frames'",
+         "spheres: --ui-scale sizes the panel and the views' labels, and this capture draws neither: give --with-ui"},
     };
     const std::string display = std::getenv("DISPLAY") ? std::getenv("DISPLAY") : "";
     unsetenv("DISPLAY");  // the screenshot's window cannot open

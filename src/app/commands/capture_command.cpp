@@ -213,7 +213,7 @@ CapturePlan planCapture(const CaptureOptions& options) {
     if (options.samples < 0 || options.samples > kMaxSamples)
         throw UsageError("--samples: must be between 0 and 16");
     if (options.out.empty()) throw UsageError("--out: give a folder for the frames");
-    if (!(options.uiScale >= ui::kUiScaleRange[0] && options.uiScale <= ui::kUiScaleRange[1]))
+    if (options.uiScale && !(*options.uiScale >= ui::kUiScaleRange[0] && *options.uiScale <= ui::kUiScaleRange[1]))
         throw UsageError("--ui-scale: must be between 0.75 and 3");
     if (options.present && !options.withUi) throw UsageError("--present draws the panel: give --with-ui too");
     return plan;
@@ -491,7 +491,7 @@ Capturer::Capturer(const CaptureOptions& options, const CapturePlan& plan,
     LayoutRequest request;
     request.window = plan.size;
     request.gap = kViewGap;
-    const ui::PanelState view = captureView(plan.colorBy, plan.overlays, options.uiScale, options.present);
+    const ui::PanelState view = captureView(plan.colorBy, plan.overlays, options.uiScale.value_or(1.0f), options.present);
     if (options.withUi) {
         ui_ = std::make_unique<UiOverlay>(plan.size, view, scenePath_);
         ui_->measure(request);
@@ -535,7 +535,7 @@ render::Image Capturer::drawFrame() {
     target_.bind();
     glClearColor(ui::kBackdropColor[0], ui::kBackdropColor[1], ui::kBackdropColor[2], 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    const ui::PanelState view = captureView(plan_.colorBy, plan_.overlays, options_.uiScale, options_.present);
+    const ui::PanelState view = captureView(plan_.colorBy, plan_.overlays, options_.uiScale.value_or(1.0f), options_.present);
     renderer_.style.overlayOnTop = overlaysOnTop(view, simulation_.world().size());
     buildSnapshot(simulation_, view, snapshot_);
     renderer_.draw(snapshot_, camera_, view_.x, view_.y, view_.z, view_.w);
@@ -619,7 +619,7 @@ Json Capturer::manifest() const {
     for (const glm::vec4& box : uiDrawn_) drawn.push_back({box.x, box.y, box.z, box.w});
     // Every view (px, GL's lower-left origin) and what the panels and labels drew over
     // the last frame (px from the top left): no view may lie under a panel.
-    json["layout"] = Json{{"ui_scale", options_.uiScale}, {"present", options_.present}, {"views", views},
+    json["layout"] = Json{{"ui_scale", options_.uiScale.value_or(1.0f)}, {"present", options_.present}, {"views", views},
                           {"ui_drawn", drawn}};
     if (compare_) {
         const Comparison& comparison = compare_->comparison();
@@ -681,6 +681,9 @@ int runCapture(const CaptureOptions& options) {
     const CapturePlan plan = planCapture(options);
     scenes::Scene scene = loadSceneWithSettings(options.scene, options.settings);
     checkCompareOption(scene, options.compare);
+    // The scale is that of the panel and of the views' labels (the scene's own side by side too).
+    if (options.uiScale && !options.withUi && options.compare.empty() && scene.compare.empty())
+        throw UsageError("--ui-scale sizes the panel and the views' labels, and this capture draws neither: give --with-ui");
     auto context = openContext(plan.backend, plan.size);
     prepareOutFolder(options.out);
     std::printf("GL backend: %s (%s)\n", context->name(), glText(GL_RENDERER).c_str());
