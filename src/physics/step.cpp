@@ -425,7 +425,7 @@ Response respondToContact(World& world, const SpherePair& pair, const SphereCont
                                   world.position[pair.i] - world.radius[pair.i] * contact.u,
                                   contact.depth, {before[0], before[1]},
                                   {world.velocity[pair.i], world.velocity[pair.j]},
-                                  {world.mass[pair.i], world.mass[pair.j]}});
+                                  {world.mass[pair.i], world.mass[pair.j]}, -1.0, -1.0, world.stepCount});
     }
     return response;
 }
@@ -443,7 +443,7 @@ Response respondToContact(World& world, std::uint32_t i, std::size_t planeIndex,
                                   response == Response::Bounce, face.normal,
                                   world.position[i] - distance * face.normal, world.radius[i] - distance,
                                   {before, glm::dvec3(0.0)}, {world.velocity[i], glm::dvec3(0.0)},
-                                  {world.mass[i], 0.0}});
+                                  {world.mass[i], 0.0}, -1.0, -1.0, world.stepCount});
     }
     return response;
 }
@@ -458,7 +458,8 @@ Response respondToFrozenContact(World& world, std::uint32_t i, std::uint32_t fro
         world.contacts.push_back({i, static_cast<std::int32_t>(frozen), params.passes, response == Response::Bounce,
                                   contact.u, world.position[i] - world.radius[i] * contact.u, contact.depth,
                                   {before, world.velocity[frozen]}, {world.velocity[i], world.velocity[frozen]},
-                                  {world.mass[i], std::numeric_limits<double>::infinity()}});
+                                  {world.mass[i], std::numeric_limits<double>::infinity()}, -1.0, -1.0,
+                                  world.stepCount});
     }
     return response;
 }

@@ -320,6 +320,56 @@ TEST(InteractionSelection, TheExplainedContactsOtherSphereIsRingedToo) {
     EXPECT_EQ(app::explainedPartner(session, tools), -1);
 }
 
+// A sphere selected while paused has the contacts of the frame shown at once (the frame run
+// again from the timeline): the same as had it been selected before that frame, and the run
+// not moved on. A sphere selected after an edit (no step in the frame) has none.
+TEST(InteractionSelection, ASphereSelectedWhilePausedHasTheContactsOfTheFrameShown) {
+    scenes::Scene scene = scenes::loadScene(scenes::presetPath("11_pile"));
+    ASSERT_EQ(scenes::applySetting(scene, "count=200"), "");  // more than are always recorded
+    const auto landed = [&](app::Simulation& simulation, app::Session& session, int frames) {
+        for (int frame = 0; frame < frames; ++frame) session.advance(1.0 / 60.0);
+        simulation.paused = true;
+    };
+    app::Simulation simulation(scene);
+    app::Session session(simulation);
+    landed(simulation, session, 180);
+    const physics::World& world = simulation.world();
+    ASSERT_FALSE(world.recordContacts);
+    const int lowest = int(std::find(world.contactState.begin(), world.contactState.end(), physics::ContactState::Static) -
+                           world.contactState.begin());  // in static contact in the last step: the inspector says so
+    ASSERT_LT(std::size_t(lowest), world.size());
+    const std::uint64_t hash = physics::stateHash(world);
+    session.select(lowest);
+    EXPECT_EQ(physics::stateHash(world), hash);
+    const std::vector<physics::ContactEvent>& recalled = session.latestContacts().events;
+    ASSERT_FALSE(recalled.empty()) << "sphere " << lowest;
+
+    app::Simulation before(scene);  // the same run, the sphere selected before the last frame
+    app::Session selectedFirst(before);
+    landed(before, selectedFirst, 179);
+    selectedFirst.select(lowest);
+    before.setSelectedSphere(lowest);  // as the window's frame does: its contacts recorded
+    before.paused = false;
+    selectedFirst.advance(1.0 / 60.0);
+    ASSERT_EQ(physics::stateHash(before.world()), hash);
+    const std::vector<physics::ContactEvent>& recorded = selectedFirst.latestContacts().events;
+    ASSERT_EQ(recalled.size(), recorded.size());
+    for (std::size_t k = 0; k < recorded.size(); ++k) {
+        EXPECT_EQ(recalled[k].other, recorded[k].other);
+        EXPECT_EQ(recalled[k].velocityBefore[0], recorded[k].velocityBefore[0]);
+        EXPECT_EQ(recalled[k].velocityAfter[0], recorded[k].velocityAfter[0]);
+        EXPECT_EQ(recalled[k].solverStep, recorded[k].solverStep);
+    }
+    EXPECT_EQ(session.latestContacts().steps, selectedFirst.latestContacts().steps);
+
+    const std::size_t i = std::size_t(lowest);  // an edit, then another sphere
+    const app::SphereFields fields{world.position[i], world.velocity[i] + glm::dvec3(0.01, 0.0, 0.0), world.radius[i],
+                                   world.mass[i]};
+    ASSERT_EQ(session.editSelected(fields), "");
+    session.select(lowest == 0 ? 1 : 0);
+    EXPECT_TRUE(session.latestContacts().events.empty());
+}
+
 // The window gives the stepping what the last frame's drawing left of 1/30 s: a scene whose
 // drawing alone takes longer gets a budget of 0, and must still step once a frame (it stood
 // still at 100k), in one piece and in half-step slices (while explaining a contact) alike.

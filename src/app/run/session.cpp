@@ -8,6 +8,10 @@
 
 #include <glm/geometric.hpp>
 
+#include "app/teaching/overlays.h"
+#include "physics/diagnostics.h"
+#include "physics/step.h"
+
 namespace app {
 namespace {
 
@@ -209,7 +213,37 @@ void Session::select(int index, int view) {
     const int previous = selected_, previousView = selectedView();
     selected_ = index >= 0 && static_cast<std::size_t>(index) < primary_.world().size() ? index : -1;
     selectedView_ = view >= 0 && view < runCount() ? view : 0;
-    if (selected_ != previous || selectedView() != previousView) latest_ = {};
+    if (selected_ == previous && selectedView() == previousView) return;
+    latest_ = {};
+    recallContacts();
+}
+
+// Contacts are recorded in a scene of more than a few spheres only while one is selected,
+// so a sphere selected while paused had none to explain until the next step (which moves
+// the run on from the instant the teacher stopped at). The frame shown is run again from
+// the timeline's state before it, contacts recorded: the same steps reach the same state
+// (checked by its hash), and their contacts are those the frame had. Nothing is recalled
+// when that state is not kept, when the frame was an edit, or when the run differs (a
+// setting changed since).
+void Session::recallContacts() {
+    if (selected_ < 0) return;
+    const int view = selectedView();
+    const RewindBuffer& timeline = rewind_[std::size_t(view)];
+    const physics::World& shown = run(view).world();
+    if (timeline.cursor() == 0 || timeline.cursor() >= timeline.size() || shown.size() > kMaxRecordSpheres) return;
+    physics::World replay = shown;  // its planes and seed; the state before the frame:
+    restoreState(timeline.at(timeline.cursor() - 1), replay);
+    if (replay.stepCount >= shown.stepCount) return;
+    replay.recordContacts = true;
+    const scenes::Scene& scene = run(view).scene();
+    Contacts recalled;
+    while (replay.stepCount < shown.stepCount) {
+        physics::step(replay, scene.params);
+        scenes::emitDue(scene, replay);  // as Simulation::stepOnce
+        Contacts contacts = contactsOf(replay.contacts, selected_, replay.time, replay.stepCount);
+        if (!contacts.events.empty()) recalled = std::move(contacts);
+    }
+    if (physics::stateHash(replay) == physics::stateHash(shown)) latest_ = std::move(recalled);
 }
 
 void Session::edited() {

@@ -87,9 +87,10 @@ public:
 
     // ---- for the views ----
     // The selected sphere's contact responses of the latest step that had any (in run selectedView()):
-    // a bounce lasts one step, so the explainer keeps showing it after it. Empty when
-    // none was recorded since the selection (Simulation records contacts while a
-    // sphere is selected).
+    // a bounce lasts one step, so the explainer keeps showing it after it. Empty when it
+    // had none in the frame shown when it was selected (that frame run again from the
+    // timeline, contacts recorded) nor since (Simulation records contacts while a sphere
+    // is selected).
     struct Contacts {
         std::vector<physics::ContactEvent> events;
         // Slide 14's global solvers: every contact of that step they solved (its impulse
@@ -112,7 +113,8 @@ public:
 
 private:
     void startAgain();  // the comparison from the primary's scene, an empty timeline
-    void noteContacts();  // latest_ from run 0's world, after a step
+    void noteContacts();  // latest_ from run selectedView()'s world, after a step
+    void recallContacts();  // latest_ for a sphere just selected: the frame shown, run again
     void keep();  // pushes every run's state into its rewind buffer
     void prepareToStep();
     void edited();   // touched(), then kept for stepping back

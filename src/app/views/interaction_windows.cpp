@@ -220,7 +220,7 @@ void drawExplainer(const Placement& placement, const ExplainerInput& input, Tool
     if (events.empty() && !input.recording) {
         ImGui::TextWrapped("Contacts are not recorded in this scene (too many spheres): nothing to explain.");
     } else if (events.empty()) {
-        ImGui::TextWrapped("No contact of sphere #%d recorded since it was selected. %s", input.selected,
+        ImGui::TextWrapped("Sphere #%d touched nothing in the frame shown, nor since. %s", input.selected,
                            input.paused ? "Step with O until it touches something."
                                         : "It is explained here after its next contact.");
     }
