@@ -11,7 +11,10 @@
 #include "app/run/scene_source.h"
 #include "app/run/session.h"
 #include "app/run/simulation.h"
+#include "app/views/frame_builder.h"
 #include "physics/diagnostics.h"
+#include "scenes/presets.h"
+#include "scenes/scene_json.h"
 #include "test_capture_support.h"
 
 namespace {
@@ -352,3 +355,32 @@ TEST_F(CaptureCompare, RefusesAnUnknownOverrideBeforeWritingAnything) {
 }
 
 }  // namespace
+
+// Side by side, "The text, measured" lists what each view measured of the text at its own
+// settings, with its letter: slide 14's column says what B (four passes), C (shock on) and
+// D (both) show, and those views measure it (before, only view A's claims were listed).
+TEST(SideBySide, EachViewMeasuresWhatTheTextSaysOfIt) {
+    app::Simulation simulation(scenes::loadScene(scenes::presetPath("21_shock_column")));
+    app::Session session(simulation);
+    session.sceneChanged();  // its "compare": four views
+    ASSERT_EQ(session.runCount(), 4);
+    while (simulation.world().time < 10.0 + 1e-9) session.advance(1.0 / 60.0);
+    const ui::Readouts readouts = app::makeReadouts(simulation, ui::FrameTimes{}, session.comparison());
+    std::size_t watched = 0;
+    for (int k = 0; k < session.runCount(); ++k) watched += session.run(k).claimsWatched();
+    EXPECT_EQ(readouts.claimsWatched, watched);
+    EXPECT_EQ(readouts.claims.size(), watched) << "every claim's moment has passed at 10 s";
+    std::string views;
+    for (const ui::Readouts::ClaimLine& line : readouts.claims) {
+        EXPECT_TRUE(line.holds) << line.view << " " << line.says << ": " << line.measured;
+        if (views.find(line.view) == std::string::npos) views += line.view;
+        if (line.says == "B, four passes, still leaves 3.1 %") {
+            EXPECT_EQ(line.view, 'B');
+        }
+        if (line.says == "its top sphere's centre at 1.95 m (39 r)") {
+            EXPECT_EQ(line.view, 'C');
+        }
+    }
+    EXPECT_EQ(views, "ABCD");
+    EXPECT_EQ(app::makeReadouts(simulation, ui::FrameTimes{}).claimsWatched, simulation.claimsWatched());
+}

@@ -467,12 +467,14 @@ void measuredClaims(const Readouts& r) {
     }
     const bool open = ImGui::CollapsingHeader(header);
     tooltip("What the text above says, measured in this run since its start: each claim once its moment has "
-            "passed (the lab sheet checks the same claims). A change by hand (a slider, a sphere, the timeline) "
-            "stops the measurement until the next restart (R).");
+            "passed (the lab sheet checks the same claims). Side by side, each view measures what the text says "
+            "of it (its letter first). A change by hand (a slider, a sphere, the timeline) stops the measurement "
+            "until the next restart (R).");
     if (!open) return;
     for (const Readouts::ClaimLine& c : r.claims) {
+        const std::string view = c.view ? std::string(1, c.view) + "  " : "";
         wrappedColored(c.holds ? ImVec4(0.45f, 0.9f, 0.45f, 1.0f) : kAlarmLit,
-                       std::string(c.holds ? "\u2713 " : "\u2717 ") + "\u201c" + c.says + "\u201d: " + c.measured);
+                       view + (c.holds ? "\u2713 " : "\u2717 ") + "\u201c" + c.says + "\u201d: " + c.measured);
     }
 }
 

@@ -137,10 +137,12 @@ struct Readouts {
     std::vector<LegendLine> legend;
     // The claims of the scene's text this run has measured (app::Simulation::measuredClaims),
     // shown under the text, of claimsWatched in all; claimsInterrupted: the run was changed
-    // by hand, so they stopped.
+    // by hand, so they stopped. Side by side, each view measures the claims made at its
+    // settings ("B, four passes, still leaves 3.1 %" in view B), and `view` names it.
     struct ClaimLine {
         std::string says, measured;
         bool holds = false;
+        char view = 0;  // 'A' to 'D' side by side; 0: one run
     };
     std::vector<ClaimLine> claims;
     std::size_t claimsWatched = 0;

@@ -207,17 +207,21 @@ Json timelineOf(const app::Session& session) {
             {"to_s", timeline.at(timeline.size() - 1).time}};
 }
 
-// The scene's text as this run measured it, as the window's "The text, measured":
-// {"watched" (claims in all), "interrupted" (changed by hand: stopped until a restart),
-// "other_settings" (the text's claims are for other settings than the run's),
-// "lines": [{"holds", "says", "measured"}] (those judged so far)}.
-Json claimsOf(const app::Simulation& run) {
+// The scene's text as the runs measured it, as the window's "The text, measured" (the
+// same readouts): {"watched" (claims in all), "interrupted" (changed by hand: stopped until
+// a restart), "other_settings" (the text's claims are for other settings than the run's),
+// "lines": [{"holds", "says", "measured", "view" (side by side: the view's letter, "A" to
+// "D", that measured it; else "")}] (those judged so far)}.
+Json claimsOf(const app::Simulation& run, const app::Comparison* comparison) {
+    ui::Readouts readouts;
+    app::addMeasuredClaims(run, comparison, readouts);
     Json lines = Json::array();
-    for (const scenes::ClaimCheck& check : run.measuredClaims()) {
-        lines.push_back({{"holds", check.holds}, {"says", check.claim->says}, {"measured", check.measured}});
+    for (const ui::Readouts::ClaimLine& line : readouts.claims) {
+        lines.push_back({{"holds", line.holds}, {"says", line.says}, {"measured", line.measured},
+                         {"view", line.view ? std::string(1, line.view) : std::string()}});
     }
-    return {{"watched", run.claimsWatched()}, {"interrupted", run.claimsInterrupted()},
-            {"other_settings", run.claimsForOtherSettings()}, {"lines", lines}};
+    return {{"watched", readouts.claimsWatched}, {"interrupted", readouts.claimsInterrupted},
+            {"other_settings", readouts.claimsForOtherSettings}, {"lines", lines}};
 }
 
 // The invariant alarms, most serious first, as the window's panel shows them:
@@ -566,7 +570,7 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_state() {
                                                            : std::vector<std::string>{}},
                    {"selected", selectedOf(v)},
                    {"timeline", timelineOf(*v.session)},
-                   {"claims", claimsOf(*v.simulation)},
+                   {"claims", claimsOf(*v.simulation, v.session->comparison())},
                    {"alarms", alarmsOf(*v.simulation)},
                    {"look", {{"color_by", kColorings[v.look.colorBy]},
                              {"overlays", app::overlayNames(app::overlayFlags(v.look))}}}});

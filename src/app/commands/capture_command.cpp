@@ -289,7 +289,7 @@ class UiOverlay {
     void measure(LayoutRequest& request);
     void place(const WindowLayout& layout) { layout_ = layout; }
     // Lays out one ImGui frame (ends with ImGui::Render); draws nothing yet.
-    void layout(Simulation& simulation);
+    void layout(Simulation& simulation, const Comparison* comparison);
     // Draws the last layout into the bound framebuffer; returns what it drew (px).
     std::vector<glm::vec4> draw();
 
@@ -338,12 +338,12 @@ void UiOverlay::measure(LayoutRequest& request) {
     ImGui::EndFrame();
 }
 
-void UiOverlay::layout(Simulation& simulation) {
+void UiOverlay::layout(Simulation& simulation, const Comparison* comparison) {
     renderer_.newFrame();
     if (!renderer_.error().empty()) throw std::runtime_error("ImGui: " + renderer_.error());
     ImGui::NewFrame();
     // No wall times: they would make equal runs differ.
-    ui::Readouts readouts = makeReadouts(simulation, ui::FrameTimes{});
+    ui::Readouts readouts = makeReadouts(simulation, ui::FrameTimes{}, comparison);
     ui::PanelActions actions =
         ui::drawControlPanel(simulation.scene(), simulation.timeScale, readouts, panel_, presets_);
     const auto box = [](const Rect& r) { return glm::vec4(r.min, r.size); };
@@ -445,6 +445,7 @@ class Capturer {
   private:
     render::Image drawFrame();
     void writeFrame(int index);
+    const Comparison* comparedRuns() const { return compare_ ? &compare_->comparison() : nullptr; }
     Json manifest() const;
     Json cameraJson() const;
     Json overlayList() const;
@@ -518,7 +519,7 @@ Capturer::Capturer(const CaptureOptions& options, const CapturePlan& plan,
         // ImGui settles in a few frames (auto-sized windows, scrollbars and wrapped
         // text measure the previous frame), so every captured frame looks the same
         // whichever frames came before it.
-        for (int frame = 0; frame < kUiWarmUpFrames; ++frame) ui_->layout(simulation_);
+        for (int frame = 0; frame < kUiWarmUpFrames; ++frame) ui_->layout(simulation_, comparedRuns());
     }
     const float aspect = float(view_.z) / float(view_.w);
     const render::Camera angles = camera_;
@@ -545,7 +546,7 @@ render::Image Capturer::drawFrame() {
         uiDrawn_ = compare_->labelsDrawn();
     }
     if (ui_) {
-        ui_->layout(simulation_);
+        ui_->layout(simulation_, comparedRuns());
         target_.bind();
         for (const glm::vec4& box : ui_->draw()) uiDrawn_.push_back(box);
     }

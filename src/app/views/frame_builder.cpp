@@ -87,7 +87,21 @@ std::string restitutionNote(const Simulation& simulation) {
 
 }  // namespace
 
-ui::Readouts makeReadouts(const Simulation& simulation, const ui::FrameTimes& timing) {
+void addMeasuredClaims(const Simulation& simulation, const Comparison* comparison, ui::Readouts& r) {
+    const int runs = comparison ? 1 + comparison->count() : 1;
+    for (int k = 0; k < runs; ++k) {
+        const Simulation& run = k == 0 ? simulation : comparison->simulation(k - 1);
+        const char view = runs > 1 ? char('A' + k) : 0;
+        for (const scenes::ClaimCheck& check : run.measuredClaims()) {
+            r.claims.push_back({check.claim->says, check.measured, check.holds, view});
+        }
+        r.claimsWatched += run.claimsWatched();
+    }
+    r.claimsForOtherSettings = simulation.claimsForOtherSettings();
+    r.claimsInterrupted = simulation.claimsInterrupted();
+}
+
+ui::Readouts makeReadouts(const Simulation& simulation, const ui::FrameTimes& timing, const Comparison* comparison) {
     ui::Readouts r;
     r.timing = timing;
     r.paused = simulation.paused;
@@ -121,12 +135,7 @@ ui::Readouts makeReadouts(const Simulation& simulation, const ui::FrameTimes& ti
             r.properties.push_back({v.name, v.value, v.meaning, static_cast<int>(v.verdict)});
         }
     }
-    for (const scenes::ClaimCheck& check : simulation.measuredClaims()) {
-        r.claims.push_back({check.claim->says, check.measured, check.holds});
-    }
-    r.claimsWatched = simulation.claimsWatched();
-    r.claimsForOtherSettings = simulation.claimsForOtherSettings();
-    r.claimsInterrupted = simulation.claimsInterrupted();
+    addMeasuredClaims(simulation, comparison, r);
     for (const AlarmLine& line : simulation.alarms().lines(simulation.world().time)) {
         r.alarms.push_back({line.text, line.hint, line.lit});
     }

@@ -2,6 +2,7 @@
 // Turns the simulation into what the renderer and the panel read: the plain
 // snapshot of spheres and planes, and the readouts. Shared by the window and the
 // capture mode so both show the same thing.
+#include "app/run/comparison.h"
 #include "app/run/simulation.h"
 #include "render/frame_snapshot.h"
 #include "ui/control_panel.h"
@@ -27,7 +28,13 @@ bool overlaysOnTop(const ui::PanelState& view, std::size_t sphereCount);
 // that it records contacts and trails from the next step on, and only then.
 void buildSnapshot(Simulation& simulation, const ui::PanelState& view, render::FrameSnapshot& snapshot);
 
-ui::Readouts makeReadouts(const Simulation& simulation, const ui::FrameTimes& timing);
+// The readouts of `simulation` (view A side by side); with `comparison`, the claims of the
+// text that the other views measure are listed too, each with its view's letter.
+ui::Readouts makeReadouts(const Simulation& simulation, const ui::FrameTimes& timing,
+                          const Comparison* comparison = nullptr);
+// Only the claims' part of them: r.claims, claimsWatched, claimsForOtherSettings and
+// claimsInterrupted.
+void addMeasuredClaims(const Simulation& simulation, const Comparison* comparison, ui::Readouts& r);
 
 // Axis-aligned bounds of the box (or of the spheres when there is none), m, for the camera.
 void sceneBounds(const Simulation& simulation, glm::vec3& lo, glm::vec3& hi);

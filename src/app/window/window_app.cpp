@@ -497,7 +497,7 @@ void WindowApp::frame(double dt) {
     followViewShape(placed.views);
     drawScene(placed.views);
     profile_.lap(FrameProfile::Draw);
-    ui::Readouts readouts = makeReadouts(simulation_, timing_);
+    ui::Readouts readouts = makeReadouts(simulation_, timing_, session_.comparison());
     readouts.diagnostics = session_.diagnostics(0);  // measured again after an edit or a step back
     ui::PanelActions actions = ui::drawControlPanel(simulation_.scene(), simulation_.timeScale, readouts, panel_, presets_);
     const auto box = [](const Rect& r) { return glm::vec4(r.min, r.size); };
