@@ -192,7 +192,8 @@ TEST(WindowLayout, TheBoxAspectFollowsTheBoxAndTheAngles) {
 
 // The panel's and the labels' text wraps at spaces, never beside '=' (a view's label
 // "A shock = off, passes = 1" broke into "passes =" / "1"), and a word wider than the
-// line (a hash in a narrow label) is cut where the line is full rather than clipped.
+// line (a hash in a narrow label) is cut where the line is full rather than clipped, or after a
+// hyphen when it has one ("generalized-reflections" in a view a quarter of a projector wide).
 TEST(WrappedText, KeepsNameEqualsValueWholeAndCutsAWordWiderThanTheLine) {
     ImGuiContext* context = ImGui::CreateContext();
     ImGuiIO& io = ImGui::GetIO();
@@ -207,6 +208,11 @@ TEST(WrappedText, KeepsNameEqualsValueWholeAndCutsAWordWiderThanTheLine) {
               "shock = off,\npasses = 1");
     EXPECT_EQ(ui::wrapAtSpaces("hash bf78370cf05532d3", 10.5f * glyph), "hash\nbf78370cf0\n5532d3");
     EXPECT_EQ(ui::wrapAtSpaces("files go to /tmp/a/b", ImGui::CalcTextSize("files go to /tmp/").x), "files go to\n/tmp/a/b");
+    // A name too wide for a narrow view's label, kept whole with its value by '=': after its hyphen.
+    EXPECT_EQ(ui::wrapAtSpaces("D solver = generalized-reflections", ImGui::CalcTextSize("solver = generalized-").x),
+              "D\nsolver = generalized-\nreflections");
+    EXPECT_EQ(ui::wrapAtSpaces("B method = reflection", ImGui::CalcTextSize("method = reflec").x),
+              "B\nmethod =\nreflection");  // rather than clipped
     ImGui::EndFrame();
     ImGui::DestroyContext(context);
 }

@@ -37,16 +37,23 @@ std::size_t cutToFit(std::string_view word, float width) {
 
 // Where a line that starts at text[0] ends: after as many whole words (up to a space,
 // which the break eats) as fit `width`, at least one. A first word wider than the line
-// breaks after its last '/' that fits (a long path), else where the line is full (a hash
-// in a narrow label: cut, not clipped).
+// breaks after its last '/' or '-' that fits (a long path, "generalized-reflections"),
+// else at its last space that fits (beside an '=' if need be), else where the line is
+// full (a hash in a narrow label: cut, not clipped).
 std::size_t lineEnd(std::string_view text, float width) {
     std::size_t end = nextBreak(text, 1);
     if (widthOf(text.substr(0, end)) > width) {
-        for (std::size_t slash = text.rfind('/', end - 1); slash != std::string_view::npos && slash > 0;
-             slash = text.rfind('/', slash - 1)) {
-            if (widthOf(text.substr(0, slash + 1)) <= width) return slash + 1;
+        for (std::size_t mark = text.find_last_of("/-", end - 1); mark != std::string_view::npos && mark > 0;
+             mark = text.find_last_of("/-", mark - 1)) {
+            if (widthOf(text.substr(0, mark + 1)) <= width) return mark + 1;
         }
-        return text.find(' ') < end ? end : cutToFit(text.substr(0, end), width);  // "a = b" stays whole
+        // "a = b" wider than the line: broken after its '=' rather than clipped ("method =" /
+        // "reflection" in a view a third of a projector wide).
+        for (std::size_t space = text.rfind(' ', end - 1); space != std::string_view::npos && space > 0;
+             space = text.rfind(' ', space - 1)) {
+            if (widthOf(text.substr(0, space)) <= width) return space;
+        }
+        return cutToFit(text.substr(0, end), width);
     }
     while (end < text.size()) {
         const std::size_t next = nextBreak(text, end + 1);

@@ -1,6 +1,7 @@
 #pragma once
 // Text wrapped to the window's width at spaces only, never beside '=' ("passes = 1" stays
-// whole); a word wider than the line breaks after a '/' (a path), else where it is full.
+// whole); a word wider than the line breaks after a '/' or '-' (a path, a hyphenated
+// name), else where it is full.
 // ImGui's own wrapping also breaks after '.' and ',', which splits a number across
 // lines ("-1." / "193").
 #include <string>
@@ -9,7 +10,7 @@
 namespace ui {
 
 // The text, wrapped at spaces to the content region's width (a word wider than the
-// line breaks after a '/', else where the line is full). Newlines are kept, an empty
+// line breaks after a '/' or '-', else where the line is full). Newlines are kept, an empty
 // line too.
 void textWrappedAtSpaces(std::string_view text);
 // The same text broken into lines ('\n') that fit `width` (ImGui units, current font).

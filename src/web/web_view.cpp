@@ -139,12 +139,15 @@ void selectSphere(LiveView& v, int index) {
     v.explainIndex = 0;
 }
 
-// Side by side's views: {"views": [{"lines": [label, readouts...]}, ...]} (none when off).
+// Side by side's views: {"views": [{"lines": [label, readouts...], "presented": [label, E~,
+// penetration]}, ...]} (none when off; "presented": the presentation layout's, as F5).
 Json viewsOf(const LiveView& v) {
     Json views = Json::array();
     if (!v.session->comparison()) return views;
+    const std::vector<std::vector<std::string>> presented =
+        app::comparisonReadouts(v.session->run(0), *v.session->comparison(), true);
     for (const std::vector<std::string>& lines : app::comparisonReadouts(v.session->run(0), *v.session->comparison())) {
-        views.push_back({{"lines", lines}});
+        views.push_back({{"lines", lines}, {"presented", presented[views.size()]}});
     }
     return views;
 }
@@ -544,7 +547,7 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_overlays() {
 // The run now: {"time_s", "steps", "spheres", "hash", "paused" (by the page, or by an
 // alarm: a value not finite), "time_scale", "camera": {"azimuth_rad", "elevation_rad",
 // "distance_m"}, "kinetic_J", "potential_J", "penetration_r",
-// "behind_real_time", "views" (side by side: each view's label lines, viewsOf), "only_view_a"
+// "behind_real_time", "views" (side by side: each view's label lines and its presented ones, viewsOf), "only_view_a"
 // (side by side: the parameters every other view sets, Comparison::setInEveryView), "selected"
 // (selectedOf), "timeline" (timelineOf), "claims" (claimsOf), "alarms" (alarmsOf), "look":
 // {"color_by", "overlays"}}.

@@ -100,6 +100,20 @@ std::vector<std::string> viewReadoutLines(const ViewReadout& view) {
     return lines;
 }
 
+namespace {
+
+// Presented, a label is short lines in large type: what the slides compare, the energy
+// (slide 14's simultaneous solver makes it grow) and the deepest penetration (slide 7's
+// answers, slide 14's sweep).
+std::vector<std::string> presentedLines(const ViewReadout& view) {
+    char energy[64], penetration[64];  // a number and its unit joined by no-break spaces (U+00A0)
+    std::snprintf(energy, sizeof energy, "E~ %.4g\u00a0J", view.diagnostics.modified);
+    std::snprintf(penetration, sizeof penetration, "penetration %.2f\u00a0%%\u00a0r", 100.0 * view.diagnostics.maxPenetration);
+    return {view.title, energy, penetration};
+}
+
+}  // namespace
+
 std::string joinedOverrides(const std::vector<std::string>& lists) {
     std::string text;
     for (const std::string& list : lists) text += (text.empty() ? "" : ",") + list;
@@ -120,7 +134,7 @@ std::vector<std::vector<std::string>> comparisonReadouts(const Simulation& prima
         for (const physics::Plane& m : run.scene().mirrors) mirrors.push_back(physics::mirrorAsymmetry(world, m));
         readout.properties = propertiesMarks(judgeProperties(run.impacts(), mirrors, run.params()));
         std::vector<std::string> lines = viewReadoutLines(readout);
-        if (presented) lines = {lines[0], lines[3]};  // the title and the penetration: what the slides compare
+        if (presented) lines = presentedLines(readout);
         views.push_back(std::move(lines));
     }
     return views;

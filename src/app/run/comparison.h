@@ -81,7 +81,7 @@ std::vector<std::string> viewReadoutLines(const ViewReadout& view);
 std::string joinedOverrides(const std::vector<std::string>& lists);
 
 // Each view's label lines, A first: "A   method = position", then its readouts
-// (viewReadoutLines). `presented`: the title and the penetration line alone (the
+// (viewReadoutLines). `presented`: the title, E~ and the penetration, short lines (the
 // presentation layout: large type on a projector).
 // The window draws them with ImGui (view_labels.h), the browser's page as text.
 std::vector<std::vector<std::string>> comparisonReadouts(const Simulation& primary, const Comparison& comparison,
