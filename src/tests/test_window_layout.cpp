@@ -10,6 +10,7 @@
 #include <imgui.h>
 
 #include "app/views/window_layout.h"
+#include "app/window/short_key_presses.h"
 #include "ui/wrapped_text.h"
 
 namespace {
@@ -214,5 +215,41 @@ TEST(WrappedText, KeepsNameEqualsValueWholeAndCutsAWordWiderThanTheLine) {
     EXPECT_EQ(ui::wrapAtSpaces("B method = reflection", ImGui::CalcTextSize("method = reflec").x),
               "B\nmethod =\nreflection");  // rather than clipped
     ImGui::EndFrame();
+    ImGui::DestroyContext(context);
+}
+
+// ImGui 1.86 reads the keys once a frame: a key pressed and let go between two frames (a
+// quick Enter at a few frames a second) is held down through one frame, then let go; a key
+// still held is left to its release event.
+TEST(ShortKeyPresses, AKeyPressedAndLetGoBetweenFramesIsDownForOneFrame) {
+    ImGuiContext* context = ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr;
+    app::ShortKeyPresses presses;
+    constexpr int kEnter = 257, kShift = 340;  // GLFW_KEY_ENTER, GLFW_KEY_LEFT_SHIFT
+    presses.pressed(kEnter);  // pressed; the backend's release came in the same poll
+    io.KeysDown[kEnter] = false;
+    presses.pressed(kShift);  // pressed and still held
+    io.KeysDown[kShift] = true;
+    presses.beforeNewFrame(io);
+    EXPECT_TRUE(io.KeysDown[kEnter]);
+    EXPECT_TRUE(io.KeysDown[kShift]);
+    presses.beforeNewFrame(io);  // the next frame, no events
+    EXPECT_FALSE(io.KeysDown[kEnter]);
+    EXPECT_TRUE(io.KeysDown[kShift]);
+    presses.pressed(kEnter);  // pressed and let go again in the frame it is held by us
+    io.KeysDown[kEnter] = false;
+    presses.beforeNewFrame(io);
+    presses.beforeNewFrame(io);
+    EXPECT_FALSE(io.KeysDown[kEnter]);
+    presses.pressed(kEnter);
+    io.KeysDown[kEnter] = false;
+    presses.beforeNewFrame(io);
+    presses.pressed(kEnter);  // let go by us, pressed again and held meanwhile
+    io.KeysDown[kEnter] = true;
+    presses.beforeNewFrame(io);
+    EXPECT_TRUE(io.KeysDown[kEnter]);
+    presses.pressed(9999);  // out of io.KeysDown's range: ignored
+    presses.beforeNewFrame(io);
     ImGui::DestroyContext(context);
 }

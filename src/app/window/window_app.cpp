@@ -17,6 +17,7 @@
 #include "app/window/frame_profile.h"
 #include "app/window/interaction_input.h"
 #include "app/window/multisampled_views.h"
+#include "app/window/short_key_presses.h"
 #include "app/window/window_settings.h"
 #include "app/views/interaction_windows.h"
 #include "app/run/output_files.h"
@@ -91,6 +92,7 @@ private:
     ui::Backdrop backdrop_;  // what the scene left beneath the UI this frame
     ui::PanelState panel_;
     InteractionInput input_;
+    ShortKeyPresses shortPresses_;  // a key pressed and let go between two frames still reaches ImGui
     std::vector<std::string> presets_;
     ui::FrameTimes timing_;
     double frameSeconds_ = 0.0;  // s, a running average of the real frame time
@@ -247,6 +249,7 @@ int keyAsTyped(int key, int scancode) {
 }
 
 void WindowApp::onKey(GLFWwindow* w, int key, int scancode, int action, int mods) {
+    if (action == GLFW_PRESS) static_cast<WindowApp*>(glfwGetWindowUserPointer(w))->shortPresses_.pressed(key);
     if (action != GLFW_PRESS && action != GLFW_REPEAT) return;
     if (ImGui::GetCurrentContext() && ImGui::GetIO().WantTextInput) return;
     static_cast<WindowApp*>(glfwGetWindowUserPointer(w))->handleKey(keyAsTyped(key, scancode), mods);
@@ -470,6 +473,7 @@ void WindowApp::drawScene(const ViewLayout& views) {
 
 void WindowApp::frame(double dt) {
     window_->pollEvents();
+    shortPresses_.beforeNewFrame(ImGui::GetIO());
     imguiRenderer_.newFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
