@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <nlohmann/json.hpp>
@@ -666,7 +667,26 @@ Scene parseScene(std::string_view text, const std::string& filename) {
     return scene;
 }
 
+namespace {
+
+// bytes: far above a saved state of the most spheres the demo runs (about 300 bytes a sphere).
+constexpr std::uintmax_t kMostSceneBytes = std::uintmax_t(1) << 30;
+
+}  // namespace
+
 Scene loadScene(const std::string& path) {
+    // Checked before it is opened: a pipe would block the open, and a device (/dev/zero,
+    // typed into the panel's file field) would be read until memory ran out.
+    namespace fs = std::filesystem;
+    std::error_code error;
+    const fs::file_status status = fs::status(path, error);
+    if (fs::exists(status) && !fs::is_regular_file(status)) {
+        throw SceneError(path + ":1:1: " + (fs::is_directory(status) ? "is a folder" : "is not a regular file") +
+                         ", so no scene file");
+    }
+    if (fs::is_regular_file(status) && fs::file_size(path, error) > kMostSceneBytes) {
+        throw SceneError(path + ":1:1: the scene file is larger than 1 GiB, far more than any scene");
+    }
     std::ifstream file(path, std::ios::binary);
     if (!file) throw SceneError(path + ":1:1: cannot open the scene file");
     std::ostringstream text;

@@ -12,6 +12,8 @@
 #include <initializer_list>
 #include <string>
 
+#include <sys/stat.h>
+
 #include "physics/diagnostics.h"
 #include "physics/step.h"
 #include "scenes/parameters.h"
@@ -32,6 +34,30 @@ TEST(SceneFile, RefusesJsonSyntaxErrorsAtTheirLine) {
     expectError("{\n  \"spheres\": [\n", "3:1", {"syntax error", "unexpected end of input"});
     expectError("", "1:1", {"syntax error", "unexpected end of input"});
     expectError("{\n  \"title\": \"a\nb\"\n}", "2:14", {"syntax error", "control character"});
+}
+
+// What is no file at all is refused before it is read: /dev/zero, typed into the window's
+// file field, was read until memory ran out (3 GB in 33 s); a pipe would block the open.
+TEST(SceneFile, RefusesADeviceAPipeAndAFolderWithoutReadingThem) {
+    const std::filesystem::path folder = std::filesystem::temp_directory_path() / "spheres_scene_not_a_file";
+    std::filesystem::remove_all(folder);
+    std::filesystem::create_directories(folder);
+    const std::string pipe = (folder / "pipe.json").string();
+    ASSERT_EQ(mkfifo(pipe.c_str(), 0600), 0);
+    const struct {
+        std::string path, says;
+    } cases[] = {{"/dev/zero", "/dev/zero:1:1: is not a regular file, so no scene file"},
+                 {pipe, pipe + ":1:1: is not a regular file, so no scene file"},
+                 {folder.string(), folder.string() + ":1:1: is a folder, so no scene file"}};
+    for (const auto& c : cases) {
+        try {
+            scenes::loadScene(c.path);
+            ADD_FAILURE() << c.path << " loaded";
+        } catch (const scenes::SceneError& e) {
+            EXPECT_EQ(std::string(e.what()), c.says);
+        }
+    }
+    std::filesystem::remove_all(folder);
 }
 
 TEST(SceneFile, RefusesARootThatIsNotAnObject) {
