@@ -83,7 +83,7 @@ void addClaims(CLI::App& cli, ClaimsOptions& o) {
 }
 
 void addWindowOptions(CLI::App& cli, WindowAppOptions& o) {
-    cli.add_option("--scene", o.scene, "Scene file or preset name (see `spheres presets`)");
+    cli.add_option("--scene", o.scene, "Scene file or preset name (see `spheres presets`; default 11_pile)");
     cli.add_option("--set", o.settings, "Override a parameter: name=value (repeatable)");
     cli.add_option("--frames", o.frames, "Run this many frames, then exit")->check(wholeNumberFrom(1));
     cli.add_option("--screenshot", o.screenshot, "Write the last frame to this PNG file");

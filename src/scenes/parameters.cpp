@@ -264,8 +264,8 @@ std::vector<Parameter> makeTable() {
                 param<&Params::maxEventsPerSphere>())),
         choice("response", "sphere-sphere response", {"lecture", "momentum"},
                static_cast<double>(kDefaults.response),
-               "lecture: slide 12, v1 \u2190 \u03b1 v1// + \u03b2 (v1\u22a5 + j/m1 u); with "
-               "it conserves momentum only when \u03b1 = \u03b2 = 1 and, at static contacts, \u03bc = 1. momentum: equal and opposite impulses, "
+               "lecture: slide 12, v1 \u2190 \u03b1 v1// + \u03b2 (v1\u22a5 + j/m1 u), which "
+               "conserves momentum only when \u03b1 = \u03b2 = 1 and, at static contacts, \u03bc = 1. momentum: equal and opposite impulses, "
                "(1 + \u03b2) on the normal and \u03b1 on the tangential speed: momentum is exact.",
                param<&Params::response>()),
         choice("split", "position correction split", {"half", "mass"},
@@ -294,8 +294,11 @@ std::vector<Parameter> makeTable() {
                             "The result is the same, bit for bit, for any thread count, in each pair order. "
                             "The position stages visit the pairs wavefront by wavefront (on CPUs with AVX2 or "
                             "AVX-512): no two pairs of a wavefront share a sphere, each sphere meets its "
-                            "partners in the pair order, and threads share a wavefront's pairs without waiting "
-                            "(in the colored order, a colour's). Otherwise each thread takes the pairs of its "
+                            "partners in the pair order, and each thread takes a run of strips across the pile "
+                            "through every wavefront, waiting only for its neighbours to finish the wavefront "
+                            "before (in the colored order, threads take whole blocks of 4096 spheres without "
+                            "waiting, runs of sphere numbers, or from 40 960 spheres places of the world, then "
+                            "the pairs between blocks by wavefronts and strips). Otherwise each thread takes the pairs of its "
                             "slab of the box, and waits where a sphere met another thread's pair last. "
                             "Scenes under 4096 spheres use one thread whatever the count.",
                             param<&Params::threads>())),

@@ -2,10 +2,15 @@
 // read by the UI, the command line's --set and the JSON loader.
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <iterator>
 #include <set>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "scenes/parameters.h"
+#include "scenes/presets.h"
 
 namespace {
 
@@ -220,3 +225,45 @@ TEST(ParameterSettings, ARefusalIsOneLineWhateverTheInputHolds) {
 }
 
 }  // namespace
+
+// The README's parameter table is the one table's: a row per parameter, its range and when
+// it applies, and a meaning that quotes the start of the panel's tooltip (ten of its rows
+// had drifted from the tooltips, the threads one by a whole design).
+TEST(ParameterTable, TheReadmesRowsQuoteTheTable) {
+    std::ifstream file(scenes::assetDirectory() + "/../README.md");
+    const std::string readme{std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
+    const std::size_t start = readme.find("\n| name | symbol / label |");
+    ASSERT_NE(start, std::string::npos);
+    std::set<std::string> rows;
+    std::istringstream lines(readme.substr(start + 1, readme.find("\n\n", start + 1) - start - 1));
+    for (std::string line; std::getline(lines, line);) {
+        if (line.rfind("| `", 0) != 0) continue;
+        std::vector<std::string> cells;  // split at " | " (a "\|" inside a cell is its text)
+        for (std::size_t at = 2; at < line.size();) {
+            const std::size_t end = line.find(" | ", at);
+            cells.push_back(line.substr(at, (end == std::string::npos ? line.size() - 2 : end) - at));
+            at = end == std::string::npos ? line.size() : end + 3;
+        }
+        ASSERT_EQ(cells.size(), 7u) << line;
+        const std::string name = cells[0].substr(1, cells[0].size() - 2);
+        const scenes::Parameter* p = scenes::findParameter(name);
+        ASSERT_NE(p, nullptr) << name;
+        rows.insert(name);
+        std::string range;
+        if (p->kind == scenes::ParameterKind::Choice) {
+            for (const std::string_view choice : p->choices) range += (range.empty() ? "`" : " / `") + std::string(choice) + "`";
+        } else {
+            range = scenes::formatNumber(p->min) + " \u2013 " + scenes::formatNumber(p->max);
+        }
+        EXPECT_EQ(cells[3], range) << name;
+        EXPECT_EQ(cells[5], p->applies == scenes::Applies::Live ? "live" : "restart") << name;
+        std::string meaning = cells[6];
+        for (std::size_t bar = meaning.find("\\|"); bar != std::string::npos; bar = meaning.find("\\|", bar)) {
+            meaning.erase(bar, 1);
+        }
+        EXPECT_FALSE(meaning.empty()) << name;
+        EXPECT_EQ(std::string(p->tooltip).substr(0, meaning.size()), meaning) << name;
+        EXPECT_EQ(meaning.back(), '.') << name << ": whole sentences";
+    }
+    EXPECT_EQ(rows.size(), scenes::parameterTable().size());
+}
