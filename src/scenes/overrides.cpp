@@ -39,7 +39,7 @@ std::string checkOverrides(const Scene& scene, const std::vector<std::string>& o
             return setting + ": " + error;
         }
     }
-    return "";
+    return settingsThatActOnNothing(copy, overrides);
 }
 
 namespace {

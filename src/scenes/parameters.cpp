@@ -98,8 +98,9 @@ Parameter withChoiceNotes(std::vector<std::string_view> notes, Parameter p) {
     return p;
 }
 
-Parameter onlyWith(bool (*available)(const Scene&), Parameter p) {
+Parameter onlyWith(bool (*available)(const Scene&), std::string_view when, Parameter p) {
     p.available = available;
+    p.availableWhen = when;
     return p;
 }
 
@@ -231,7 +232,7 @@ std::vector<Parameter> makeTable() {
                "\u03b1 and \u03bc or the shock sweep turned back into approach are answered once more, "
                "normal impulses only, never adding energy.",
                param<&Params::solver>()),
-        onlyWith(sweepsLevels, choice("shock", "shock propagation", {"off", "on"},
+        onlyWith(sweepsLevels, "acts only with the position, velocity or reflection method", choice("shock", "shock propagation", {"off", "on"},
                static_cast<double>(kDefaults.shock),
                "Slide 14: \"precompute contact graph, explicit shock propagation management\" "
                "(Guendelman et al. 2003). on: after the K passes, the spheres that touch a plane are "
@@ -246,7 +247,7 @@ std::vector<Parameter> makeTable() {
                "still hold the column up (200 % of r without it). Spheres that reach no plane keep the "
                "passes' answer.",
                param<&Params::shock>())),
-        onlyWith(isContinuous, choice("toi", "time of impact", {"closed-form", "bisection"},
+        onlyWith(isContinuous, "acts only with the continuous method", choice("toi", "time of impact", {"closed-form", "bisection"},
                static_cast<double>(kDefaults.timeOfImpact),
                "Continuous method only: how the instant of contact is found. closed-form: the "
                "earliest root of the gap, a quadratic in time along the step's parabola. "
@@ -254,7 +255,7 @@ std::vector<Parameter> makeTable() {
                "until it is 1e-12 s long (32 to 34 halvings per impact at h = 1/60 s; "
                "about log2(step / 1e-12 s)).",
                param<&Params::timeOfImpact>())),
-        onlyWith(isContinuous, integer("max_events", "most impacts per sphere", 1, 100000, kDefaults.maxEventsPerSphere,
+        onlyWith(isContinuous, "acts only with the continuous method", integer("max_events", "most impacts per sphere", 1, 100000, kDefaults.maxEventsPerSphere,
                 "Continuous method only: a solver step of N spheres handles at most N times "
                 "this many impacts. Past it the rest of the step is projected as the position "
                 "method would, and the alarms say so: a step never hangs. A sphere at rest "
@@ -307,18 +308,18 @@ std::vector<Parameter> makeTable() {
                "Where candidate pairs come from: a uniform grid (fast) or the lecture's loop "
                "over all N\u00b2 pairs (slow). Both find the same contacts.",
                param<&Params::broadPhase>()),
-        onlyWith(hasEmitter, real("emit_period", "T  emitter period", "s", 0.01, 60.0, Emitter{}.period,
+        onlyWith(hasEmitter, "acts only on a scene with an emitter", real("emit_period", "T  emitter period", "s", 0.01, 60.0, Emitter{}.period,
              "The course's emitter: one sphere every T seconds (\"rain into the cube\"), "
              "placed only where it overlaps nothing, else at a later step. After t seconds it "
              "has emitted floor(t / T) spheres, fewer while its spot is taken or once it "
              "reaches its maximum. Acts on the scene's first emitter.",
              {emitPeriodOf, setEmitPeriod})),
-        onlyWith(hasGenerator, restart(integer("count", "N  spheres", 0, kMaxGeneratedCount, 100,
+        onlyWith(hasGenerator, "acts only on a scene with generated spheres", restart(integer("count", "N  spheres", 0, kMaxGeneratedCount, 100,
                         "Number of spheres the scene's first generator places. Applies on "
                         "restart. The panel's slider reaches 100 000: Ctrl+click it and type, or "
                         "--set, for more.",
                         {countOf, setCount}))),
-        onlyWith(hasGenerator, restart(real("radius", "r  sphere radius", "m", 0.005, 0.5, Generator{}.radiusMax,
+        onlyWith(hasGenerator, "acts only on a scene with generated spheres", restart(real("radius", "r  sphere radius", "m", 0.005, 0.5, Generator{}.radiusMax,
                      "The largest radius of the generated spheres (all generators); setting it gives every "
                      "generated sphere this one radius. Applies on restart.",
                      {radiusOf, setRadius}))),
@@ -504,6 +505,19 @@ std::string applyAssignment(Scene& scene, std::string_view assignment) {
 
 std::string applySetting(Scene& scene, std::string_view assignment) {
     return oneLineAnswer(applyAssignment(scene, assignment));
+}
+
+std::string settingsThatActOnNothing(const Scene& scene, const std::vector<std::string>& settings) {
+    for (const std::string& setting : settings) {
+        const Parameter* p = findParameter(trim(std::string_view(setting).substr(0, setting.find('='))));
+        if (!p || p->availableIn(scene)) continue;
+        std::string why = setting + ": " + std::string(p->name) + " " + std::string(p->availableWhen);
+        if (p->availableWhen.find("method") != std::string_view::npos) {
+            why += ", and this run's is " + formatValue(*findParameter("method"), scene);
+        }
+        return why;
+    }
+    return "";
 }
 
 std::string formatValue(const Parameter& p, const Scene& scene) {

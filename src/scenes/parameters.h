@@ -37,9 +37,12 @@ struct Parameter {
     double (*get)(const Scene&) = nullptr;
     // Stores a value already checked by checkValue; returns "" or why it cannot.
     std::string (*set)(Scene&, double) = nullptr;
-    // Whether the scene has what the parameter acts on (an emitter, a generator);
-    // nullptr: always. The UI hides the others.
+    // Whether the scene has what the parameter acts on (an emitter, a generator, the
+    // method it belongs to); nullptr: always. The UI hides the others, and a setting of
+    // it refused where it acts on nothing (settingsThatActOnNothing) says `availableWhen`:
+    // "acts only with the continuous method".
     bool (*available)(const Scene&) = nullptr;
+    std::string_view availableWhen = {};
     // Integer: what the slider shows for 0 when 0 means something else than none
     // (threads = 0: one per core); "": the number. A literal, shown as an ImGui format.
     std::string_view zeroMeans = {};
@@ -57,6 +60,11 @@ const std::vector<Parameter>& parameterTable();
 
 // The entry called `name`, or nullptr.
 const Parameter* findParameter(std::string_view name);
+
+// Once every setting of a run is applied (so that their order does not matter): "" when
+// each acts on something in `scene`, else one line naming the first that does not
+// ("toi=bisection: toi acts only with the continuous method, and this one is velocity").
+std::string settingsThatActOnNothing(const Scene& scene, const std::vector<std::string>& settings);
 
 // "name=value": checks the value against the table and stores it in the scene.
 // Returns "" on success, else one line naming the problem (unknown name with

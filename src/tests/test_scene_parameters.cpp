@@ -11,6 +11,7 @@
 
 #include "scenes/parameters.h"
 #include "scenes/presets.h"
+#include "scenes/scene_json.h"
 
 namespace {
 
@@ -266,4 +267,22 @@ TEST(ParameterTable, TheReadmesRowsQuoteTheTable) {
         EXPECT_EQ(meaning.back(), '.') << name << ": whole sentences";
     }
     EXPECT_EQ(rows.size(), scenes::parameterTable().size());
+}
+
+// A setting of a parameter the run's method has no use for (toi under the velocity method)
+// was accepted and did nothing; it is refused once every setting is in, whatever their order.
+TEST(ParameterTable, ASettingThatActsOnNothingIsRefusedWhateverTheOrder) {
+    const scenes::Scene cradle = scenes::loadScene(scenes::presetPath("08_newtons_cradle"));  // velocity based
+    const auto refusal = [&](const std::vector<std::string>& settings) {
+        scenes::Scene scene = cradle;
+        for (const std::string& setting : settings) EXPECT_EQ(scenes::applySetting(scene, setting), "") << setting;
+        return scenes::settingsThatActOnNothing(scene, settings);
+    };
+    EXPECT_EQ(refusal({"toi=bisection"}),
+              "toi=bisection: toi acts only with the continuous method, and this run's is velocity");
+    EXPECT_EQ(refusal({"toi=bisection", "method=continuous"}), "");
+    EXPECT_EQ(refusal({"method=continuous", "max_events=7"}), "");
+    EXPECT_EQ(refusal({"method=continuous", "shock=on"}),
+              "shock=on: shock acts only with the position, velocity or reflection method, and this run's is continuous");
+    EXPECT_EQ(refusal({"shock=on", "beta=0.5"}), "");
 }

@@ -36,11 +36,16 @@ scenes::Scene sceneWithSettings(const std::string& name, const std::string& sett
     }
     scenes::Scene scene = scenes::loadScene(path);
     std::istringstream lines(settings);
+    std::vector<std::string> applied;
     for (std::string setting; std::getline(lines, setting);) {
         if (setting.empty()) continue;
         if (const std::string error = scenes::applySetting(scene, setting); !error.empty()) {
             throw std::runtime_error(setting + ": " + error);
         }
+        applied.push_back(setting);
+    }
+    if (const std::string error = scenes::settingsThatActOnNothing(scene, applied); !error.empty()) {
+        throw std::runtime_error(error);
     }
     return scene;
 }

@@ -85,6 +85,9 @@ scenes::Scene loadSceneWithSettings(const std::string& nameOrPath,
         const std::string error = scenes::applySetting(scene, setting);
         if (!error.empty()) throw UsageError("--set " + setting + ": " + error);
     }
+    if (const std::string error = scenes::settingsThatActOnNothing(scene, settings); !error.empty()) {
+        throw UsageError("--set " + error);
+    }
     return scene;
 }
 
