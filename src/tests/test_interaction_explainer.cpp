@@ -247,6 +247,9 @@ TEST(ContactExplanation, NamesSlideSevensAnswers) {
     EXPECT_TRUE(hasLine(lines, "Slide 7: back to the instant of collision"));
     EXPECT_TRUE(hasLine(lines, "t* = "));
     EXPECT_TRUE(hasLine(lines, "continuous: answered at the instant of contact"));
+    // It has no pass: its title says when within the step (it said "pass 1 of 4").
+    EXPECT_EQ(app::contactTitle(world.contacts[0], 0, 1, params.passes).find("pass"), std::string::npos);
+    EXPECT_NE(app::contactTitle(world.contacts[0], 0, 1, params.passes).find("at its instant, "), std::string::npos);
 }
 
 // Slide 14's global solve: each contact is logged with the velocities before and after the
@@ -275,6 +278,12 @@ TEST(ContactExplanation, SaysALcpContactWasSolvedWithTheOthers) {
         expectVector(event.velocityAfter[0], {0.0, 0.0, 0.2}, 1e-9);
         const auto lines = app::explanationLines(app::explainContact(event, params), params, 0);
         EXPECT_TRUE(hasLine(lines, "lcp (slide 14): solved together with every touching contact"));
+        // The global problem first, with the numbers of complementarity: c = -sqrt3/2 before,
+        // c+ = +sqrt3/2 after, so c+ + beta c = 0 where lambda > 0.
+        EXPECT_TRUE(hasLine(lines, "Slide 14, the global approach (lcp): every touching contact in one problem"));
+        EXPECT_TRUE(hasLine(lines, "c = (v\u2081 \u2212 v\u2082)\u00b7u = -0.8660 m/s before, c\u207a = 0.8660 m/s after"));
+        EXPECT_TRUE(hasLine(lines, "\u03bb = 0.6928 kg m/s \u2265 0,   c\u207a + \u03b2 c = 0 m/s \u2265 0 (\u03b2 = 1 here)"));
+        EXPECT_TRUE(hasLine(lines, "it pushed (\u03bb > 0), so it leaves at exactly c\u207a = \u2212\u03b2 c"));
         // Each of sphere 0's contacts took lambda = 2 sqrt3 / 5 = 0.6928 kg m/s, the other too.
         EXPECT_NEAR(event.solvedImpulse, 0.4 * std::sqrt(3.0), 1e-9);
         const auto together = app::solvedWithLines(event, world.contacts, 0);

@@ -124,6 +124,31 @@ void instantLine(std::vector<Line>& lines, const ContactExplanation& e, const ph
                p.solverStep()));
 }
 
+// Slide 14's global approach: the contact's impulse came from one problem over its cluster,
+// so the slides' formula below (this contact alone) is a comparison, not the answer. Its
+// numbers check complementarity: lambda >= 0, c+ + beta c >= 0, and one of them is 0.
+void globalSolveLines(std::vector<Line>& lines, const ContactExplanation& e, const physics::Params& p) {
+    if (!e.solvedTogether) return;
+    const bool lcp = p.solver == physics::Solver::Lcp;
+    add(lines, Line::Kind::Heading,
+        lcp ? "Slide 14, the global approach (lcp): every touching contact in one problem"
+            : "Slide 14, generalized reflections (Smith et al. 2012): the approaching contacts together");
+    const double c = e.plane ? e.before[0].normal : -e.normalSpeed;                              // m/s, < 0 approaching
+    const double cAfter = e.plane ? e.after[0].normal : e.after[0].normal - e.after[1].normal;  // m/s
+    // The target: a contact approaching faster than epsilon leaves at beta times its approach;
+    // a static one, or the answer after the last pass (positivity), at none.
+    const double beta = e.staticContact || e.pass >= p.passes ? 0.0 : p.beta;
+    add(lines, Line::Kind::Formula,
+        format("c = (v₁ − v₂)·u = %.4f m/s before, c⁺ = %.4f m/s after", clean(c), clean(cAfter)));
+    add(lines, Line::Kind::Formula,
+        format("λ = %.4g kg m/s ≥ 0,   c⁺ + β c = %.4g m/s ≥ 0 (β = %.3g here)", e.lambda, clean(cAfter + beta * c),
+               beta));
+    add(lines, Line::Kind::Result,
+        e.lambda > 0.0 ? "it pushed (λ > 0), so it leaves at exactly c⁺ = −β c: complementarity, λ (c⁺ + β c) = 0"
+                       : "it did not push (λ = 0): its spheres may leave it faster");
+    add(lines, Line::Kind::Note, "below, the slides' pairwise answer to this contact alone, for comparison");
+}
+
 void matchLine(std::vector<Line>& lines, const ContactExplanation& e, const physics::Params& p) {
     if (e.solvedTogether && p.solver == physics::Solver::Lcp) {
         add(lines, Line::Kind::Note,
@@ -157,8 +182,9 @@ void matchLine(std::vector<Line>& lines, const ContactExplanation& e, const phys
 void planeLines(const ContactExplanation& e, const physics::Params& p, int boxPlaneCount, std::vector<Line>& lines) {
     add(lines, Line::Kind::Heading,
         format("Sphere #%u and the %s, %s", e.sphere, planeName(e.other, boxPlaneCount).c_str(),
-               passName(e.pass, p.passes, e.solvedTogether).c_str()));
+               passName(e.pass, p.passes, e.solvedTogether, e.timeOfImpact).c_str()));
     instantLine(lines, e, p);
+    globalSolveLines(lines, e, p);
     add(lines, Line::Kind::Heading, "Slide 3: detection, (p − a)·n ≤ r");
     add(lines, Line::Kind::Formula, "n = " + vec(e.normal) + "  (unit, into the free side)");
     add(lines, Line::Kind::Formula, format("d = r − (p − a)·n = %.4g m  (distance of penetration, slide 8)", depthShown(e.depth)));
@@ -198,8 +224,9 @@ void pairLines(const ContactExplanation& e, const physics::Params& p, std::vecto
     const bool lecture = p.response == physics::ResponseModel::LectureAttenuation;
     add(lines, Line::Kind::Heading,
         format("Sphere 1 = #%u and sphere 2 = #%d, %s", e.sphere, e.other,
-               passName(e.pass, p.passes, e.solvedTogether).c_str()));
+               passName(e.pass, p.passes, e.solvedTogether, e.timeOfImpact).c_str()));
     instantLine(lines, e, p);
+    globalSolveLines(lines, e, p);
     if (!std::isfinite(e.mass[1])) {
         add(lines, Line::Kind::Note,
             format("slide 14's shock propagation: #%d is in the level below, frozen (m₂ = ∞, 1/m₂ = 0): only "
@@ -305,6 +332,7 @@ ContactExplanation explainContact(const physics::ContactEvent& event, const phys
     e.epsilon = params.epsilon;
     e.recordedBounce = event.bounce;
     e.solvedTogether = event.solvedImpulse >= 0.0;
+    e.lambda = event.solvedImpulse;
     e.timeOfImpact = event.timeOfImpact;
     const bool velocitiesOnly = e.solvedTogether && event.pass >= params.passes;
     e.reflected = params.method == physics::Method::Reflection && !velocitiesOnly;
@@ -355,7 +383,8 @@ ContactExplanation explainContact(const physics::ContactEvent& event, const phys
     return e;
 }
 
-std::string passName(int pass, int passes, bool solvedTogether) {
+std::string passName(int pass, int passes, bool solvedTogether, double timeOfImpact) {
+    if (timeOfImpact >= 0.0) return format("at its instant, %.3f ms into the step", 1e3 * timeOfImpact);
     if (pass < passes) return format("pass %d of %d", pass + 1, passes);
     // After the K passes: a global solver's last answer (the position and reflection methods
     // answer the velocities once more after the last projection), or the shock sweep.
@@ -455,7 +484,7 @@ int contactPartner(const physics::ContactEvent& event, int selected) {
 std::string contactTitle(const physics::ContactEvent& event, int selected, int boxPlaneCount, int passes) {
     char text[128];
     const char* kind = event.bounce ? "bounce" : "static";
-    const std::string pass = passName(event.pass, passes, event.solvedImpulse >= 0.0);
+    const std::string pass = passName(event.pass, passes, event.solvedImpulse >= 0.0, event.timeOfImpact);
     if (event.isPlane()) {
         std::snprintf(text, sizeof text, "%s, %s, %s", planeName(-1 - event.other, boxPlaneCount).c_str(), pass.c_str(),
                       kind);

@@ -50,6 +50,7 @@ struct ContactExplanation {
     // (lambda > 0): a static contact that did not is left undamped.
     bool undamped = false;
     bool solvedTogether = false;  // by slide 14's lcp or generalized reflections (its lambda logged)
+    double lambda = -1.0;         // kg m/s, the impulse they gave it; -1: answered pairwise
     double mass[2]{0.0, 0.0};     // kg (0 for a plane)
     double impulse = 0.0;         // kg m/s, slide 11: j = 2/(1/m1 + 1/m2) (v2 - v1).u; 0 for a plane
     VelocitySplit before[2];      // of sphere 1 and sphere 2, along `normal`
@@ -69,7 +70,8 @@ ContactExplanation explainContact(const physics::ContactEvent& event, const phys
 // "pass 2 of 4"; for a contact logged with pass = K, after the K passes: "after the last
 // pass, velocities only" for a global solver's last answer (`solvedTogether`), else "the
 // shock propagation sweep".
-std::string passName(int pass, int passes, bool solvedTogether = false);
+// `timeOfImpact` (s, the continuous method's instant; -1 none): such a contact has no pass.
+std::string passName(int pass, int passes, bool solvedTogether = false, double timeOfImpact = -1.0);
 
 // The plane's name: floor, ceiling, wall -x ... for the box (in scenes::boxPlanes'
 // order), "plane k" for the extra ones.
