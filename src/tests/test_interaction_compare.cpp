@@ -384,3 +384,21 @@ TEST(SideBySide, EachViewMeasuresWhatTheTextSaysOfIt) {
     EXPECT_EQ(views, "ABCD");
     EXPECT_EQ(app::makeReadouts(simulation, ui::FrameTimes{}).claimsWatched, simulation.claimsWatched());
 }
+
+// The side-by-side field offers, until the user writes there, the scene's own overrides,
+// else the other of the slides' methods: method=velocity on the cradle (velocity based
+// already) opened two identical views.
+TEST(SideBySide, TheFieldOffersWhatChangesSomething) {
+    const scenes::Scene cradle = scenes::loadScene(scenes::presetPath("08_newtons_cradle"));
+    const scenes::Scene pile = scenes::loadScene(scenes::presetPath("11_pile"));
+    const scenes::Scene column = scenes::loadScene(scenes::presetPath("21_shock_column"));
+    EXPECT_EQ(app::suggestedOverrides(cradle), "method=position");
+    EXPECT_EQ(app::suggestedOverrides(pile), "method=velocity");
+    EXPECT_EQ(app::suggestedOverrides(column), "shock=off,on,passes=1,4");
+    for (const scenes::Scene* scene : {&cradle, &pile}) {
+        app::Simulation simulation(*scene);
+        app::Session session(simulation);
+        ASSERT_EQ(session.startComparison({app::suggestedOverrides(*scene)}), "");
+        EXPECT_FALSE(session.comparison()->changesNothing(simulation.scene())) << scene->title;
+    }
+}

@@ -194,7 +194,8 @@ TEST(WindowPaths, SideBySideTakesNewOverridesOnEnterAndSaysWhenTheViewsAreTheSam
     app::Simulation simulation(scenes::loadScene(scenes::presetPath("08_newtons_cradle")));
     app::Session session(simulation);
     app::InteractionInput input(session);
-    input.tools().compareText = "method=velocity";  // the default override: the cradle's own method
+    EXPECT_EQ(input.tools().compareText, "method=position");  // offered: not the cradle's own method
+    input.tools().compareText = "method=velocity";  // typed: the cradle's own method
     ASSERT_TRUE(input.applyCompare(0.0));
     ASSERT_NE(session.comparison(), nullptr);
     EXPECT_NE(input.tools().message.find("method = velocity in both views"), std::string::npos)
@@ -215,6 +216,25 @@ TEST(WindowPaths, SideBySideTakesNewOverridesOnEnterAndSaysWhenTheViewsAreTheSam
     input.apply(enter, app::ViewLayout{}, render::Camera{}, 3.0);
     EXPECT_NE(input.tools().message.find("cannot compare"), std::string::npos) << input.tools().message;
     EXPECT_EQ(session.comparison()->label(), "order = reversed, passes = 1");
+}
+
+// The bar offers the other method on a scene without a "compare" of its own, the scene's
+// own otherwise, and keeps what the user wrote from scene to scene.
+TEST(WindowPaths, TheOverridesOfferedFollowTheSceneUntilTheUserWritesThere) {
+    app::Simulation simulation(scenes::loadScene(scenes::presetPath("08_newtons_cradle")));
+    app::Session session(simulation);
+    app::InteractionInput input(session);
+    EXPECT_EQ(input.tools().compareText, "method=position");
+    const auto open = [&](const char* preset) {
+        simulation.setScene(scenes::loadScene(scenes::presetPath(preset)));
+        input.sceneChanged();
+        return input.tools().compareText;
+    };
+    EXPECT_EQ(open("11_pile"), "method=velocity");
+    EXPECT_EQ(open("21_shock_column"), "shock=off,on,passes=1,4");
+    EXPECT_EQ(open("08_newtons_cradle"), "method=position");
+    input.tools().compareText = "order=reversed";  // written
+    EXPECT_EQ(open("11_pile"), "order=reversed");
 }
 
 // Esc backs out one level at a time (the window leaves the presentation layout first):

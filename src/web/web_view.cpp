@@ -245,7 +245,8 @@ extern "C" {
 // canvas of width x height px: {"title", "preset" (its name in the preset list), "sliders"
 // (those its text names: the presentation layout's), "time_scale" (its range), "slide",
 // "description", "compare" (the overrides the scene opens side by side with, as the
-// desktop does; "" none)} or {"error"}.
+// desktop does; "" none), "suggested_compare" (what the field offers: that, else the other
+// method, app::suggestedOverrides)} or {"error"}.
 EMSCRIPTEN_KEEPALIVE const char* spheres_open(const char* name, const char* settings, int width, int height) {
     LiveView& v = live();
     try {
@@ -273,7 +274,8 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_open(const char* name, const char* sett
                        {"time_scale", {ui::kTimeScaleRange[0], ui::kTimeScaleRange[1]}},
                        {"slide", s.slide},
                        {"description", scenes::describedText(s)},
-                       {"compare", app::joinedOverrides(s.compare)}});
+                       {"compare", app::joinedOverrides(s.compare)},
+                       {"suggested_compare", app::suggestedOverrides(s)}});
     } catch (const std::exception& e) {
         return answer({{"error", e.what()}});
     }

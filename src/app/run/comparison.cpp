@@ -114,6 +114,11 @@ std::vector<std::string> presentedLines(const ViewReadout& view) {
 
 }  // namespace
 
+std::string suggestedOverrides(const scenes::Scene& scene) {
+    if (!scene.compare.empty()) return joinedOverrides(scene.compare);
+    return scene.params.method == physics::Method::VelocityBased ? "method=position" : "method=velocity";
+}
+
 std::string joinedOverrides(const std::vector<std::string>& lists) {
     std::string text;
     for (const std::string& list : lists) text += (text.empty() ? "" : ",") + list;

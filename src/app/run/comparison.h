@@ -80,6 +80,11 @@ std::vector<std::string> viewReadoutLines(const ViewReadout& view);
 // joined by commas.
 std::string joinedOverrides(const std::vector<std::string>& lists);
 
+// What the side-by-side field offers for `scene` until the user writes there: the scene's
+// own "compare", else the other of the slides' two methods (method=velocity offered on the
+// cradle, already velocity based, made two identical views).
+std::string suggestedOverrides(const scenes::Scene& scene);
+
 // Each view's label lines, A first: "A   method = position", then its readouts
 // (viewReadoutLines). `presented`: the title, E~ and the penetration, short lines (the
 // presentation layout: large type on a projector).

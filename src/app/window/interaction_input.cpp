@@ -83,10 +83,17 @@ std::string InteractionInput::startComparison(const std::vector<std::string>& li
 
 void InteractionInput::sceneChanged() {
     session_.sceneChanged();
+    suggestOverrides();
     const std::vector<std::string>& asked = session_.run(0).scene().compare;
     if (asked.empty() || !session_.comparison()) return;
     tools_.compareText = joinedOverrides(asked);
     foldReadouts_ = true;
+}
+
+void InteractionInput::suggestOverrides() {
+    const std::string next = suggestedOverrides(session_.run(0).scene());
+    if (tools_.compareText == suggested_) tools_.compareText = next;  // else the user's own stay
+    suggested_ = next;
 }
 
 bool InteractionInput::toggleCompare(double now) {

@@ -17,7 +17,7 @@ public:
     static constexpr double kMessageSeconds = 8.0;  // s a result or refusal stays on screen
     static constexpr float kClickPixels = 5.0f;     // a press that moves less is a click (select)
 
-    explicit InteractionInput(Session& session) : session_(session) {}
+    explicit InteractionInput(Session& session) : session_(session), suggested_(tools_.compareText) { suggestOverrides(); }
 
     ToolWindowsState& tools() { return tools_; }
     const ToolWindowsState& tools() const { return tools_; }
@@ -49,8 +49,10 @@ public:
     // "name=value,..." given on the command line: side by side from the start.
     std::string startComparison(const std::vector<std::string>& lists);
     // After the primary's scene changed: Session::sceneChanged, and the bar shows the
-    // overrides of the side by side the new scene opens with, if any.
+    // overrides of the side by side the new scene opens with, if any (suggestOverrides).
     void sceneChanged();
+    // The bar's overrides, while the user has written none: suggestedOverrides(scene).
+    void suggestOverrides();
 
     // The message centred above the timeline bar, for a few seconds from `now`.
     void say(double now, const char* format, ...) __attribute__((format(printf, 3, 4)));
@@ -59,6 +61,7 @@ private:
 
     Session& session_;
     ToolWindowsState tools_;
+    std::string suggested_;       // the bar's last offer: while it shows it, the next scene's replaces it
     double messageTime_ = 0.0;    // s, window time of tools_.message
     bool pressInScene_ = false;   // the left button went down over the scene, not over a window
     int dragView_ = 0;

@@ -5,7 +5,8 @@
 // software GL) a quick Enter after a value typed into a slider, a Backspace or an arrow in
 // a field was lost, and the typed value silently not applied. (Characters are queued by
 // ImGui, and the mouse backend keeps a click that came and went: those were never lost.)
-// A press seen since the last frame is held down through the next frame, then let go.
+// A press seen since the last frame is held down through the next frame, then let go;
+// not a modifier (Shift, Ctrl, Alt, Super), whose state ImGui reads at every key event.
 #include <vector>
 
 struct ImGuiIO;
@@ -14,7 +15,8 @@ namespace app {
 
 class ShortKeyPresses {
 public:
-    // From the key callback, for every GLFW_PRESS (key: io.KeysDown's index, a GLFW key).
+    // From the key callback, for every GLFW_PRESS (key: io.KeysDown's index, a GLFW key);
+    // modifiers are ignored.
     void pressed(int key);
     // After the events were polled, before ImGui::NewFrame: the keys pressed and already
     // released since the last frame are down for this one; those held so last frame let go.
