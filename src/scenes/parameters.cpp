@@ -104,6 +104,12 @@ Parameter onlyWith(bool (*available)(const Scene&), std::string_view when, Param
     return p;
 }
 
+// What each condition of onlyWith says when a setting acts on nothing (settingsThatActOnNothing).
+constexpr std::string_view kWithLevels = "acts only with the position, velocity or reflection method";
+constexpr std::string_view kWithContinuous = "acts only with the continuous method";
+constexpr std::string_view kWithEmitter = "acts only on a scene with an emitter";
+constexpr std::string_view kWithGenerator = "acts only on a scene with generated spheres";
+
 bool hasEmitter(const Scene& s) { return !s.emitters.empty(); }
 bool hasGenerator(const Scene& s) { return !s.generators.empty(); }
 bool isContinuous(const Scene& s) { return s.params.method == physics::Method::Continuous; }
@@ -232,7 +238,7 @@ std::vector<Parameter> makeTable() {
                "\u03b1 and \u03bc or the shock sweep turned back into approach are answered once more, "
                "normal impulses only, never adding energy.",
                param<&Params::solver>()),
-        onlyWith(sweepsLevels, "acts only with the position, velocity or reflection method", choice("shock", "shock propagation", {"off", "on"},
+        onlyWith(sweepsLevels, kWithLevels, choice("shock", "shock propagation", {"off", "on"},
                static_cast<double>(kDefaults.shock),
                "Slide 14: \"precompute contact graph, explicit shock propagation management\" "
                "(Guendelman et al. 2003). on: after the K passes, the spheres that touch a plane are "
@@ -247,7 +253,7 @@ std::vector<Parameter> makeTable() {
                "still hold the column up (200 % of r without it). Spheres that reach no plane keep the "
                "passes' answer.",
                param<&Params::shock>())),
-        onlyWith(isContinuous, "acts only with the continuous method", choice("toi", "time of impact", {"closed-form", "bisection"},
+        onlyWith(isContinuous, kWithContinuous, choice("toi", "time of impact", {"closed-form", "bisection"},
                static_cast<double>(kDefaults.timeOfImpact),
                "Continuous method only: how the instant of contact is found. closed-form: the "
                "earliest root of the gap, a quadratic in time along the step's parabola. "
@@ -255,7 +261,8 @@ std::vector<Parameter> makeTable() {
                "until it is 1e-12 s long (32 to 34 halvings per impact at h = 1/60 s; "
                "about log2(step / 1e-12 s)).",
                param<&Params::timeOfImpact>())),
-        onlyWith(isContinuous, "acts only with the continuous method", integer("max_events", "most impacts per sphere", 1, 100000, kDefaults.maxEventsPerSphere,
+        onlyWith(isContinuous, kWithContinuous,
+                 integer("max_events", "most impacts per sphere", 1, 100000, kDefaults.maxEventsPerSphere,
                 "Continuous method only: a solver step of N spheres handles at most N times "
                 "this many impacts. Past it the rest of the step is projected as the position "
                 "method would, and the alarms say so: a step never hangs. A sphere at rest "
@@ -308,18 +315,19 @@ std::vector<Parameter> makeTable() {
                "Where candidate pairs come from: a uniform grid (fast) or the lecture's loop "
                "over all N\u00b2 pairs (slow). Both find the same contacts.",
                param<&Params::broadPhase>()),
-        onlyWith(hasEmitter, "acts only on a scene with an emitter", real("emit_period", "T  emitter period", "s", 0.01, 60.0, Emitter{}.period,
+        onlyWith(hasEmitter, kWithEmitter, real("emit_period", "T  emitter period", "s", 0.01, 60.0, Emitter{}.period,
              "The course's emitter: one sphere every T seconds (\"rain into the cube\"), "
              "placed only where it overlaps nothing, else at a later step. After t seconds it "
              "has emitted floor(t / T) spheres, fewer while its spot is taken or once it "
              "reaches its maximum. Acts on the scene's first emitter.",
              {emitPeriodOf, setEmitPeriod})),
-        onlyWith(hasGenerator, "acts only on a scene with generated spheres", restart(integer("count", "N  spheres", 0, kMaxGeneratedCount, 100,
+        onlyWith(hasGenerator, kWithGenerator, restart(integer("count", "N  spheres", 0, kMaxGeneratedCount, 100,
                         "Number of spheres the scene's first generator places. Applies on "
                         "restart. The panel's slider reaches 100 000: Ctrl+click it and type, or "
                         "--set, for more.",
                         {countOf, setCount}))),
-        onlyWith(hasGenerator, "acts only on a scene with generated spheres", restart(real("radius", "r  sphere radius", "m", 0.005, 0.5, Generator{}.radiusMax,
+        onlyWith(hasGenerator, kWithGenerator,
+                 restart(real("radius", "r  sphere radius", "m", 0.005, 0.5, Generator{}.radiusMax,
                      "The largest radius of the generated spheres (all generators); setting it gives every "
                      "generated sphere this one radius. Applies on restart.",
                      {radiusOf, setRadius}))),

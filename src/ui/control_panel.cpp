@@ -75,7 +75,9 @@ void parameterWidget(const scenes::Parameter& p, const scenes::Scene& scene, Pan
     // key: typing 1.5 for beta would apply 1 on the way (and a refusal of 1.5 leave it).
     const bool typing = ImGui::TempInputIsActive(ImGui::GetItemID());
     // The label is the lecture's word; --set, links and scene files take the table's name.
-    if (ImGui::IsItemHovered()) tooltip(std::string(p.tooltip) + "\n\nNamed " + std::string(p.name) + " in --set, links and scene files.");
+    if (ImGui::IsItemHovered()) {
+        tooltip(std::string(p.tooltip) + "\n\nNamed " + std::string(p.name) + " in --set, links and scene files.");
+    }
     if ((p.applies == scenes::Applies::Live || p.kind == scenes::ParameterKind::Choice) && !typing && !pending) {
         if (changed) actions.edits.push_back({&p, value});
     } else {

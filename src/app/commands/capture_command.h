@@ -20,7 +20,9 @@ struct CaptureOptions {
     std::string camera;  // "azimuth,elevation[,distance]": deg, deg, m; "": fit the box
     std::string colorBy = "contact";  // id | speed | contact
     bool withUi = false;              // draw the panel and readouts as the window does
-    std::optional<float> uiScale;     // with withUi or compare: the panel's and labels' UI scale (default 1; 2 draws as a HiDPI screen at 2x does)
+    // With withUi or side by side: the panel's and the labels' UI scale (default 1; 2 draws
+    // as a HiDPI screen at 2x does).
+    std::optional<float> uiScale;
     bool present = false;             // with withUi: the presentation layout
     std::vector<std::string> compare;  // "name=value[,name=value]": a second view side by side with these
     std::string overlay;  // "velocity,contacts,impulses,penetration,trails" (any of them, or all); "": none

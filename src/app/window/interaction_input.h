@@ -17,7 +17,9 @@ public:
     static constexpr double kMessageSeconds = 8.0;  // s a result or refusal stays on screen
     static constexpr float kClickPixels = 5.0f;     // a press that moves less is a click (select)
 
-    explicit InteractionInput(Session& session) : session_(session), suggested_(tools_.compareText) { suggestOverrides(); }
+    explicit InteractionInput(Session& session) : session_(session), suggested_(tools_.compareText) {
+        suggestOverrides();
+    }
 
     ToolWindowsState& tools() { return tools_; }
     const ToolWindowsState& tools() const { return tools_; }
