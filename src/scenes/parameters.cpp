@@ -1,5 +1,7 @@
 #include "scenes/parameters.h"
 
+#include "scenes/overrides.h"
+
 #include <charconv>
 #include <cerrno>
 #include <cmath>
@@ -517,11 +519,12 @@ std::string applySetting(Scene& scene, std::string_view assignment) {
 
 std::string settingsThatActOnNothing(const Scene& scene, const std::vector<std::string>& settings) {
     for (const std::string& setting : settings) {
-        const Parameter* p = findParameter(trim(std::string_view(setting).substr(0, setting.find('='))));
+        const Parameter* p = findParameter(settingName(setting));
         if (!p || p->availableIn(scene)) continue;
         std::string why = setting + ": " + std::string(p->name) + " " + std::string(p->availableWhen);
-        if (p->availableWhen.find("method") != std::string_view::npos) {
-            why += ", and this run's is " + formatValue(*findParameter("method"), scene);
+        const Parameter* method = findParameter("method");
+        if (method && (p->available == isContinuous || p->available == sweepsLevels)) {  // a method's: name the run's
+            why += ", and this run's is " + formatValue(*method, scene);
         }
         return why;
     }

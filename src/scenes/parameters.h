@@ -63,7 +63,7 @@ const Parameter* findParameter(std::string_view name);
 
 // Once every setting of a run is applied (so that their order does not matter): "" when
 // each acts on something in `scene`, else one line naming the first that does not
-// ("toi=bisection: toi acts only with the continuous method, and this one is velocity").
+// ("toi=bisection: toi acts only with the continuous method, and this run's is velocity").
 std::string settingsThatActOnNothing(const Scene& scene, const std::vector<std::string>& settings);
 
 // "name=value": checks the value against the table and stores it in the scene.

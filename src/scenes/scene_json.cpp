@@ -684,7 +684,8 @@ Scene loadScene(const std::string& path) {
         throw SceneError(path + ":1:1: " + (fs::is_directory(status) ? "is a folder" : "is not a regular file") +
                          ", so no scene file");
     }
-    if (fs::is_regular_file(status) && fs::file_size(path, error) > kMostSceneBytes) {
+    if (const std::uintmax_t bytes = fs::is_regular_file(status) ? fs::file_size(path, error) : 0;
+        !error && bytes > kMostSceneBytes) {
         throw SceneError(path + ":1:1: the scene file is larger than 1 GiB, far more than any scene");
     }
     std::ifstream file(path, std::ios::binary);

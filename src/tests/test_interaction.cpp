@@ -362,12 +362,19 @@ TEST(InteractionSelection, ASphereSelectedWhilePausedHasTheContactsOfTheFrameSho
     }
     EXPECT_EQ(session.latestContacts().steps, selectedFirst.latestContacts().steps);
 
-    const std::size_t i = std::size_t(lowest);  // an edit, then another sphere
+    EXPECT_TRUE(session.latestContacts().frameRecalled);
+    // An edit, then another sphere that was in static contact in the frame: the frame shown
+    // is now the edit, so nothing is recalled, and the explainer says so.
+    const int other = int(std::find(world.contactState.begin() + lowest + 1, world.contactState.end(),
+                                    physics::ContactState::Static) - world.contactState.begin());
+    ASSERT_LT(std::size_t(other), world.size());
+    const std::size_t i = std::size_t(lowest);
     const app::SphereFields fields{world.position[i], world.velocity[i] + glm::dvec3(0.01, 0.0, 0.0), world.radius[i],
                                    world.mass[i]};
     ASSERT_EQ(session.editSelected(fields), "");
-    session.select(lowest == 0 ? 1 : 0);
+    session.select(other);
     EXPECT_TRUE(session.latestContacts().events.empty());
+    EXPECT_FALSE(session.latestContacts().frameRecalled);
 }
 
 // The window gives the stepping what the last frame's drawing left of 1/30 s: a scene whose

@@ -214,10 +214,12 @@ TEST(WrappedText, KeepsNameEqualsValueWholeAndCutsAWordWiderThanTheLine) {
               "D\nsolver = generalized-\nreflections");
     EXPECT_EQ(ui::wrapAtSpaces("B method = reflection", ImGui::CalcTextSize("method = reflec").x),
               "B\nmethod =\nreflection");  // rather than clipped
+    EXPECT_EQ(ui::wrapAtSpaces("c = -0.8660 m/s", ImGui::CalcTextSize("c = -0.8").x), "c =\n-0.8660\nm/s");  // not "-" / "0.8660"
     ImGui::EndFrame();
     ImGui::DestroyContext(context);
 }
 
+#if IMGUI_VERSION_NUM < 18700  // ShortKeyPresses does nothing from 1.87 on
 // ImGui 1.86 reads the keys once a frame: a key pressed and let go between two frames (a
 // quick Enter at a few frames a second) is held down through one frame, then let go; a key
 // still held is left to its release event; a modifier is never held on (a Ctrl held after
@@ -241,19 +243,16 @@ TEST(ShortKeyPresses, AKeyPressedAndLetGoBetweenFramesIsDownForOneFrame) {
     presses.beforeNewFrame(io);  // the next frame, no events
     EXPECT_FALSE(io.KeysDown[kEnter]);
     EXPECT_TRUE(io.KeysDown[kBackspace]);
-    presses.pressed(kEnter);  // pressed and let go again in the frame it is held by us
+    presses.pressed(kEnter);  // a second quick press: held through one frame again
     io.KeysDown[kEnter] = false;
     presses.beforeNewFrame(io);
-    presses.beforeNewFrame(io);
-    EXPECT_FALSE(io.KeysDown[kEnter]);
-    presses.pressed(kEnter);
-    io.KeysDown[kEnter] = false;
-    presses.beforeNewFrame(io);
-    presses.pressed(kEnter);  // let go by us, pressed again and held meanwhile
+    EXPECT_TRUE(io.KeysDown[kEnter]);
+    presses.pressed(kEnter);  // while we hold it: pressed again, and held by the user this time
     io.KeysDown[kEnter] = true;
     presses.beforeNewFrame(io);
     EXPECT_TRUE(io.KeysDown[kEnter]);
-    presses.pressed(9999);  // out of io.KeysDown's range: ignored
-    presses.beforeNewFrame(io);
+    presses.beforeNewFrame(io);  // not let go by us a frame later: the user still holds it
+    EXPECT_TRUE(io.KeysDown[kEnter]);
     ImGui::DestroyContext(context);
 }
+#endif

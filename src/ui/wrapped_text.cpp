@@ -8,6 +8,8 @@
 namespace ui {
 namespace {
 
+bool isLetter(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); }
+
 float widthOf(std::string_view text) { return ImGui::CalcTextSize(text.data(), text.data() + text.size()).x; }
 
 // The next space at or after `from` where a line may break: not one beside '=', so that
@@ -37,7 +39,8 @@ std::size_t cutToFit(std::string_view word, float width) {
 
 // Where a line that starts at text[0] ends: after as many whole words (up to a space,
 // which the break eats) as fit `width`, at least one. A first word wider than the line
-// breaks after its last '/' or '-' that fits (a long path, "generalized-reflections"),
+// breaks after its last '/' or hyphen between letters that fits (a long path,
+// "generalized-reflections"),
 // else at its last space that fits (beside an '=' if need be), else where the line is
 // full (a hash in a narrow label: cut, not clipped).
 std::size_t lineEnd(std::string_view text, float width) {
@@ -45,6 +48,9 @@ std::size_t lineEnd(std::string_view text, float width) {
     if (widthOf(text.substr(0, end)) > width) {
         for (std::size_t mark = text.find_last_of("/-", end - 1); mark != std::string_view::npos && mark > 0;
              mark = text.find_last_of("/-", mark - 1)) {
+            if (text[mark] == '-' && !(isLetter(text[mark - 1]) && mark + 1 < text.size() && isLetter(text[mark + 1]))) {
+                continue;  // a minus sign or an exponent ("-0.87", "1.2e-05"): a number stays whole
+            }
             if (widthOf(text.substr(0, mark + 1)) <= width) return mark + 1;
         }
         // "a = b" wider than the line: broken after its '=' rather than clipped ("method =" /

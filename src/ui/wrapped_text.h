@@ -1,7 +1,8 @@
 #pragma once
-// Text wrapped to the window's width at spaces only, never beside '=' ("passes = 1" stays
-// whole); a word wider than the line breaks after a '/' or '-' (a path, a hyphenated
-// name), else where it is full.
+// Text wrapped to the window's width at spaces, not beside '=' ("passes = 1" stays whole)
+// unless "name = value" alone is wider than the line; a word wider than the line breaks
+// after a '/' or a hyphen between letters (a path, a hyphenated name), never inside a
+// number, else where it is full.
 // ImGui's own wrapping also breaks after '.' and ',', which splits a number across
 // lines ("-1." / "193").
 #include <string>

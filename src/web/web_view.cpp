@@ -144,10 +144,8 @@ void selectSphere(LiveView& v, int index) {
 Json viewsOf(const LiveView& v) {
     Json views = Json::array();
     if (!v.session->comparison()) return views;
-    const std::vector<std::vector<std::string>> presented =
-        app::comparisonReadouts(v.session->run(0), *v.session->comparison(), true);
-    for (const std::vector<std::string>& lines : app::comparisonReadouts(v.session->run(0), *v.session->comparison())) {
-        views.push_back({{"lines", lines}, {"presented", presented[views.size()]}});
+    for (const app::ViewReadout& view : app::viewReadouts(v.session->run(0), *v.session->comparison())) {
+        views.push_back({{"lines", app::viewReadoutLines(view)}, {"presented", app::presentedLines(view)}});
     }
     return views;
 }
@@ -163,9 +161,9 @@ const physics::ContactEvent* explained(LiveView& v) {
 
 // The selected sphere, as the window's inspector shows it: {"index", "p" (m), "v" (m/s),
 // "r" (m), "m" (kg), "state", "level" (the contact graph's, with shock propagation or its
-// overlay; -1 none; absent otherwise), "contacts": {"count", "index", "title", "lines":
-// [{"kind", "text"}]} (the slides' formulas with the numbers of one latest contact)}; null
-// when none is selected.
+// overlay; -1 none; absent otherwise), "contacts": {"count", "recorded", "frame_recalled"
+// (Session::Contacts'), "index", "title", "lines": [{"kind", "text"}]} (the slides' formulas
+// with the numbers of one latest contact)}; null when none is selected.
 Json selectedOf(LiveView& v) {
     const int i = v.session->selected();
     const app::Simulation& run = *v.simulation;
@@ -181,7 +179,8 @@ Json selectedOf(LiveView& v) {
     if (run.params().shock == physics::ShockPropagation::On || run.overlayFlags().graph) {
         sphere["level"] = run.contactGraph().level[std::size_t(i)];
     }
-    Json contacts = {{"count", v.session->latestContacts().events.size()}, {"recorded", world.recordContacts}};
+    Json contacts = {{"count", v.session->latestContacts().events.size()}, {"recorded", world.recordContacts},
+                     {"frame_recalled", v.session->latestContacts().frameRecalled}};
     if (const physics::ContactEvent* event = explained(v)) {
         const int planes = world.boxPlaneCount;
         std::vector<app::ExplanationLine> lines =
@@ -245,8 +244,7 @@ extern "C" {
 // canvas of width x height px: {"title", "preset" (its name in the preset list), "sliders"
 // (those its text names: the presentation layout's), "time_scale" (its range), "slide",
 // "description", "compare" (the overrides the scene opens side by side with, as the
-// desktop does; "" none), "suggested_compare" (what the field offers: that, else the other
-// method, app::suggestedOverrides)} or {"error"}.
+// desktop does; "" none)} or {"error"}.
 EMSCRIPTEN_KEEPALIVE const char* spheres_open(const char* name, const char* settings, int width, int height) {
     LiveView& v = live();
     try {
@@ -274,8 +272,7 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_open(const char* name, const char* sett
                        {"time_scale", {ui::kTimeScaleRange[0], ui::kTimeScaleRange[1]}},
                        {"slide", s.slide},
                        {"description", scenes::describedText(s)},
-                       {"compare", app::joinedOverrides(s.compare)},
-                       {"suggested_compare", app::suggestedOverrides(s)}});
+                       {"compare", app::joinedOverrides(s.compare)}});
     } catch (const std::exception& e) {
         return answer({{"error", e.what()}});
     }
@@ -551,7 +548,8 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_overlays() {
 // "distance_m"}, "kinetic_J", "potential_J", "penetration_r",
 // "behind_real_time", "views" (side by side: each view's label lines and its presented ones, viewsOf), "only_view_a"
 // (side by side: the parameters every other view sets, Comparison::setInEveryView), "selected"
-// (selectedOf), "timeline" (timelineOf), "claims" (claimsOf), "alarms" (alarmsOf), "look":
+// (selectedOf), "timeline" (timelineOf), "claims" (claimsOf), "suggested_compare" (what the
+// side-by-side field offers, app::suggestedOverrides), "alarms" (alarmsOf), "look":
 // {"color_by", "overlays"}}.
 EMSCRIPTEN_KEEPALIVE const char* spheres_state() {
     LiveView& v = live();
@@ -576,6 +574,7 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_state() {
                    {"selected", selectedOf(v)},
                    {"timeline", timelineOf(*v.session)},
                    {"claims", claimsOf(*v.simulation, v.session->comparison())},
+                   {"suggested_compare", app::suggestedOverrides(v.simulation->scene())},
                    {"alarms", alarmsOf(*v.simulation)},
                    {"look", {{"color_by", kColorings[v.look.colorBy]},
                              {"overlays", app::overlayNames(app::overlayFlags(v.look))}}}});

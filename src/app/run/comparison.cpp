@@ -100,8 +100,6 @@ std::vector<std::string> viewReadoutLines(const ViewReadout& view) {
     return lines;
 }
 
-namespace {
-
 // Presented, a label is short lines in large type: what the slides compare, the energy
 // (slide 14's simultaneous solver makes it grow) and the deepest penetration (slide 7's
 // answers, slide 14's sweep).
@@ -111,8 +109,6 @@ std::vector<std::string> presentedLines(const ViewReadout& view) {
     std::snprintf(penetration, sizeof penetration, "penetration %.2f\u00a0%%\u00a0r", 100.0 * view.diagnostics.maxPenetration);
     return {view.title, energy, penetration};
 }
-
-}  // namespace
 
 std::string suggestedOverrides(const scenes::Scene& scene) {
     if (!scene.compare.empty()) return joinedOverrides(scene.compare);
@@ -128,6 +124,14 @@ std::string joinedOverrides(const std::vector<std::string>& lists) {
 std::vector<std::vector<std::string>> comparisonReadouts(const Simulation& primary, const Comparison& comparison,
                                                          bool presented) {
     std::vector<std::vector<std::string>> views;
+    for (const ViewReadout& readout : viewReadouts(primary, comparison)) {
+        views.push_back(presented ? presentedLines(readout) : viewReadoutLines(readout));
+    }
+    return views;
+}
+
+std::vector<ViewReadout> viewReadouts(const Simulation& primary, const Comparison& comparison) {
+    std::vector<ViewReadout> views;
     for (int k = 0; k <= comparison.count(); ++k) {
         const Simulation& run = k == 0 ? primary : comparison.simulation(k - 1);
         const std::string title = std::string(1, char('A' + k)) + "   " +
@@ -138,9 +142,7 @@ std::vector<std::vector<std::string>> comparisonReadouts(const Simulation& prima
         std::vector<physics::MirrorAsymmetry> mirrors;
         for (const physics::Plane& m : run.scene().mirrors) mirrors.push_back(physics::mirrorAsymmetry(world, m));
         readout.properties = propertiesMarks(judgeProperties(run.impacts(), mirrors, run.params()));
-        std::vector<std::string> lines = viewReadoutLines(readout);
-        if (presented) lines = presentedLines(readout);
-        views.push_back(std::move(lines));
+        views.push_back(std::move(readout));
     }
     return views;
 }

@@ -75,6 +75,8 @@ struct ViewReadout {
 // The lines of a view's label: the title, then energy, momentum, penetration, hash, and
 // the five properties' marks when there are any.
 std::vector<std::string> viewReadoutLines(const ViewReadout& view);
+// The presentation layout's: the title, E~ and the penetration, short lines.
+std::vector<std::string> presentedLines(const ViewReadout& view);
 
 // Override lists as one text, as the window's bar and the page's field show them:
 // joined by commas.
@@ -91,5 +93,7 @@ std::string suggestedOverrides(const scenes::Scene& scene);
 // The window draws them with ImGui (view_labels.h), the browser's page as text.
 std::vector<std::vector<std::string>> comparisonReadouts(const Simulation& primary, const Comparison& comparison,
                                                          bool presented = false);
+// What those lines are made from, each view measured once: A first.
+std::vector<ViewReadout> viewReadouts(const Simulation& primary, const Comparison& comparison);
 
 }  // namespace app

@@ -173,6 +173,13 @@ namespace {
 constexpr std::size_t kMostSolvedTogether = 256;
 
 // The events of one step about `selected`, with the step's globally solved contacts.
+// Whether every centre and velocity is a number (a step from a state that is not may throw).
+bool allFinite(const physics::World& world) {
+    const auto finite = [](const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
+    return std::all_of(world.position.begin(), world.position.end(), finite) &&
+           std::all_of(world.velocity.begin(), world.velocity.end(), finite);
+}
+
 Session::Contacts contactsOf(const std::vector<physics::ContactEvent>& all, int selected, double time,
                              std::uint64_t steps) {
     Session::Contacts out{{}, {}, time, steps};
@@ -223,7 +230,9 @@ void Session::select(int index, int view) {
 // the run on from the instant the teacher stopped at). The frame shown is run again from
 // the timeline's state before it, contacts recorded: the same steps reach the same state
 // (checked by its hash), and their contacts are those the frame had. Nothing is recalled
-// when that state is not kept, when the frame was an edit, or when the run differs (a
+// (frameRecalled stays false) when the world shown is not the timeline's entry (an edit
+// not kept yet: a shot selects its sphere first), when the frame was an edit, when a value
+// is not finite (the step that made it may throw again), or when the run differs (a
 // setting changed since).
 void Session::recallContacts() {
     if (selected_ < 0) return;
@@ -231,19 +240,29 @@ void Session::recallContacts() {
     const RewindBuffer& timeline = rewind_[std::size_t(view)];
     const physics::World& shown = run(view).world();
     if (timeline.cursor() == 0 || timeline.cursor() >= timeline.size() || shown.size() > kMaxRecordSpheres) return;
+    const WorldState& now = timeline.at(timeline.cursor()), &before = timeline.at(timeline.cursor() - 1);
+    if (now.stepCount != shown.stepCount || now.position.size() != shown.size() ||
+        before.stepCount >= shown.stepCount || !allFinite(shown)) {
+        return;
+    }
     physics::World replay = shown;  // its planes and seed; the state before the frame:
-    restoreState(timeline.at(timeline.cursor() - 1), replay);
-    if (replay.stepCount >= shown.stepCount) return;
+    restoreState(before, replay);
     replay.recordContacts = true;
     const scenes::Scene& scene = run(view).scene();
     Contacts recalled;
-    while (replay.stepCount < shown.stepCount) {
-        physics::step(replay, scene.params);
-        scenes::emitDue(scene, replay);  // as Simulation::stepOnce
-        Contacts contacts = contactsOf(replay.contacts, selected_, replay.time, replay.stepCount);
-        if (!contacts.events.empty()) recalled = std::move(contacts);
+    try {
+        while (replay.stepCount < shown.stepCount) {
+            physics::step(replay, scene.params);
+            scenes::emitDue(scene, replay);  // as Simulation::stepOnce
+            Contacts contacts = contactsOf(replay.contacts, selected_, replay.time, replay.stepCount);
+            if (!contacts.events.empty()) recalled = std::move(contacts);
+        }
+    } catch (const std::exception&) {
+        return;  // as Simulation::guardedStep: nothing to explain from it
     }
-    if (physics::stateHash(replay) == physics::stateHash(shown)) latest_ = std::move(recalled);
+    if (physics::stateHash(replay) != physics::stateHash(shown)) return;
+    latest_ = std::move(recalled);
+    latest_.frameRecalled = true;
 }
 
 void Session::edited() {

@@ -98,6 +98,9 @@ public:
         std::vector<physics::ContactEvent> solvedTogether;
         double time = 0.0;  // s, the world's time after that step
         std::uint64_t steps = 0;
+        // The frame shown when the sphere was selected was run again (recallContacts): an
+        // empty list then means it touched nothing in that frame.
+        bool frameRecalled = false;
     };
     const Contacts& latestContacts() const { return latest_; }
     // While on (the explainer is open), advance() runs the frame's steps one call at a

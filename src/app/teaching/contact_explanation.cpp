@@ -125,8 +125,10 @@ void instantLine(std::vector<Line>& lines, const ContactExplanation& e, const ph
 }
 
 // Slide 14's global approach: the contact's impulse came from one problem over its cluster,
-// so the slides' formula below (this contact alone) is a comparison, not the answer. Its
-// numbers check complementarity: lambda >= 0, c+ + beta c >= 0, and one of them is 0.
+// so the slides' formula below (this contact alone) is a comparison, not the answer. Under
+// lcp its numbers check complementarity: lambda >= 0, c+ + beta c >= 0, and one of them is
+// 0. Generalized reflections blend an inelastic and an elastic solve (beta < 1), round after
+// round, lambda summed over the rounds: no such line holds for their sum.
 void globalSolveLines(std::vector<Line>& lines, const ContactExplanation& e, const physics::Params& p) {
     if (!e.solvedTogether) return;
     const bool lcp = p.solver == physics::Solver::Lcp;
@@ -135,17 +137,24 @@ void globalSolveLines(std::vector<Line>& lines, const ContactExplanation& e, con
             : "Slide 14, generalized reflections (Smith et al. 2012): the approaching contacts together");
     const double c = e.plane ? e.before[0].normal : -e.normalSpeed;                              // m/s, < 0 approaching
     const double cAfter = e.plane ? e.after[0].normal : e.after[0].normal - e.after[1].normal;  // m/s
-    // The target: a contact approaching faster than epsilon leaves at beta times its approach;
-    // a static one, or the answer after the last pass (positivity), at none.
-    const double beta = e.staticContact || e.pass >= p.passes ? 0.0 : p.beta;
-    add(lines, Line::Kind::Formula,
-        format("c = (v₁ − v₂)·u = %.4f m/s before, c⁺ = %.4f m/s after", clean(c), clean(cAfter)));
-    add(lines, Line::Kind::Formula,
-        format("λ = %.4g kg m/s ≥ 0,   c⁺ + β c = %.4g m/s ≥ 0 (β = %.3g here)", e.lambda, clean(cAfter + beta * c),
-               beta));
-    add(lines, Line::Kind::Result,
-        e.lambda > 0.0 ? "it pushed (λ > 0), so it leaves at exactly c⁺ = −β c: complementarity, λ (c⁺ + β c) = 0"
-                       : "it did not push (λ = 0): its spheres may leave it faster");
+    add(lines, Line::Kind::Formula, format("%s = %.4f m/s before, c⁺ = %.4f m/s after",
+                                           e.plane ? "c = v·n" : "c = (v₁ − v₂)·u", clean(c), clean(cAfter)));
+    if (!lcp) {
+        add(lines, Line::Kind::Formula, format("λ = %.4g kg m/s, summed over the rounds", e.lambda));
+        add(lines, Line::Kind::Note,
+            "each round solves the approaching contacts elastically, blended with the inelastic answer for β < 1 "
+            "(λ = (1 − β) λ_inelastic + β λ_elastic); the rounds go on until none approaches");
+    } else {
+        // The target: a contact approaching faster than epsilon leaves at beta times its
+        // approach; a static one, or the answer after the last pass (positivity), at none.
+        const double beta = e.staticContact || e.pass >= p.passes ? 0.0 : p.beta;
+        add(lines, Line::Kind::Formula,
+            format("λ = %.4g kg m/s ≥ 0,   c⁺ + β c = %.4g m/s ≥ 0 (β = %.3g here)", e.lambda,
+                   clean(cAfter + beta * c), beta));
+        add(lines, Line::Kind::Result,
+            e.lambda > 0.0 ? "it pushed (λ > 0), so it leaves at exactly c⁺ = −β c: complementarity, λ (c⁺ + β c) = 0"
+                           : "it did not push (λ = 0): its spheres may leave it faster");
+    }
     add(lines, Line::Kind::Note, "below, the slides' pairwise answer to this contact alone, for comparison");
 }
 

@@ -32,8 +32,8 @@ void buildSnapshot(Simulation& simulation, const ui::PanelState& view, render::F
 // text that the other views measure are listed too, each with its view's letter.
 ui::Readouts makeReadouts(const Simulation& simulation, const ui::FrameTimes& timing,
                           const Comparison* comparison = nullptr);
-// Only the claims' part of them: r.claims, claimsWatched, claimsForOtherSettings and
-// claimsInterrupted.
+// Only the claims' part of them: r.claims and claimsWatched (every view's), and
+// claimsForOtherSettings and claimsInterrupted (view A's: the views are edited together).
 void addMeasuredClaims(const Simulation& simulation, const Comparison* comparison, ui::Readouts& r);
 
 // Axis-aligned bounds of the box (or of the spheres when there is none), m, for the camera.

@@ -220,7 +220,9 @@ void drawExplainer(const Placement& placement, const ExplainerInput& input, Tool
     if (events.empty() && !input.recording) {
         ImGui::TextWrapped("Contacts are not recorded in this scene (too many spheres): nothing to explain.");
     } else if (events.empty()) {
-        ImGui::TextWrapped("Sphere #%d touched nothing in the frame shown, nor since. %s", input.selected,
+        ImGui::TextWrapped(input.frameRecalled ? "Sphere #%d touched nothing in the frame shown, nor since. %s"
+                                               : "No contact of sphere #%d recorded since it was selected. %s",
+                           input.selected,
                            input.paused ? "Step with O until it touches something."
                                         : "It is explained here after its next contact.");
     }
@@ -380,7 +382,8 @@ ToolActions drawInteractionWindows(const Session& session, const WindowLayout& l
         const Session::Contacts& contacts = session.latestContacts();
         drawExplainer(docked(layout.explainer, false),
                       {selected, &contacts.events, contacts.time, contacts.steps, world.time, world.boxPlaneCount,
-                       &simulation.params(), session.run(0).paused, world.recordContacts, &contacts.solvedTogether},
+                       &simulation.params(), session.run(0).paused, world.recordContacts, contacts.frameRecalled,
+                       &contacts.solvedTogether},
                       state, actions);
     }
     for (std::size_t k = 0; k < labels.size() && k < std::size_t(kMostViews); ++k) {

@@ -96,6 +96,7 @@ struct ExplainerInput {
     const physics::Params* params = nullptr;
     bool paused = false;
     bool recording = true;  // world.recordContacts: Simulation records while a sphere is selected
+    bool frameRecalled = false;  // Session::Contacts': the frame shown was run again at the selection
     const std::vector<physics::ContactEvent>* solvedTogether = nullptr;  // Session::Contacts'
 };
 

@@ -7,6 +7,7 @@
 // ImGui, and the mouse backend keeps a click that came and went: those were never lost.)
 // A press seen since the last frame is held down through the next frame, then let go;
 // not a modifier (Shift, Ctrl, Alt, Super), whose state ImGui reads at every key event.
+// From ImGui 1.87 on, which queues key events itself, it does nothing.
 #include <vector>
 
 struct ImGuiIO;

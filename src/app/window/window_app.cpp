@@ -412,6 +412,7 @@ void WindowApp::apply(const ui::PanelActions& a) {
         panel_.refusal = session_.setParameter(*edit.parameter, edit.value);
         panel_.refusedName = std::string(edit.parameter->name);
     }
+    if (!a.edits.empty()) input_.suggestOverrides();  // the method may have changed
     if (a.resetCamera) resetCamera();
     if (a.fontChanged) rebuildFont();
     if (a.screenshot) screenshotRequested_ = true;
