@@ -109,7 +109,7 @@ const char* noCorrectionNote(const ContactExplanation& e, const physics::Params&
                "before this answer)";
     }
     switch (p.method) {
-        case physics::Method::VelocityBased: return "velocity based: no projection; stage C cancels what still approaches";
+        case physics::Method::VelocityBased: return "velocity based: no projection; its last stage cancels what still approaches";
         case physics::Method::Continuous: return "continuous: answered at the instant of contact, nothing to correct";
         default: return "response only (slides 5-6): no position correction";
     }
@@ -162,14 +162,14 @@ void matchLine(std::vector<Line>& lines, const ContactExplanation& e, const phys
     if (e.solvedTogether && p.solver == physics::Solver::Lcp) {
         add(lines, Line::Kind::Note,
             format("lcp (slide 14): solved together with every touching contact; the velocities after hold the "
-                   "others' shares too (%.3g m/s from the formula for this contact alone)", e.mismatch));
+                   "others' shares too (they differ by %.3g m/s from the formula for this contact alone)", e.mismatch));
         return;
     }
     if (e.solvedTogether && p.solver == physics::Solver::GeneralizedReflections) {
         add(lines, Line::Kind::Note,
             format("generalized reflections (slide 14, Smith et al. 2012): solved together with the other approaching "
-                   "contacts, round after round; the velocities after hold their shares too (%.3g m/s from the "
-                   "formula for this contact alone)", e.mismatch));
+                   "contacts, round after round; the velocities after hold their shares too (they differ by %.3g m/s "
+                   "from the formula for this contact alone)", e.mismatch));
         return;
     }
     const bool simultaneous = p.solver == physics::Solver::Simultaneous && e.pass < p.passes;

@@ -249,13 +249,16 @@ void drawExplainer(const Placement& placement, const ExplainerInput& input, Tool
     // The log holds a whole time step h: its `substeps` solver steps end at eventSteps.
     const unsigned long long last = input.eventSteps;
     const unsigned long long first = last + 1 - std::min<unsigned long long>(last, std::max(1, input.params->substeps));
-    char when[160];
-    if (age > 0.0) {
-        std::snprintf(when, sizeof when, "in the time step to t = %.4f s (solver steps %llu-%llu), %.3g s ago",
-                      input.eventTime, first, last, age);
+    char steps[64], when[192];
+    if (first == last) {  // one substep a step
+        std::snprintf(steps, sizeof steps, "solver step %llu", last);
     } else {
-        std::snprintf(when, sizeof when, "in the last time step, to t = %.4f s (solver steps %llu-%llu)", input.eventTime,
-                      first, last);
+        std::snprintf(steps, sizeof steps, "solver steps %llu-%llu", first, last);
+    }
+    if (age > 0.0) {
+        std::snprintf(when, sizeof when, "in the time step to t = %.4f s (%s), %.3g s ago", input.eventTime, steps, age);
+    } else {
+        std::snprintf(when, sizeof when, "in the last time step, to t = %.4f s (%s)", input.eventTime, steps);
     }
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
     ui::textWrappedAtSpaces(when);
