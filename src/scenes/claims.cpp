@@ -135,6 +135,28 @@ std::string settingShown(const Claim& c, const ClaimCheck& check) {
     return text;
 }
 
+// The quantity a claim measures, named as a reader of the panel needs it beside a bare
+// number: "max bounce ratio of sphere #0", "bounce loss, samples", "speed / with mu=0.5",
+// as the inspector names a sphere.
+std::string quantityShown(const Claim& c) {
+    std::string name = c.measure;
+    std::replace(name.begin(), name.end(), '_', ' ');
+    if (c.nth > 0) name = "sample " + std::to_string(c.nth) + " of " + name;
+    else if (c.take == "count") name += ", samples";
+    else if (c.take != "each") name = c.take + " " + name;
+    if (!c.spheres.empty()) {
+        name += c.spheres.size() == 1 ? " of sphere " : " of spheres ";
+        for (std::size_t k = 0; k < c.spheres.size(); ++k) {
+            name += (k ? ", #" : "#") + std::to_string(c.spheres[k]);
+        }
+    }
+    if (c.ratioTo) {
+        name += " / with";
+        for (const std::string& s : *c.ratioTo) name += " " + s;
+    }
+    return name;
+}
+
 void judge(ClaimCheck& check, const std::vector<double>* ratioSamples) {
     const Claim& c = *check.claim;
     check.value = taken(c, check.samples);
@@ -154,7 +176,7 @@ void judge(ClaimCheck& check, const std::vector<double>* ratioSamples) {
         else out << "nothing measured";
     }
     if (!check.holds) out << ", expected " << expected(c);
-    check.measured = c.measure == "setting" ? settingShown(c, check) : out.str();
+    check.measured = c.measure == "setting" ? settingShown(c, check) : quantityShown(c) + " = " + out.str();
 }
 
 }  // namespace

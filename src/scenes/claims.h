@@ -88,7 +88,8 @@ struct ClaimCheck {
     std::vector<double> samples;  // what the meter gave, in its unit
     std::optional<double> value;  // after take / nth / ratio_to; none: nothing measured
     bool holds = false;
-    std::string measured;  // one line: the value (or the samples' range) and, if not held, why
+    std::string measured;  // one line: the quantity named, its value (or the samples' range)
+                           // and, if not held, what was expected
 };
 
 // Every parameter's value in `scene`, in the table's order (-inf for one it has not).

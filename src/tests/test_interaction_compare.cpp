@@ -383,7 +383,61 @@ TEST(SideBySide, EachViewMeasuresWhatTheTextSaysOfIt) {
         }
     }
     EXPECT_EQ(views, "ABCD");
+    EXPECT_EQ(readouts.claimsElsewhere, 0u) << "the four views are the text's four settings";
     EXPECT_EQ(app::makeReadouts(simulation, ui::FrameTimes{}).claimsWatched, simulation.claimsWatched());
+}
+
+// Slide 7's three answers side by side at a coarse step: each view's label (the projector's
+// too) shows its newest floor bounce's apex ratio beside beta^2, the lesson of 14's text: A
+// (projection) under 0.64, B (reflection) above it by then, C (back to the contact) 0.640.
+// Before, the panel refused every one of them as slower than 20 g h and no label had them.
+TEST(SideBySide, EachViewShowsItsApexRatioBesideBetaSquared) {
+    app::Simulation simulation(scenes::loadScene(scenes::presetPath("14_three_answers")));
+    app::Session session(simulation);
+    session.sceneChanged();
+    ASSERT_EQ(session.runCount(), 3);
+    const auto labels = [&] { return app::comparisonReadouts(simulation, *session.comparison(), true); };
+    for (const auto& label : labels()) {
+        ASSERT_EQ(label.size(), 4u);
+        EXPECT_EQ(label[3], "apex ratio\u00a0\u2013 (\u03b2\u00b2\u00a00.640)") << "a dash until the first bounce";
+    }
+    std::vector<std::vector<double>> shown(3);  // each view's ratios as they changed (by more than 1e-6)
+    for (int frame = 0; frame < 300 && simulation.world().time < 2.2; ++frame) {
+        session.advance(1.0 / 30.0);
+        const std::vector<app::ViewReadout> views = app::viewReadouts(simulation, *session.comparison());
+        for (std::size_t k = 0; k < 3; ++k) {
+            if (views[k].apexRatio && (shown[k].empty() || std::abs(shown[k].back() - *views[k].apexRatio) > 1e-6)) {
+                shown[k].push_back(*views[k].apexRatio);
+            }
+        }
+    }
+    const auto near = [](const std::vector<double>& values, std::vector<double> expected) {
+        if (values.size() != expected.size()) return testing::AssertionFailure() << values.size() << " bounces";
+        for (std::size_t k = 0; k < values.size(); ++k) {
+            if (std::abs(values[k] - expected[k]) > 0.005) return testing::AssertionFailure() << k << ": " << values[k];
+        }
+        return testing::AssertionSuccess();
+    };
+    EXPECT_TRUE(near(shown[0], {0.59, 0.57, 0.55}));           // the text: 0.59, then 0.57
+    EXPECT_TRUE(near(shown[1], {0.635, 0.74, 0.77}));          // 0.635, then 0.74 and 0.77
+    EXPECT_TRUE(near(shown[2], {0.640}));                      // 0.640 at every bounce
+    EXPECT_EQ(labels()[2][3], "apex ratio\u00a00.640 (\u03b2\u00b2\u00a00.640)");
+}
+
+// One view measures the claims at its settings; the list says how many more the text makes
+// (at the settings it suggests, or a ratio of two runs) and that `spheres claims` measures
+// them, so that "13 of 13" is not read as the whole text.
+TEST(SideBySide, TheListSaysHowManyClaimsItLeavesToTheCommand) {
+    const scenes::Scene scene = scenes::loadScene(scenes::presetPath("01_bounce_response_only"));
+    app::Simulation simulation(scene);
+    std::size_t atOtherSettings = 0;
+    for (const scenes::Claim& c : scene.claims) {
+        atOtherSettings += c.in == scenes::ClaimSource::Description && (!c.settings.empty() || c.ratioTo);
+    }
+    const ui::Readouts readouts = app::makeReadouts(simulation, ui::FrameTimes{});
+    EXPECT_GT(readouts.claimsWatched, 0u);
+    EXPECT_EQ(readouts.claimsElsewhere, atOtherSettings);
+    EXPECT_GE(atOtherSettings, 2u) << "method=position, substeps=4, h=0.05 in its text";
 }
 
 // The side-by-side field offers, until the user writes there, the scene's own overrides,

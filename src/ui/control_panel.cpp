@@ -449,6 +449,12 @@ void sceneText(const scenes::Scene& scene) {
     if (!scene.description.empty()) textWrappedAtSpaces(scenes::describedText(scene));
 }
 
+// What the list leaves out, and where it is measured.
+std::string claimsElsewhereLine(const Readouts& r) {
+    return std::to_string(r.claimsElsewhere) + " more of the text's claims name other settings or compare two "
+           "runs: `spheres claims` measures every one.";
+}
+
 // Under the text: its claims as this run measured them (scenes/claims.h), folded under a
 // line that counts them, so that the sliders stay where they are.
 void measuredClaims(const Readouts& r) {
@@ -479,6 +485,7 @@ void measuredClaims(const Readouts& r) {
         wrappedColored(c.holds ? ImVec4(0.45f, 0.9f, 0.45f, 1.0f) : kAlarmLit,
                        view + (c.holds ? "\u2713 " : "\u2717 ") + "\u201c" + c.says + "\u201d: " + c.measured);
     }
+    if (r.claimsElsewhere > 0) wrappedColored(ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled), claimsElsewhereLine(r));
 }
 
 // The presentation layout: only the sliders the scene's text names, and the keys.

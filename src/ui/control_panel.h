@@ -148,6 +148,7 @@ struct Readouts {
     std::size_t claimsWatched = 0;
     bool claimsInterrupted = false;
     bool claimsForOtherSettings = false;  // the text claims things at other settings than the run's
+    std::size_t claimsElsewhere = 0;  // the text's claims no view measures: other settings, or a ratio of two runs
 };
 
 struct PanelActions {

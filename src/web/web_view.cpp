@@ -213,7 +213,8 @@ Json timelineOf(const app::Session& session) {
 // same readouts): {"watched" (claims in all), "interrupted" (changed by hand: stopped until
 // a restart), "other_settings" (the text's claims are for other settings than the run's),
 // "lines": [{"holds", "says", "measured", "view" (side by side: the view's letter, "A" to
-// "D", that measured it; else "")}] (those judged so far)}.
+// "D", that measured it; else "")}] (those judged so far), "elsewhere" (the text's claims no
+// view measures: at other settings, or a ratio of two runs)}.
 Json claimsOf(const app::Simulation& run, const app::Comparison* comparison) {
     ui::Readouts readouts;
     app::addMeasuredClaims(run, comparison, readouts);
@@ -223,7 +224,8 @@ Json claimsOf(const app::Simulation& run, const app::Comparison* comparison) {
                          {"view", line.view ? std::string(1, line.view) : std::string()}});
     }
     return {{"watched", readouts.claimsWatched}, {"interrupted", readouts.claimsInterrupted},
-            {"other_settings", readouts.claimsForOtherSettings}, {"lines", lines}};
+            {"other_settings", readouts.claimsForOtherSettings}, {"lines", lines},
+            {"elsewhere", readouts.claimsElsewhere}};
 }
 
 // The invariant alarms, most serious first, as the window's panel shows them:

@@ -80,6 +80,20 @@ std::vector<std::string> Comparison::setInEveryView() const {
     return names;
 }
 
+namespace {
+
+// "apex ratio 0.590 (β² 0.640)", a dash until the first bounce; `space` joins a number to
+// its name (a no-break space where the line may wrap).
+std::string apexRatioLine(const ViewReadout& view, const char* space) {
+    char ratio[32] = "\u2013";
+    if (view.apexRatio) std::snprintf(ratio, sizeof ratio, "%.3f", *view.apexRatio);
+    char line[96];
+    std::snprintf(line, sizeof line, "apex ratio%s%s (\u03b2\u00b2%s%.3f)", space, ratio, space, view.betaSquared);
+    return line;
+}
+
+}  // namespace
+
 std::vector<std::string> viewReadoutLines(const ViewReadout& view) {
     const physics::Diagnostics& d = view.diagnostics;
     char line[160];
@@ -92,6 +106,7 @@ std::vector<std::string> viewReadoutLines(const ViewReadout& view) {
     lines.emplace_back(line);
     std::snprintf(line, sizeof line, "hash %016llx", static_cast<unsigned long long>(d.hash));
     lines.emplace_back(line);
+    if (view.bouncesMeasured) lines.push_back(apexRatioLine(view, " "));
     for (std::size_t at = 0; at < view.properties.size();) {  // one line each
         const std::size_t end = std::min(view.properties.find('\n', at), view.properties.size());
         lines.push_back(view.properties.substr(at, end - at));
@@ -107,7 +122,9 @@ std::vector<std::string> presentedLines(const ViewReadout& view) {
     char energy[64], penetration[64];  // a number and its unit joined by no-break spaces (U+00A0)
     std::snprintf(energy, sizeof energy, "E~ %.4g\u00a0J", view.diagnostics.modified);
     std::snprintf(penetration, sizeof penetration, "penetration %.2f\u00a0%%\u00a0r", 100.0 * view.diagnostics.maxPenetration);
-    return {view.title, energy, penetration};
+    std::vector<std::string> lines{view.title, energy, penetration};
+    if (view.bouncesMeasured) lines.push_back(apexRatioLine(view, "\u00a0"));
+    return lines;
 }
 
 std::string suggestedOverrides(const scenes::Scene& scene) {
@@ -137,11 +154,19 @@ std::vector<ViewReadout> viewReadouts(const Simulation& primary, const Compariso
         const std::string title = std::string(1, char('A' + k)) + "   " +
                                   (k == 0 ? comparison.primaryLabel(primary.scene()) : comparison.label(k - 1));
         const physics::World& world = run.world();
-        ViewReadout readout{title, physics::measure(world, run.params()), world.time, world.stepCount, ""};
+        ViewReadout readout;
+        readout.title = title;
+        readout.diagnostics = physics::measure(world, run.params());
+        readout.time = world.time;
+        readout.steps = world.stepCount;
         // From the first frame on (dashes until measured): the label keeps its size.
         std::vector<physics::MirrorAsymmetry> mirrors;
         for (const physics::Plane& m : run.scene().mirrors) mirrors.push_back(physics::mirrorAsymmetry(world, m));
         readout.properties = propertiesMarks(judgeProperties(run.impacts(), mirrors, run.params()));
+        readout.bouncesMeasured = world.recordContacts && floorPlane(world, run.params()) >= 0 &&
+                                  !measuredSpheres(world, run.selectedSphere()).empty();
+        if (run.restitution().latest()) readout.apexRatio = run.restitution().latest()->ratio();
+        readout.betaSquared = run.params().beta * run.params().beta;
         views.push_back(std::move(readout));
     }
     return views;

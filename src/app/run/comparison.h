@@ -4,6 +4,7 @@
 // advanced with the same real seconds, so that the views step together and differ
 // only by what the overrides say. The window and `spheres capture --compare` use it.
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -70,12 +71,17 @@ struct ViewReadout {
     double time = 0.0;  // s
     std::uint64_t steps = 0;
     std::string properties;  // slide 14's five properties, marks only ("" until a contact)
+    // Slide 4's apex ratio, where the restitution meter follows the view's spheres: the
+    // newest floor bounce's (none yet: not measured), beside beta^2.
+    bool bouncesMeasured = false;
+    std::optional<double> apexRatio;
+    double betaSquared = 0.0;
 };
 
-// The lines of a view's label: the title, then energy, momentum, penetration, hash, and
-// the five properties' marks when there are any.
+// The lines of a view's label: the title, then energy, momentum, penetration, hash, the
+// apex ratio where bounces are measured, and the five properties' marks when there are any.
 std::vector<std::string> viewReadoutLines(const ViewReadout& view);
-// The presentation layout's: the title, E~ and the penetration, short lines.
+// The presentation layout's: the title, E~, the penetration and the apex ratio, short lines.
 std::vector<std::string> presentedLines(const ViewReadout& view);
 
 // Override lists as one text, as the window's bar and the page's field show them:

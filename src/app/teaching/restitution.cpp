@@ -55,6 +55,7 @@ std::vector<std::uint32_t> measuredSpheres(const physics::World& world, int sele
 void RestitutionMeter::reset() {
     tracks_.clear();
     last_.clear();
+    latest_.reset();
     measured_ = 0;
     tooSlow_ = 0;
     floor_ = -2;
@@ -109,10 +110,11 @@ void RestitutionMeter::afterStep(const physics::World& world, const physics::Par
         const double energy = normalEnergy(world, params, i, floor);  // J/kg
         if (t.inContact && t.floorBounce && !t.otherContact && t.beforeKnown && t.energyBefore > 0.0 &&
             std::isfinite(energy)) {
+            latest_ = BounceMeasurement{i, world.time, t.energyBefore / gn, energy / gn};
             if (std::sqrt(2.0 * t.energyBefore) < minImpactSpeed) {
                 ++tooSlow_;
             } else {
-                last_.push_back({i, world.time, t.energyBefore / gn, energy / gn});
+                last_.push_back(*latest_);
                 ++measured_;
                 while (last_.size() > kMeasurementsKept) last_.pop_front();
             }

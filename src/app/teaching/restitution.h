@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <deque>
+#include <optional>
 #include <vector>
 
 #include "physics/params.h"
@@ -52,6 +53,9 @@ public:
     void afterStep(const physics::World& world, const physics::Params& params, int selected);
 
     const std::deque<BounceMeasurement>& last() const { return last_; }  // oldest first
+    // The newest clean floor bounce, slow ones too: the apex ratio a view's label shows,
+    // where comparing the methods at one coarse h is the lesson (slide 7's three answers).
+    const std::optional<BounceMeasurement>& latest() const { return latest_; }
     std::uint64_t measuredCount() const { return measured_; }
     // Clean floor bounces left unmeasured because they were slower than
     // kMinImpactSpeedInGH g h (a large h makes every bounce so).
@@ -69,6 +73,7 @@ private:
     };
     std::vector<Track> tracks_;  // by sphere index
     std::deque<BounceMeasurement> last_;
+    std::optional<BounceMeasurement> latest_;
     std::uint64_t measured_ = 0;
     std::uint64_t tooSlow_ = 0;
     int floor_ = -2;  // the floor plane of the last step; -2: not known yet

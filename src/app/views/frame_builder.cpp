@@ -72,14 +72,17 @@ std::string restitutionNote(const Simulation& simulation) {
         return "(not measured over " + std::to_string(kMaxMeasuredSpheres) + " spheres)";
     }
     if (!world.recordContacts) return "(not measured above " + std::to_string(kMaxRecordSpheres) + " spheres)";
-    if (simulation.restitution().tooSlowCount() > 0) {
-        // A large h: one step's travel is a fair part of the height, the ratio would measure h.
-        const double gn = glm::length(simulation.params().gravity);
-        char text[160];
-        std::snprintf(text, sizeof text, "(%llu floor bounce%s slower than %.0f g h = %.3g m/s: not measured)",
-                      static_cast<unsigned long long>(simulation.restitution().tooSlowCount()),
-                      simulation.restitution().tooSlowCount() == 1 ? "" : "s", kMinImpactSpeedInGH,
-                      kMinImpactSpeedInGH * gn * simulation.params().solverStep());
+    const std::optional<BounceMeasurement>& latest = simulation.restitution().latest();
+    if (simulation.restitution().tooSlowCount() > 0 && latest) {
+        // A large h: one step's travel is a fair part of the height, the ratio measures h
+        // as much as beta. Said with its value: comparing methods at one h is a lesson too.
+        const physics::Params& params = simulation.params();
+        char text[200];
+        std::snprintf(text, sizeof text,
+                      "(last bounce %.3f, but slower than %.0f g h%s = %.3g m/s: at this step it measures h as "
+                      "much as β)",
+                      latest->ratio(), kMinImpactSpeedInGH, params.substeps > 1 ? " / substeps" : "",
+                      kMinImpactSpeedInGH * glm::length(params.gravity) * params.solverStep());
         return text;
     }
     return "(no floor bounce yet)";
@@ -97,6 +100,9 @@ void addMeasuredClaims(const Simulation& simulation, const Comparison* compariso
         }
         r.claimsWatched += run.claimsWatched();
     }
+    const auto inText = std::count_if(simulation.scene().claims.begin(), simulation.scene().claims.end(),
+                                      [](const scenes::Claim& c) { return c.in == scenes::ClaimSource::Description; });
+    r.claimsElsewhere = std::size_t(inText) > r.claimsWatched ? std::size_t(inText) - r.claimsWatched : 0;
     r.claimsForOtherSettings = simulation.claimsForOtherSettings();
     r.claimsInterrupted = simulation.claimsInterrupted();
 }
