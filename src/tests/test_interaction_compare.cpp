@@ -396,7 +396,7 @@ TEST(SideBySide, EachViewShowsItsApexRatioBesideBetaSquared) {
     app::Session session(simulation);
     session.sceneChanged();
     ASSERT_EQ(session.runCount(), 3);
-    const auto labels = [&] { return app::comparisonReadouts(simulation, *session.comparison(), true); };
+    const auto labels = [&] { return app::comparisonReadouts(simulation, *session.comparison(), app::LabelLines::Presented); };
     for (const auto& label : labels()) {
         ASSERT_EQ(label.size(), 4u);
         EXPECT_EQ(label[3], "apex ratio\u00a0\u2013 (\u03b2\u00b2\u00a00.640)") << "a dash until the first bounce";
@@ -422,6 +422,26 @@ TEST(SideBySide, EachViewShowsItsApexRatioBesideBetaSquared) {
     EXPECT_TRUE(near(shown[1], {0.635, 0.74, 0.77}));          // 0.635, then 0.74 and 0.77
     EXPECT_TRUE(near(shown[2], {0.640}));                      // 0.640 at every bounce
     EXPECT_EQ(labels()[2][3], "apex ratio\u00a00.640 (\u03b2\u00b2\u00a00.640)");
+}
+
+// Beside the dock of a selected sphere, four full labels (seven lines each) left the views
+// thumbnails of 100 pixels at 1280 x 720: the window shows compact ones there, which keep
+// what the slides compare (the title, E~, the penetration, the five properties) in four lines.
+TEST(SideBySide, CompactLabelsKeepWhatTheSlidesCompare) {
+    app::Simulation simulation(scenes::loadScene(scenes::presetPath("16_bernoulli")));
+    app::Session session(simulation);
+    session.sceneChanged();
+    ASSERT_EQ(session.runCount(), 4);
+    for (int frame = 0; frame < 60; ++frame) session.advance(1.0 / 60.0);
+    const auto full = app::comparisonReadouts(simulation, *session.comparison(), app::LabelLines::Full);
+    const auto compact = app::comparisonReadouts(simulation, *session.comparison(), app::LabelLines::Compact);
+    ASSERT_EQ(compact.size(), 4u);
+    EXPECT_EQ(full[1].size(), 7u);
+    EXPECT_EQ(compact[1].size(), 4u);
+    EXPECT_EQ(compact[1][0], full[1][0]);                                                 // B   solver = simultaneous
+    EXPECT_EQ(compact[1][1], "E~\u00a00.875\u00a0J   penetration\u00a00.00\u00a0%\u00a0r");  // grown 1.75 times
+    EXPECT_EQ(compact[1][2], full[1][5]);                                                 // ✓ momentum  ✗ energy ...
+    EXPECT_EQ(compact[1][3], full[1][6]);
 }
 
 // One view measures the claims at its settings; the list says how many more the text makes

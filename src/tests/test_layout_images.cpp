@@ -15,6 +15,7 @@
 #include "scenes/presets.h"
 #include "scenes/scene.h"
 #include "test_capture_support.h"
+#include "ui/control_panel.h"
 
 namespace {
 
@@ -112,7 +113,44 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"column_views_1280x720", "21_shock_column", "1280x720"},
                       Case{"bernoulli_views_1024x768", "16_bernoulli", "1024x768"},
                       Case{"present_column_1024x768", "09_column", "1024x768", 1.0f, true},
-                      Case{"present_bernoulli_hidpi_2x", "16_bernoulli", "2560x1440", 2.0f, true}),
+                      Case{"present_bernoulli_hidpi_2x", "16_bernoulli", "2560x1440", 2.0f, true},
+                      Case{"present_three_answers_1920x1080", "14_three_answers", "1920x1080", 1.0f, true}),
     [](const ::testing::TestParamInfo<Case>& tested) { return tested.param.name; });
+
+// The panel's width in a presentation capture (the widest box drawn from the left edge), as a
+// share of the image's.
+float presentedPanelShare(const std::string& size, float uiScale) {
+    const std::string out = capture_test::freshFolder("present_share_" + size);
+    app::CaptureOptions options;
+    options.scene = "14_three_answers";
+    options.out = out;
+    options.size = size;
+    options.at = "0";
+    options.withUi = true;
+    options.uiScale = uiScale;
+    options.present = true;
+    if (app::runCapture(options) != 0) return -1.0f;
+    const nlohmann::json manifest = capture_test::readManifest(out);
+    float widest = 0.0f;
+    for (const auto& box : manifest.at("layout").at("ui_drawn")) {
+        if (float(box[0]) < 1.0f) widest = std::max(widest, float(box[2]));
+    }
+    return widest / float(manifest.at("size")[0]);
+}
+
+// On a projector of 1080 lines the presentation's type carries the share of the screen it
+// has at 720 (before, it stayed 1.5 times the UI scale: a third smaller at the back of the
+// room); a HiDPI screen of 1440 pixels at scale 2 is 720 of its units.
+TEST_F(LayoutImages, ThePresentationsTypeGrowsWithTheScreensHeight) {
+    const float at720 = presentedPanelShare("1280x720", 1.0f);
+    const float at1080 = presentedPanelShare("1920x1080", 1.0f);
+    const float hidpi = presentedPanelShare("2560x1440", 2.0f);
+    ASSERT_GT(at720, 0.3f);
+    EXPECT_NEAR(at1080, at720, 0.01f);
+    EXPECT_NEAR(hidpi, at720, 0.01f);
+    EXPECT_FLOAT_EQ(ui::presentedScale(1.0f, 1080.0f), 2.25f);
+    EXPECT_FLOAT_EQ(ui::presentedScale(2.0f, 720.0f), 3.0f);
+    EXPECT_FLOAT_EQ(ui::presentedScale(1.0f, 600.0f), ui::kPresentScale) << "never below the 720 lines' type";
+}
 
 }  // namespace

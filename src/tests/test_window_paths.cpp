@@ -5,6 +5,7 @@
 // nothing ends the window), no value that is not finite enters the state, every
 // refusal is a message and leaves the value as it was.
 #include <gtest/gtest.h>
+#include <imgui.h>
 
 #include <cmath>
 #include <string>
@@ -255,6 +256,57 @@ TEST(WindowPaths, EscClosesTheExplainerThenTheSelectionThenNothing) {
     EXPECT_FALSE(input.backOut());
     EXPECT_FALSE(input.backOut());
     EXPECT_EQ(session.selected(), -1);
+}
+
+namespace {
+
+// One click of the left button at `at` (window units): pressed in a frame, released in the next.
+void clickAt(app::InteractionInput& input, const app::ViewLayout& views, const render::Camera& camera, ImVec2 at) {
+    ImGuiIO& io = ImGui::GetIO();
+    for (const bool down : {true, false}) {
+        io.DeltaTime = 1.0f / 60.0f;
+        io.MousePos = at;
+        io.MouseDown[ImGuiMouseButton_Left] = down;
+        ImGui::NewFrame();
+        input.handleMouse(views, camera, 0.0);
+        ImGui::EndFrame();
+    }
+}
+
+}  // namespace
+
+// A teacher explaining a contact clicks at a moving sphere and misses it: the explanation
+// stays, with a line that says so (before, the click deselected and the contact was lost).
+// With the explanation closed, a click on nothing deselects as before.
+TEST(WindowPaths, AClickThatMissesASphereKeepsTheExplanation) {
+    ImGuiContext* context = ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr;
+    io.DisplaySize = ImVec2(800.0f, 600.0f);
+    unsigned char* pixels = nullptr;
+    int width = 0, height = 0;
+    io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);
+    app::Simulation simulation(scenes::loadScene(scenes::presetPath("09_column")));
+    app::Session session(simulation);
+    app::InteractionInput input(session);
+    app::ViewLayout views;
+    views.framebuffer = {800, 600};
+    views.views[0] = {0, 0, 800, 600};
+    render::Camera camera;
+    camera.reset(glm::vec3(-1.0f, -1.0f, 0.0f), glm::vec3(1.0f, 1.0f, 2.0f), views.aspect());
+    const ImVec2 sky(5.0f, 5.0f);  // the top left corner: above the box
+    ASSERT_LT(app::pickSphere(simulation.world(), views.ray(camera, 0, glm::vec2(sky.x, sky.y))), 0);
+    session.select(3);
+    input.toggleExplainer();
+    clickAt(input, views, camera, sky);
+    EXPECT_EQ(session.selected(), 3);
+    EXPECT_TRUE(input.tools().explainer);
+    EXPECT_NE(input.tools().message.find("no sphere there: the explanation of #3 stays"), std::string::npos)
+        << input.tools().message;
+    input.toggleExplainer();
+    clickAt(input, views, camera, sky);
+    EXPECT_EQ(session.selected(), -1);
+    ImGui::DestroyContext(context);
 }
 
 }  // namespace

@@ -488,15 +488,51 @@ void measuredClaims(const Readouts& r) {
     if (r.claimsElsewhere > 0) wrappedColored(ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled), claimsElsewhereLine(r));
 }
 
-// The presentation layout: only the sliders the scene's text names, and the keys.
-void presentedSliders(const scenes::Scene& scene, PanelState& state, PanelActions& actions) {
+// A new scene: its title and text are what the class reads first.
+void scrollToTopIfAsked(PanelState& state) {
+    if (!state.scrollToTop) return;
+    ImGui::SetScrollY(0.0f);
+    state.scrollToTop = false;
+}
+
+// Room for the widest label beside each control ("ε static-contact speed (m/s)"), also in the
+// presentation layout's large type on a 1024 px screen.
+void pushItemWidth() {
+    ImGui::PushItemWidth(std::min(ImGui::GetFontSize() * 9.5f, 0.4f * ImGui::GetContentRegionAvail().x));
+}
+
+// The presentation layout: the scene's text and its claims scroll; only the sliders the text
+// names and the keys stay in sight under them (a long text pushed them off at 720 lines).
+void presentedPanel(const scenes::Scene& scene, const Readouts& readouts, PanelState& state,
+                    PanelActions& actions) {
+    std::vector<const scenes::Parameter*> sliders;
     for (const std::string& name : scenes::slidersToMove(scene)) {
         const scenes::Parameter* p = scenes::findParameter(name);
-        if (p && p->availableIn(scene)) parameterWidget(*p, scene, state, actions);
+        if (p && p->availableIn(scene)) sliders.push_back(p);
     }
-    ImGui::Spacing();
-    wrappedColored(ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled),
-                   "Esc: all controls  P: pause  R: restart  [ ]: preset");
+    const char* keys = "Esc: all controls  P: pause  R: restart  [ ]: preset";
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float wrap = ImGui::GetContentRegionAvail().x;
+    float below = 2.0f * style.ItemSpacing.y + ImGui::CalcTextSize(keys, nullptr, false, wrap).y + style.ItemSpacing.y;
+    for (const scenes::Parameter* p : sliders) {  // each slider, and the lines parameterWidget adds under it
+        below += ImGui::GetFrameHeightWithSpacing();
+        if (state.refusedName == p->name && !state.refusal.empty()) {
+            below += ImGui::CalcTextSize(state.refusal.c_str(), nullptr, false, wrap).y + style.ItemSpacing.y;
+        }
+        if (std::find(state.onlyViewA.begin(), state.onlyViewA.end(), p->name) != state.onlyViewA.end()) {
+            below += ImGui::GetTextLineHeightWithSpacing();
+        }
+    }
+    ImGui::BeginChild("presented", ImVec2(0.0f, -below));
+    scrollToTopIfAsked(state);
+    sceneText(scene);
+    measuredClaims(readouts);
+    ImGui::EndChild();
+    ImGui::Separator();
+    pushItemWidth();
+    for (const scenes::Parameter* p : sliders) parameterWidget(*p, scene, state, actions);
+    ImGui::PopItemWidth();
+    wrappedColored(ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled), keys);
 }
 
 }  // namespace
@@ -521,22 +557,16 @@ PanelActions drawControlPanel(const scenes::Scene& scene, double& timeScale, con
     ImGui::Begin(panelTitle(unseenAlarms).c_str(), nullptr,
                  ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
     state.pointerOverPanel = ImGui::IsWindowHovered(ImGuiHoveredFlags_ChildWindows | ImGuiHoveredFlags_AllowWhenBlockedByActiveItem);
-    if (state.scrollToTop) {  // a new scene: its title and text are what the class reads first
-        ImGui::SetScrollY(0.0f);
-        state.scrollToTop = false;
-    }
-    // Room for the widest label beside each control ("ε static-contact speed (m/s)"), also in the
-    // presentation layout's large type on a 1024 px screen.
-    ImGui::PushItemWidth(std::min(ImGui::GetFontSize() * 9.5f, 0.4f * ImGui::GetContentRegionAvail().x));
-    sceneText(scene);
-    measuredClaims(readouts);
-    ImGui::Separator();
     if (state.present) {
-        presentedSliders(scene, state, actions);
-        ImGui::PopItemWidth();
+        presentedPanel(scene, readouts, state, actions);
         ImGui::End();
         return actions;
     }
+    scrollToTopIfAsked(state);
+    pushItemWidth();
+    sceneText(scene);
+    measuredClaims(readouts);
+    ImGui::Separator();
     runSection(timeScale, readouts, actions);
     alarmsSection(alarms);
     if (ImGui::CollapsingHeader("Lecture parameters", ImGuiTreeNodeFlags_DefaultOpen)) {

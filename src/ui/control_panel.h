@@ -3,6 +3,7 @@
 // so the UI, the CLI and the JSON agree), the run controls, the scene and the
 // readouts. It edits the scene's live parameters in place and returns the actions
 // that the app must carry out (restart, step, load a preset, ...).
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -18,8 +19,14 @@
 
 namespace ui {
 
-// The presentation layout's type: this times the screen's UI scale.
+// The presentation layout's type: this times the screen's UI scale in a window 720 high (in
+// the screen's units: pixels over its content scale), and as much larger as the window is
+// taller, so that a projector's 1080 lines carry the same share of the height as 720 do.
 constexpr float kPresentScale = 1.5f;
+constexpr float kPresentHeight = 720.0f;
+inline float presentedScale(float screenScale, float heightInScreenUnits) {
+    return kPresentScale * screenScale * std::max(1.0f, heightInScreenUnits / kPresentHeight);
+}
 // The time scale's range (simulated seconds per real second): slow motion to 4x.
 constexpr double kTimeScaleRange[2] = {0.01, 4.0};
 // The UI scale's slider (the panel's font multiplier), which capture's --ui-scale and the

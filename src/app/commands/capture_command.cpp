@@ -192,10 +192,12 @@ OverlayFlags parseOverlays(const std::string& text) {
 }
 
 // The panel's view options for a capture: the window's defaults, the colouring and the overlays.
-ui::PanelState captureView(render::ColorBy colorBy, const OverlayFlags& overlays, float uiScale, bool present) {
+ui::PanelState captureView(render::ColorBy colorBy, const OverlayFlags& overlays, float uiScale, bool present,
+                           int height) {
     ui::PanelState view = viewShowing(overlays);
     view.colorBy = static_cast<int>(colorBy);
-    view.uiScale = present ? ui::kPresentScale * uiScale : uiScale;  // as F5 in the window
+    // As F5 in the window, --ui-scale as the screen's content scale.
+    view.uiScale = present ? ui::presentedScale(uiScale, float(height) / uiScale) : uiScale;
     view.present = present;
     return view;
 }
@@ -492,7 +494,8 @@ Capturer::Capturer(const CaptureOptions& options, const CapturePlan& plan,
     LayoutRequest request;
     request.window = plan.size;
     request.gap = kViewGap;
-    const ui::PanelState view = captureView(plan.colorBy, plan.overlays, options.uiScale.value_or(1.0f), options.present);
+    const ui::PanelState view = captureView(plan.colorBy, plan.overlays, options.uiScale.value_or(1.0f), options.present,
+                                              plan.size.y);
     if (options.withUi) {
         ui_ = std::make_unique<UiOverlay>(plan.size, view, scenePath_);
         ui_->measure(request);
@@ -536,7 +539,8 @@ render::Image Capturer::drawFrame() {
     target_.bind();
     glClearColor(ui::kBackdropColor[0], ui::kBackdropColor[1], ui::kBackdropColor[2], 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    const ui::PanelState view = captureView(plan_.colorBy, plan_.overlays, options_.uiScale.value_or(1.0f), options_.present);
+    const ui::PanelState view = captureView(plan_.colorBy, plan_.overlays, options_.uiScale.value_or(1.0f),
+                                              options_.present, plan_.size.y);
     renderer_.style.overlayOnTop = overlaysOnTop(view, simulation_.world().size());
     buildSnapshot(simulation_, view, snapshot_);
     renderer_.draw(snapshot_, camera_, view_.x, view_.y, view_.z, view_.w);

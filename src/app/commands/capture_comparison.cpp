@@ -24,7 +24,7 @@ CaptureComparison::CaptureComparison(const Simulation& primary, const std::vecto
 }
 
 void CaptureComparison::sizeLabels(const Simulation& primary, LayoutRequest& request) {
-    sized_ = comparisonLabels(primary, comparison_, presented_);
+    sized_ = comparisonLabels(primary, comparison_, presented_ ? LabelLines::Presented : LabelLines::Full);
     request.labelWidth = labels_.width(sized_);
     request.labelHeight = [this](float width) { return labels_.height(sized_, width); };
 }
@@ -43,7 +43,7 @@ void CaptureComparison::draw(render::Renderer& renderer, const render::Camera& c
         buildSnapshot(comparison_.simulation(k), view, snapshot_);
         renderer.draw(snapshot_, camera, v.x, v.y, v.z, v.w);
     }
-    std::vector<ViewLabel> labels = comparisonLabels(primary, comparison_, presented_);
+    std::vector<ViewLabel> labels = comparisonLabels(primary, comparison_, presented_ ? LabelLines::Presented : LabelLines::Full);
     for (std::size_t k = 0; k < labels.size() && k < std::size_t(kMostViews); ++k) {
         labels[k].topLeft = layout_.labels[k].min;
         labels[k].room = layout_.labels[k].size;

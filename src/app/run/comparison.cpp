@@ -94,6 +94,19 @@ std::string apexRatioLine(const ViewReadout& view, const char* space) {
 
 }  // namespace
 
+namespace {
+
+// The properties' marks, a line each as judged ("✓ momentum  ✓ energy  ✗ symmetry").
+void appendProperties(const ViewReadout& view, std::vector<std::string>& lines) {
+    for (std::size_t at = 0; at < view.properties.size();) {
+        const std::size_t end = std::min(view.properties.find('\n', at), view.properties.size());
+        lines.push_back(view.properties.substr(at, end - at));
+        at = end + 1;
+    }
+}
+
+}  // namespace
+
 std::vector<std::string> viewReadoutLines(const ViewReadout& view) {
     const physics::Diagnostics& d = view.diagnostics;
     char line[160];
@@ -107,11 +120,17 @@ std::vector<std::string> viewReadoutLines(const ViewReadout& view) {
     std::snprintf(line, sizeof line, "hash %016llx", static_cast<unsigned long long>(d.hash));
     lines.emplace_back(line);
     if (view.bouncesMeasured) lines.push_back(apexRatioLine(view, " "));
-    for (std::size_t at = 0; at < view.properties.size();) {  // one line each
-        const std::size_t end = std::min(view.properties.find('\n', at), view.properties.size());
-        lines.push_back(view.properties.substr(at, end - at));
-        at = end + 1;
-    }
+    appendProperties(view, lines);
+    return lines;
+}
+
+std::vector<std::string> compactLines(const ViewReadout& view) {
+    char line[160];
+    std::snprintf(line, sizeof line, "E~\u00a0%.6g\u00a0J   penetration\u00a0%.2f\u00a0%%\u00a0r", view.diagnostics.modified,
+                  100.0 * view.diagnostics.maxPenetration);
+    std::vector<std::string> lines{view.title, line};
+    if (view.bouncesMeasured) lines.push_back(apexRatioLine(view, " "));
+    appendProperties(view, lines);
     return lines;
 }
 
@@ -139,10 +158,12 @@ std::string joinedOverrides(const std::vector<std::string>& lists) {
 }
 
 std::vector<std::vector<std::string>> comparisonReadouts(const Simulation& primary, const Comparison& comparison,
-                                                         bool presented) {
+                                                         LabelLines lines) {
     std::vector<std::vector<std::string>> views;
     for (const ViewReadout& readout : viewReadouts(primary, comparison)) {
-        views.push_back(presented ? presentedLines(readout) : viewReadoutLines(readout));
+        views.push_back(lines == LabelLines::Presented ? presentedLines(readout)
+                        : lines == LabelLines::Compact ? compactLines(readout)
+                                                       : viewReadoutLines(readout));
     }
     return views;
 }

@@ -83,6 +83,12 @@ struct ViewReadout {
 std::vector<std::string> viewReadoutLines(const ViewReadout& view);
 // The presentation layout's: the title, E~, the penetration and the apex ratio, short lines.
 std::vector<std::string> presentedLines(const ViewReadout& view);
+// Beside the dock (a sphere inspected or explained), where four full labels left thumbnails:
+// the title, E~ with the penetration, the apex ratio and the properties' marks.
+std::vector<std::string> compactLines(const ViewReadout& view);
+
+// Which of those a view's label shows.
+enum class LabelLines { Full, Compact, Presented };
 
 // Override lists as one text, as the window's bar and the page's field show them:
 // joined by commas.
@@ -94,11 +100,10 @@ std::string joinedOverrides(const std::vector<std::string>& lists);
 std::string suggestedOverrides(const scenes::Scene& scene);
 
 // Each view's label lines, A first: "A   method = position", then its readouts
-// (viewReadoutLines). `presented`: the title, E~ and the penetration, short lines (the
-// presentation layout: large type on a projector).
+// (viewReadoutLines, compactLines or presentedLines).
 // The window draws them with ImGui (view_labels.h), the browser's page as text.
 std::vector<std::vector<std::string>> comparisonReadouts(const Simulation& primary, const Comparison& comparison,
-                                                         bool presented = false);
+                                                         LabelLines lines = LabelLines::Full);
 // What those lines are made from, each view measured once: A first.
 std::vector<ViewReadout> viewReadouts(const Simulation& primary, const Comparison& comparison);
 

@@ -155,7 +155,7 @@ std::string propertiesMarks(const std::vector<PropertyVerdict>& verdicts) {
     std::string line;
     for (std::size_t k = 0; k < verdicts.size(); ++k) {
         if (k > 0) line += k == 3 ? "\n" : "  ";  // two lines: a label stays narrow
-        line += std::string(markOf(verdicts[k].verdict)) + " " + verdicts[k].name;
+        line += std::string(markOf(verdicts[k].verdict)) + "\u00a0" + verdicts[k].name;  // wraps between marks
     }
     return line;
 }

@@ -9,9 +9,9 @@
 
 namespace app {
 
-std::vector<ViewLabel> comparisonLabels(const Simulation& primary, const Comparison& comparison, bool presented) {
+std::vector<ViewLabel> comparisonLabels(const Simulation& primary, const Comparison& comparison, LabelLines lines) {
     std::vector<ViewLabel> labels;
-    std::vector<std::vector<std::string>> readouts = comparisonReadouts(primary, comparison, presented);
+    std::vector<std::vector<std::string>> readouts = comparisonReadouts(primary, comparison, lines);
     for (std::size_t k = 0; k < readouts.size(); ++k) {
         labels.push_back({glm::vec2(0.0f), glm::vec2(1e6f), std::move(readouts[k]), kViewColors[k]});
     }

@@ -19,10 +19,9 @@ constexpr glm::u8vec4 kViewColors[kMostViews] = {
     {120, 200, 255, 255}, {255, 190, 90, 255}, {150, 235, 140, 255}, {235, 150, 235, 255}};
 
 // Labels "A  method = position", "B  method = velocity", ... with each run's readouts;
-// their places are the layout's (ViewLabel::topLeft left at 0). `presented`: the title,
-// E~ and the penetration (the presentation layout).
+// their places are the layout's (ViewLabel::topLeft left at 0); `lines` as comparisonReadouts.
 std::vector<ViewLabel> comparisonLabels(const Simulation& primary, const Comparison& comparison,
-                                        bool presented = false);
+                                        LabelLines lines = LabelLines::Full);
 
 // Draws labels with an ImGui context of its own (capture mode).
 class HeadlessViewLabels {

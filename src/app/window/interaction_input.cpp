@@ -55,7 +55,14 @@ bool InteractionInput::handleMouse(const ViewLayout& views, const render::Camera
     if (ImGui::IsMouseReleased(ImGuiMouseButton_Left) && pressInScene_ &&
         io.MouseDragMaxDistanceSqr[ImGuiMouseButton_Left] < kClickPixels * kClickPixels) {
         if (const int view = views.viewAt(mouse); view >= 0) {
-            session_.select(pickSphere(session_.run(view).world(), views.ray(camera, view, mouse)), view);
+            const int hit = pickSphere(session_.run(view).world(), views.ray(camera, view, mouse));
+            if (hit < 0 && tools_.explainer && session_.selected() >= 0) {
+                // A click that misses a moving sphere must not lose the contact being explained.
+                say(now, "no sphere there: the explanation of #%d stays (Deselect or Esc closes it)",
+                    session_.selected());
+            } else {
+                session_.select(hit, view);
+            }
         }
     }
     return false;

@@ -73,6 +73,8 @@ private:
     template <class Write>
     std::string writeOutput(ui::PanelState::FileButton at, const char* stem, const char* extension, const Write& write);
     void rebuildFont();
+    float presentedScale() const;
+    void followPresentedScale();
     void togglePresentation();
     void resetCamera();
     void fitCamera();
@@ -168,11 +170,27 @@ void WindowApp::togglePresentation() {
     panel_.present = !panel_.present;
     if (panel_.present) {
         scaleBeforePresenting_ = panel_.uiScale;
-        panel_.uiScale = std::max(panel_.uiScale, ui::kPresentScale * screenScale_);
+        panel_.uiScale = presentedScale();
     } else {
         panel_.uiScale = scaleBeforePresenting_;
     }
     panel_.scrollToTop = true;
+    rebuildFont();
+}
+
+// Presenting: the large type for the window's height (ui::presentedScale), never smaller
+// than the scale chosen before.
+float WindowApp::presentedScale() const {
+    const float height = float(window_->windowSize().y) * window_->framebufferScale().y / screenScale_;
+    return std::max(scaleBeforePresenting_, ui::presentedScale(screenScale_, height));
+}
+
+// Presenting, the type follows the window's height as it is resized or made full screen.
+void WindowApp::followPresentedScale() {
+    if (!panel_.present) return;
+    const float wanted = presentedScale();
+    if (std::abs(wanted - panel_.uiScale) < 0.01f * wanted) return;
+    panel_.uiScale = wanted;
     rebuildFont();
 }
 
@@ -431,11 +449,16 @@ void WindowApp::apply(const ui::PanelActions& a) {
     }
 }
 
-// The views side by side: their labels with this step's numbers (none for one view).
+// The views side by side: their labels with this step's numbers (none for one view);
+// short ones beside the dock of a selected sphere when three or four views share the rest.
 void WindowApp::makeLabels() {
     labels_.clear();
     if (const Comparison* comparison = session_.comparison()) {
-        labels_ = comparisonLabels(simulation_, *comparison, panel_.present);
+        const bool crowded = session_.runCount() >= 3 && session_.selected() >= 0;
+        labels_ = comparisonLabels(simulation_, *comparison,
+                                   panel_.present ? LabelLines::Presented
+                                   : crowded      ? LabelLines::Compact
+                                                  : LabelLines::Full);
     }
 }
 
@@ -474,6 +497,7 @@ void WindowApp::drawScene(const ViewLayout& views) {
 
 void WindowApp::frame(double dt) {
     window_->pollEvents();
+    followPresentedScale();  // before the frame: it rebuilds the font
     shortPresses_.beforeNewFrame(ImGui::GetIO());
     imguiRenderer_.newFrame();
     ImGui_ImplGlfw_NewFrame();
