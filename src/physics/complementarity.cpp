@@ -155,11 +155,13 @@ namespace {
 void logContact(World& world, const LcpContact& c, const std::vector<glm::dvec3>& before, int pass) {
     const std::size_t j = c.j >= 0 ? std::size_t(c.j) : 0;
     const glm::dvec3 none(0.0);
-    world.contacts.push_back({c.i, c.other, pass, !c.isStatic, c.u, world.position[c.i] - world.radius[c.i] * c.u,
-                              c.depth, {before[c.i], c.j >= 0 ? before[j] : none},
-                              {world.velocity[c.i], c.j >= 0 ? world.velocity[j] : none},
-                              {world.mass[c.i], c.j >= 0 ? world.mass[j] : 0.0}, -1.0, c.lambda,
-                              world.stepCount});
+    ContactEvent event{c.i, c.other, pass, !c.isStatic, c.u, world.position[c.i] - world.radius[c.i] * c.u,
+                       c.depth, {before[c.i], c.j >= 0 ? before[j] : none},
+                       {world.velocity[c.i], c.j >= 0 ? world.velocity[j] : none},
+                       {world.mass[c.i], c.j >= 0 ? world.mass[j] : 0.0}};
+    event.solvedImpulse = c.lambda;  // kg m/s, the global solve's
+    event.solverStep = world.stepCount;
+    world.contacts.push_back(event);
 }
 
 }  // namespace

@@ -420,12 +420,14 @@ Response respondToContact(World& world, const SpherePair& pair, const SphereCont
     count(stats, response);
     stats.sphereContacts += pass == 0;
     if (world.recordContacts && response != Response::None) {
-        world.contacts.push_back({pair.i, static_cast<std::int32_t>(pair.j), pass,
-                                  response == Response::Bounce, contact.u,
-                                  world.position[pair.i] - world.radius[pair.i] * contact.u,
-                                  contact.depth, {before[0], before[1]},
-                                  {world.velocity[pair.i], world.velocity[pair.j]},
-                                  {world.mass[pair.i], world.mass[pair.j]}, -1.0, -1.0, world.stepCount});
+        ContactEvent event{pair.i, static_cast<std::int32_t>(pair.j), pass,
+                           response == Response::Bounce, contact.u,
+                           world.position[pair.i] - world.radius[pair.i] * contact.u,
+                           contact.depth, {before[0], before[1]},
+                           {world.velocity[pair.i], world.velocity[pair.j]},
+                           {world.mass[pair.i], world.mass[pair.j]}};
+        event.solverStep = world.stepCount;  // timeOfImpact and solvedImpulse: -1, a pairwise response
+        world.contacts.push_back(event);
     }
     return response;
 }
@@ -439,11 +441,13 @@ Response respondToContact(World& world, std::uint32_t i, std::size_t planeIndex,
     stats.wallContacts += pass == 0;
     if (world.recordContacts && response != Response::None) {
         const double distance = glm::dot(world.position[i] - face.point, face.normal);  // m
-        world.contacts.push_back({i, -1 - static_cast<std::int32_t>(planeIndex), pass,
-                                  response == Response::Bounce, face.normal,
-                                  world.position[i] - distance * face.normal, world.radius[i] - distance,
-                                  {before, glm::dvec3(0.0)}, {world.velocity[i], glm::dvec3(0.0)},
-                                  {world.mass[i], 0.0}, -1.0, -1.0, world.stepCount});
+        ContactEvent event{i, -1 - static_cast<std::int32_t>(planeIndex), pass,
+                           response == Response::Bounce, face.normal,
+                           world.position[i] - distance * face.normal, world.radius[i] - distance,
+                           {before, glm::dvec3(0.0)}, {world.velocity[i], glm::dvec3(0.0)},
+                           {world.mass[i], 0.0}};
+        event.solverStep = world.stepCount;  // timeOfImpact and solvedImpulse: -1, a pairwise response
+        world.contacts.push_back(event);
     }
     return response;
 }
@@ -455,11 +459,12 @@ Response respondToFrozenContact(World& world, std::uint32_t i, std::uint32_t fro
     record(world, i, response);
     count(stats, response);
     if (world.recordContacts && response != Response::None) {  // the frozen sphere: infinitely heavy
-        world.contacts.push_back({i, static_cast<std::int32_t>(frozen), params.passes, response == Response::Bounce,
-                                  contact.u, world.position[i] - world.radius[i] * contact.u, contact.depth,
-                                  {before, world.velocity[frozen]}, {world.velocity[i], world.velocity[frozen]},
-                                  {world.mass[i], std::numeric_limits<double>::infinity()}, -1.0, -1.0,
-                                  world.stepCount});
+        ContactEvent event{i, static_cast<std::int32_t>(frozen), params.passes, response == Response::Bounce,
+                           contact.u, world.position[i] - world.radius[i] * contact.u, contact.depth,
+                           {before, world.velocity[frozen]}, {world.velocity[i], world.velocity[frozen]},
+                           {world.mass[i], std::numeric_limits<double>::infinity()}};
+        event.solverStep = world.stepCount;  // timeOfImpact and solvedImpulse: -1, a pairwise response
+        world.contacts.push_back(event);
     }
     return response;
 }

@@ -9,6 +9,7 @@
 #include <cstring>
 #include <string>
 
+#include "platform/driver_crash_guard.h"
 #include "platform/headless_backends.h"
 
 namespace platform::detail {
@@ -115,6 +116,7 @@ EGLContext createCoreContext(EGLDisplay display, std::string* error) {
 }  // namespace
 
 std::unique_ptr<HeadlessContext> createEglContext(std::string* error) {
+    const DriverCrashGuard guard("EGL created its context");
     EGLDisplay display = openSurfacelessDisplay(error);
     if (display == EGL_NO_DISPLAY) return nullptr;
     EGLContext raw = createCoreContext(display, error);

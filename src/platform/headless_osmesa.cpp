@@ -7,6 +7,7 @@
 #include <array>
 #include <vector>
 
+#include "platform/driver_crash_guard.h"
 #include "platform/headless_backends.h"
 
 namespace platform::detail {
@@ -55,6 +56,7 @@ std::unique_ptr<HeadlessContext> createOsMesaContext(std::string* error) {
                                             OSMESA_CONTEXT_MINOR_VERSION,
                                             3,
                                             0};
+    const DriverCrashGuard guard("OSMesa created its context");
     OSMesaContext raw = OSMesaCreateContextAttribs(attributes.data(), nullptr);
     if (!raw) {
         if (error) *error = "osmesa: OSMesaCreateContextAttribs failed (no GL 3.3 core profile?)";

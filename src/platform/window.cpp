@@ -4,6 +4,8 @@
 // After glad, so that GLFW does not pull in the system GL header.
 #include <GLFW/glfw3.h>
 
+#include "platform/driver_crash_guard.h"
+
 namespace platform {
 namespace {
 
@@ -47,6 +49,7 @@ std::unique_ptr<Window> Window::create(const WindowOptions& options, std::string
         return nullptr;
     }
     setContextHints(options);
+    const DriverCrashGuard guard("GLFW opened the window");
     GLFWwindow* window =
         glfwCreateWindow(options.width, options.height, options.title.c_str(), nullptr, nullptr);
     if (!window) {

@@ -218,9 +218,11 @@ struct Outcome {
     std::string output;  // stdout and stderr
 };
 
-// The real executable's exit code and output for `arguments` (a shell line).
-Outcome runSpheres(const std::string& arguments) {
-    const std::string command = std::string("'") + SPHERES_EXECUTABLE + "' " + arguments + " 2>&1";
+// The real executable's exit code and output for `arguments` (a shell line), with
+// `environment` ("NAME=value ...") set for it.
+Outcome runSpheres(const std::string& arguments, const std::string& environment = "") {
+    const std::string command = environment + (environment.empty() ? "" : " ") + "'" + SPHERES_EXECUTABLE + "' " +
+                                arguments + " 2>&1";
     Outcome outcome;
     FILE* pipe = popen(command.c_str(), "r");
     if (!pipe) return outcome;
@@ -235,6 +237,21 @@ Outcome runSpheres(const std::string& arguments) {
 std::string outputOf(const std::string& arguments) { return runSpheres(arguments).output; }
 
 }  // namespace
+
+// A GL driver that crashes while it starts (Debian 12's OSMesa, given a GALLIUM_DRIVER it
+// does not have, dereferences a null screen) ends the capture with one line naming the
+// setting, exit code 2, instead of "Segmentation fault". A Mesa that refuses the name
+// instead of crashing says so through the usual refusal, which names it too.
+TEST(CaptureCommandLine, AGlDriverThatCrashesWhileStartingIsOneLineNamingIt) {
+    if (!platform::headlessBackendCompiled(platform::HeadlessBackend::OSMesa)) GTEST_SKIP() << "OSMesa not built";
+    const std::string out = capture_test::freshFolder("cli_bogus_driver");
+    const Outcome outcome =
+        runSpheres("capture --scene 03_head_on --at 0 --gl osmesa --out '" + out + "'", "GALLIUM_DRIVER=bogus");
+    EXPECT_EQ(outcome.code, 2) << outcome.output;
+    EXPECT_EQ(outcome.output.rfind("spheres: ", 0), 0u) << outcome.output;
+    EXPECT_NE(outcome.output.find("GALLIUM_DRIVER=bogus"), std::string::npos) << outcome.output;
+    EXPECT_EQ(std::count(outcome.output.begin(), outcome.output.end(), '\n'), 1) << outcome.output;
+}
 
 // Input the command line cannot take is one line naming it, exit code 2, and nothing
 // written: a window option before a subcommand (it would be dropped, the subcommand
