@@ -258,6 +258,20 @@ TEST(ParameterTable, TheReadmesRowsQuoteTheTable) {
         }
         EXPECT_EQ(cells[3], range) << name;
         EXPECT_EQ(cells[5], p->applies == scenes::Applies::Live ? "live" : "restart") << name;
+        // The default: the value a scene file that leaves it out runs with (for a Live one, a
+        // default Scene's), as the table holds it; "1/60 (0.01667)" says it as a fraction too.
+        if (cells[4] == "the file's (required)") {
+            EXPECT_NE(p->available, nullptr) << name << ": only a thing of some scenes (an emitter) is the file's";
+        } else if (p->kind == scenes::ParameterKind::Choice) {
+            EXPECT_EQ(cells[4], std::string(p->choices.at(std::size_t(p->defaultValue)))) << name;
+        } else {
+            const std::size_t open = cells[4].find('(');
+            const double written = std::stod(open == std::string::npos ? cells[4] : cells[4].substr(open + 1));
+            EXPECT_NEAR(written, p->defaultValue, 1e-3 * std::abs(p->defaultValue)) << name << ": " << cells[4];
+        }
+        if (p->applies == scenes::Applies::Live && p->availableIn(scenes::Scene{})) {
+            EXPECT_EQ(p->get(scenes::Scene{}), p->defaultValue) << name << ": a default scene's";
+        }
         std::string meaning = cells[6];
         for (std::size_t bar = meaning.find("\\|"); bar != std::string::npos; bar = meaning.find("\\|", bar)) {
             meaning.erase(bar, 1);
