@@ -444,6 +444,29 @@ TEST(SideBySide, CompactLabelsKeepWhatTheSlidesCompare) {
     EXPECT_EQ(compact[1][3], full[1][6]);
 }
 
+// Side by side, each view's label says what its solver did in the last time step, as the
+// panel's readouts say it for view A only: on Bernoulli's problem, lcp's sweeps and residual
+// in view C at the impact; nothing for the lecture's sequential passes (view A).
+TEST(SideBySide, EachViewsLabelSaysWhatItsSolverDid) {
+    app::Simulation simulation(scenes::loadScene(scenes::presetPath("16_bernoulli")));
+    app::Session session(simulation);
+    session.sceneChanged();
+    ASSERT_EQ(session.runCount(), 4);
+    bool impact = false;
+    for (int frame = 0; frame < 120 && !impact; ++frame) {
+        session.advance(1.0 / 60.0);
+        impact = session.run(2).lastStepStats().lcpSweeps > 0;
+    }
+    ASSERT_TRUE(impact) << "lcp swept nothing in 2 s";
+    const std::vector<app::ViewReadout> views = app::viewReadouts(simulation, *session.comparison());
+    EXPECT_EQ(views[0].work, "");
+    const std::string sweeps = std::to_string(session.run(2).lastStepStats().lcpSweeps);
+    EXPECT_EQ(views[2].work.rfind("last step: lcp sweeps\u00a0" + sweeps + ", residual\u00a0", 0), 0u) << views[2].work;
+    EXPECT_EQ(views[3].work.rfind("last step: reflection rounds\u00a0", 0), 0u) << views[3].work;
+    const std::vector<std::string> label = app::viewReadoutLines(views[2]);
+    EXPECT_NE(std::find(label.begin(), label.end(), views[2].work), label.end());
+}
+
 // One view measures the claims at its settings; the list says how many more the text makes
 // (at the settings it suggests, or a ratio of two runs) and that `spheres claims` measures
 // them, so that "13 of 13" is not read as the whole text.

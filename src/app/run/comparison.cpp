@@ -120,6 +120,7 @@ std::vector<std::string> viewReadoutLines(const ViewReadout& view) {
     std::snprintf(line, sizeof line, "hash %016llx", static_cast<unsigned long long>(d.hash));
     lines.emplace_back(line);
     if (view.bouncesMeasured) lines.push_back(apexRatioLine(view, " "));
+    if (!view.work.empty()) lines.push_back(view.work);
     appendProperties(view, lines);
     return lines;
 }
@@ -168,6 +169,38 @@ std::vector<std::vector<std::string>> comparisonReadouts(const Simulation& prima
     return views;
 }
 
+namespace {
+
+// What the run's method or solver counted in its last time step (the panel's readouts).
+std::string workOf(const Simulation& run) {
+    const physics::Params& params = run.params();
+    const physics::StepStats& s = run.lastStepStats();
+    const auto count = [](std::uint64_t n) { return static_cast<unsigned long long>(n); };
+    char line[128] = "";
+    if (params.method == physics::Method::Continuous) {
+        std::snprintf(line, sizeof line, "last step: impacts\u00a0%llu, TOI iterations\u00a0%llu", count(s.events),
+                      count(s.toiIterations));
+    } else if (params.solver == physics::Solver::GeneralizedReflections) {
+        std::snprintf(line, sizeof line, "last step: reflection rounds\u00a0%llu, capped\u00a0%llu",
+                      count(s.reflectionRounds), count(s.reflectionCapHits));
+    } else if (physics::solvesGlobally(params.solver)) {
+        std::snprintf(line, sizeof line, "last step: lcp sweeps\u00a0%llu, residual\u00a0%.2g\u00a0m/s",
+                      count(s.lcpSweeps), s.lcpResidual);
+    } else if (params.solver == physics::Solver::UntilConverged) {
+        std::snprintf(line, sizeof line, "last step: passes\u00a0%llu, K reached\u00a0%llu", count(s.passesUsed),
+                      count(s.passCapHits));
+    }
+    if (params.shock == physics::ShockPropagation::On && physics::sweepsLevels(params.method)) {
+        char shock[96];
+        std::snprintf(shock, sizeof shock, "%sshock levels\u00a0%llu, rounds\u00a0%llu", *line ? "; " : "last step: ",
+                      count(s.shockLevels), count(s.shockRounds));
+        return std::string(line) + shock;
+    }
+    return line;
+}
+
+}  // namespace
+
 std::vector<ViewReadout> viewReadouts(const Simulation& primary, const Comparison& comparison) {
     std::vector<ViewReadout> views;
     for (int k = 0; k <= comparison.count(); ++k) {
@@ -188,6 +221,7 @@ std::vector<ViewReadout> viewReadouts(const Simulation& primary, const Compariso
                                   !measuredSpheres(world, run.selectedSphere()).empty();
         if (run.restitution().latest()) readout.apexRatio = run.restitution().latest()->ratio();
         readout.betaSquared = run.params().beta * run.params().beta;
+        readout.work = workOf(run);
         views.push_back(std::move(readout));
     }
     return views;

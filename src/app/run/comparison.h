@@ -76,10 +76,15 @@ struct ViewReadout {
     bool bouncesMeasured = false;
     std::optional<double> apexRatio;
     double betaSquared = 0.0;
+    // The work its method or solver did in the last time step, as the panel's readouts say
+    // it for view A ("last step: lcp sweeps 41, residual 3e-13 m/s"); "" for the sequential
+    // passes.
+    std::string work;
 };
 
 // The lines of a view's label: the title, then energy, momentum, penetration, hash, the
-// apex ratio where bounces are measured, and the five properties' marks when there are any.
+// apex ratio where bounces are measured, the solver's work, and the five properties' marks
+// when there are any.
 std::vector<std::string> viewReadoutLines(const ViewReadout& view);
 // The presentation layout's: the title, E~, the penetration and the apex ratio, short lines.
 std::vector<std::string> presentedLines(const ViewReadout& view);
