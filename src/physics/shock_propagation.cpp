@@ -176,7 +176,7 @@ class Sweep {
                 const std::uint32_t j = beside[b];
                 const SpherePair pair{std::min(i, j), std::max(i, j)};
                 pressed[count] = pair;
-                count += !(graph_.moved[j] && j < i) & pressedDeeper(pair);
+                count += std::size_t(!(graph_.moved[j] && j < i)) & std::size_t(pressedDeeper(pair));
             }
         }
         pressed.resize(count);

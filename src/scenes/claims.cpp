@@ -57,11 +57,15 @@ bool meets(const Claim& c, double x) {
     return true;
 }
 
-std::string expected(const Claim& c) {
+// What the claim asks, in the unit its value is shown in (a fraction of r as a percentage).
+std::string expected(const Claim& c, const std::string& unit) {
+    const double scale = unit == " r" ? 100.0 : 1.0;
+    const auto number = [&](double x) { return formatNumber(scale * x); };
     std::ostringstream out;
-    if (c.near) out << formatNumber(*c.near) << " +- " << formatNumber(c.within.value_or(0.0));
-    if (c.min) out << (c.near ? ", " : "") << ">= " << formatNumber(*c.min);
-    if (c.max) out << (c.near || c.min ? ", " : "") << "<= " << formatNumber(*c.max);
+    if (c.near) out << number(*c.near) << " +- " << number(c.within.value_or(0.0));
+    if (c.min) out << (c.near ? ", " : "") << ">= " << number(*c.min);
+    if (c.max) out << (c.near || c.min ? ", " : "") << "<= " << number(*c.max);
+    if (unit == " r") out << " % of r";
     return out.str();
 }
 
@@ -74,15 +78,23 @@ std::string unitOf(const Claim& c) {
     return "";
 }
 
-std::string range(const std::vector<double>& s, const std::string& unit) {
-    const auto [lo, hi] = std::minmax_element(s.begin(), s.end());
+// A value (or two, "lo to hi") in the claim's unit, four digits; a fraction of r as the
+// texts say it, "19.27 % of r".
+std::string valueShown(double lo, double hi, const std::string& unit) {
+    const double scale = unit == " r" ? 100.0 : 1.0;
     std::ostringstream out;
     out.precision(4);
-    out << *lo;
-    if (*hi != *lo) out << " to " << *hi;
-    out << unit;
-    if (s.size() > 1) out << " (" << s.size() << " samples)";
+    out << scale * lo;
+    if (hi != lo) out << " to " << scale * hi;
+    out << (unit == " r" ? std::string(" % of r") : unit);
     return out.str();
+}
+
+std::string range(const std::vector<double>& s, const std::string& unit) {
+    const auto [lo, hi] = std::minmax_element(s.begin(), s.end());
+    std::string text = valueShown(*lo, *hi, unit);
+    if (s.size() > 1) text += " (" + std::to_string(s.size()) + " samples)";
+    return text;
 }
 
 // One run of one variant: every meter watches it until the last stretch ends.
@@ -126,7 +138,10 @@ std::string settingShown(const Claim& c, const ClaimCheck& check) {
         if (p->kind == ParameterKind::Choice && value >= 0.0 && value < double(p->choices.size())) {
             return p->choiceShown(std::size_t(value));
         }
-        return formatNumber(value);
+        std::ostringstream out;  // four digits and the unit: "h = 0.03333 s"
+        out.precision(4);
+        out << value << (p->unit.empty() ? "" : " ") << p->unit;
+        return out.str();
     };
     std::optional<double> value = check.value;  // a setting holds throughout: any sample is it
     if (!value && !check.samples.empty()) value = check.samples.back();
@@ -136,7 +151,8 @@ std::string settingShown(const Claim& c, const ClaimCheck& check) {
 }
 
 // The quantity a claim measures, named as a reader of the panel needs it beside a bare
-// number: "max bounce ratio of sphere #0", "bounce loss, samples", "speed / with mu=0.5",
+// number: "max bounce ratio of sphere #0", "bounce loss, samples", "moving at t = 0.35 s",
+// "speed / the same with mu=0.5",
 // as the inspector names a sphere.
 std::string quantityShown(const Claim& c) {
     std::string name = c.measure;
@@ -146,12 +162,23 @@ std::string quantityShown(const Claim& c) {
     else if (c.take != "each") name = c.take + " " + name;
     if (!c.spheres.empty()) {
         name += c.spheres.size() == 1 ? " of sphere " : " of spheres ";
-        for (std::size_t k = 0; k < c.spheres.size(); ++k) {
+        for (std::size_t k = 0; k < c.spheres.size();) {  // runs of numbers as "#1–#15"
+            std::size_t end = k + 1;
+            while (end < c.spheres.size() && c.spheres[end] == c.spheres[end - 1] + 1) ++end;
             name += (k ? ", #" : "#") + std::to_string(c.spheres[k]);
+            if (end - k > 2) name += "\u2013#" + std::to_string(c.spheres[end - 1]);
+            else if (end - k == 2) name += ", #" + std::to_string(c.spheres[end - 1]);
+            k = end;
         }
     }
+    if (c.from == c.to && c.to > 0.0) {  // an instant: "at t = 0.25 s"
+        std::ostringstream at;
+        at.precision(4);
+        at << " at t = " << c.to << " s";
+        name += at.str();
+    }
     if (c.ratioTo) {
-        name += " / with";
+        name += c.ratioTo->empty() ? " / the same at the preset's own settings" : " / the same with";
         for (const std::string& s : *c.ratioTo) name += " " + s;
     }
     return name;
@@ -172,10 +199,10 @@ void judge(ClaimCheck& check, const std::vector<double>* ratioSamples) {
         out << (check.samples.empty() ? std::string("nothing measured") : range(check.samples, unitOf(c)));
     } else {
         check.holds = check.value && meets(c, *check.value);
-        if (check.value) out << *check.value << (ratioSamples ? std::string() : unitOf(c));
+        if (check.value) out << valueShown(*check.value, *check.value, ratioSamples ? std::string() : unitOf(c));
         else out << "nothing measured";
     }
-    if (!check.holds) out << ", expected " << expected(c);
+    if (!check.holds) out << ", expected " << expected(c, ratioSamples ? std::string() : unitOf(c));
     check.measured = c.measure == "setting" ? settingShown(c, check) : quantityShown(c) + " = " + out.str();
 }
 
@@ -281,6 +308,14 @@ LiveClaims::LiveClaims(const Scene& scene) : watch_(std::make_unique<Watch>()) {
 }
 
 std::size_t LiveClaims::size() const { return watch_ ? watch_->claims.size() : 0; }
+
+double LiveClaims::lastMoment() const {
+    double last = 0.0;
+    if (watch_) {
+        for (const Claim& c : watch_->claims) last = std::max(last, c.to);
+    }
+    return last;
+}
 
 void LiveClaims::observe(const physics::World& world) {
     if (!watch_) return;

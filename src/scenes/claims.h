@@ -122,6 +122,8 @@ class LiveClaims {
     void observe(const physics::World& world);
     // The claims whose stretch has passed at `time` (s), judged, in the scene's order.
     std::vector<ClaimCheck> judged(double time) const;
+    // s: when the last stretch ends (0 without claims): every claim is judged from then on.
+    double lastMoment() const;
 
   private:
     // The scene and the claims the meters watch for (they keep references to both: kept

@@ -320,6 +320,33 @@ TEST(InteractionSelection, TheExplainedContactsOtherSphereIsRingedToo) {
     EXPECT_EQ(app::explainedPartner(session, tools), -1);
 }
 
+// A teacher pauses the pile, selects a sphere, then steps back (←) to the frame before, to
+// explain the contact there: that frame was kept before the sphere was selected, so it
+// holds no contacts of it; the frame is run again, and its contacts are explained (before,
+// "No contact of sphere #… recorded since it was selected" while the inspector said static).
+TEST(InteractionSelection, SteppingBackExplainsTheContactsOfTheFrameShown) {
+    scenes::Scene scene = scenes::loadScene(scenes::presetPath("11_pile"));
+    ASSERT_EQ(scenes::applySetting(scene, "count=200"), "");  // more than are always recorded
+    app::Simulation simulation(scene);
+    app::Session session(simulation);
+    for (int frame = 0; frame < 180; ++frame) session.advance(1.0 / 60.0);
+    simulation.paused = true;
+    const physics::World& world = simulation.world();
+    ASSERT_FALSE(world.recordContacts);
+    const int lowest = int(std::find(world.contactState.begin(), world.contactState.end(), physics::ContactState::Static) -
+                           world.contactState.begin());
+    ASSERT_LT(std::size_t(lowest), world.size());
+    session.select(lowest);
+    const std::size_t shown = session.timeline().cursor();
+    ASSERT_GT(shown, 1u);
+    session.stepBack();
+    ASSERT_EQ(session.timeline().cursor(), shown - 1);
+    EXPECT_EQ(world.stepCount, session.timeline().at(shown - 1).stepCount);
+    EXPECT_FALSE(session.latestContacts().events.empty()) << "sphere " << lowest << " rests on something";
+    EXPECT_TRUE(session.latestContacts().frameRecalled);
+    EXPECT_EQ(session.latestContacts().steps, world.stepCount);
+}
+
 // A sphere selected while paused has the contacts of the frame shown at once (the frame run
 // again from the timeline): the same as had it been selected before that frame, and the run
 // not moved on. A sphere selected after an edit (no step in the frame) has none.

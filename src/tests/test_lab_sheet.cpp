@@ -261,8 +261,9 @@ TEST(ClaimsCommandLine, AMeasuredValueNamesItsQuantity) {
     EXPECT_EQ(code, 0) << output;
     for (const char* line : {"\"the moving one stops dead\": vx of sphere #0 = 0 m/s (19 samples)",
                              "\"Two equal spheres meet head-on\": mass of spheres #0, #1 = 1 kg (2 samples)",
-                             "\"so it squashes (overlaps up to 19 % of r)\": max penetration = 0.19",
-                             "\"the contact graph's 20 levels\" (with shock=on): shock levels = 20 ("}) {
+                             "\"so it squashes (overlaps up to 19 % of r)\": max penetration = 19.27 % of r",
+                             "\"the contact graph's 20 levels\" (with shock=on): shock levels = 20 (",
+                             "\"Twenty stacked spheres, position based\": method = position"}) {
         EXPECT_NE(output.find(line), std::string::npos) << line << "\n" << output;
     }
 }

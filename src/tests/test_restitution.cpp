@@ -187,13 +187,13 @@ TEST(Restitution, TheNoteSaysWhyBouncesAtALargeStepAreNotMeasured) {
     EXPECT_GT(sim.restitution().tooSlowCount(), 3u);
     const ui::Readouts readouts = app::makeReadouts(sim, ui::FrameTimes{});
     EXPECT_TRUE(readouts.measuredBetaSquared.empty());
-    EXPECT_NE(readouts.restitutionNote.find("but slower than 20 g h = 19.6 m/s: at this step it measures h as much "
-                                            "as \u03b2"),
+    EXPECT_NE(readouts.restitutionNote.find("the method's error at this h shows in it too; the measured \u03b2\u00b2 "
+                                            "takes impacts above 20 g h = 19.6 m/s)"),
               std::string::npos)
         << readouts.restitutionNote;
     ASSERT_TRUE(sim.restitution().latest());
     char last[32];
-    std::snprintf(last, sizeof last, "(last bounce %.3f, ", sim.restitution().latest()->ratio());
+    std::snprintf(last, sizeof last, "(last bounce %.3f: ", sim.restitution().latest()->ratio());
     EXPECT_EQ(readouts.restitutionNote.rfind(last, 0), 0u) << readouts.restitutionNote;
 }
 

@@ -14,6 +14,9 @@
 namespace ui {
 namespace {
 
+// Under a slider side by side: the other views keep the value their overrides give them.
+constexpr const char* kOnlyViewA = "view A only: the other views set their own";
+
 const ImVec4 kAlarmLit{1.0f, 0.30f, 0.25f, 1.0f};     // red, readable on the dark panel
 const ImVec4 kAlarmDimmed{0.72f, 0.42f, 0.40f, 1.0f};  // fired earlier
 const ImVec4 kHintColor{0.85f, 0.78f, 0.70f, 1.0f};
@@ -93,7 +96,7 @@ void parameterWidget(const scenes::Parameter& p, const scenes::Scene& scene, Pan
     }
     if (state.refusedName == p.name && !state.refusal.empty()) wrappedColored(kRefusalColor, state.refusal);
     if (std::find(state.onlyViewA.begin(), state.onlyViewA.end(), p.name) != state.onlyViewA.end()) {
-        ImGui::TextDisabled("  view A only: the other views set their own");
+        wrappedColored(ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled), kOnlyViewA);
     }
 }
 
@@ -449,6 +452,14 @@ void sceneText(const scenes::Scene& scene) {
     if (!scene.description.empty()) textWrappedAtSpaces(scenes::describedText(scene));
 }
 
+// The claims whose moment the run has not reached yet, and when the last is.
+std::string claimsPendingLine(const Readouts& r) {
+    char line[160];
+    std::snprintf(line, sizeof line, "%zu more are measured as the run reaches their moment (the last at t = %.3g s).",
+                  r.claimsWatched - r.claims.size(), r.claimsLastMoment);
+    return line;
+}
+
 // What the list leaves out, and where it is measured.
 std::string claimsElsewhereLine(const Readouts& r) {
     return std::to_string(r.claimsElsewhere) + " more of the text's claims name other settings or compare two "
@@ -485,7 +496,9 @@ void measuredClaims(const Readouts& r) {
         wrappedColored(c.holds ? ImVec4(0.45f, 0.9f, 0.45f, 1.0f) : kAlarmLit,
                        view + (c.holds ? "\u2713 " : "\u2717 ") + "\u201c" + c.says + "\u201d: " + c.measured);
     }
-    if (r.claimsElsewhere > 0) wrappedColored(ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled), claimsElsewhereLine(r));
+    const ImVec4 grey = ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled);
+    if (r.claimsWatched > r.claims.size() && !r.claimsInterrupted) wrappedColored(grey, claimsPendingLine(r));
+    if (r.claimsElsewhere > 0) wrappedColored(grey, claimsElsewhereLine(r));
 }
 
 // A new scene: its title and text are what the class reads first.
@@ -520,7 +533,7 @@ void presentedPanel(const scenes::Scene& scene, const Readouts& readouts, PanelS
             below += ImGui::CalcTextSize(state.refusal.c_str(), nullptr, false, wrap).y + style.ItemSpacing.y;
         }
         if (std::find(state.onlyViewA.begin(), state.onlyViewA.end(), p->name) != state.onlyViewA.end()) {
-            below += ImGui::GetTextLineHeightWithSpacing();
+            below += ImGui::CalcTextSize(kOnlyViewA, nullptr, false, wrap).y + style.ItemSpacing.y;
         }
     }
     ImGui::BeginChild("presented", ImVec2(0.0f, -below));

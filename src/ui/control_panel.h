@@ -155,6 +155,7 @@ struct Readouts {
     std::size_t claimsWatched = 0;
     bool claimsInterrupted = false;
     bool claimsForOtherSettings = false;  // the text claims things at other settings than the run's
+    double claimsLastMoment = 0.0;    // s: when the last watched claim is judged (the views' latest)
     std::size_t claimsElsewhere = 0;  // the text's claims no view measures: other settings, or a ratio of two runs
 };
 

@@ -214,7 +214,8 @@ Json timelineOf(const app::Session& session) {
 // a restart), "other_settings" (the text's claims are for other settings than the run's),
 // "lines": [{"holds", "says", "measured", "view" (side by side: the view's letter, "A" to
 // "D", that measured it; else "")}] (those judged so far), "elsewhere" (the text's claims no
-// view measures: at other settings, or a ratio of two runs)}.
+// view measures: at other settings, or a ratio of two runs), "last_moment_s" (when the last
+// watched claim is judged)}.
 Json claimsOf(const app::Simulation& run, const app::Comparison* comparison) {
     ui::Readouts readouts;
     app::addMeasuredClaims(run, comparison, readouts);
@@ -225,7 +226,7 @@ Json claimsOf(const app::Simulation& run, const app::Comparison* comparison) {
     }
     return {{"watched", readouts.claimsWatched}, {"interrupted", readouts.claimsInterrupted},
             {"other_settings", readouts.claimsForOtherSettings}, {"lines", lines},
-            {"elsewhere", readouts.claimsElsewhere}};
+            {"elsewhere", readouts.claimsElsewhere}, {"last_moment_s", readouts.claimsLastMoment}};
 }
 
 // The invariant alarms, most serious first, as the window's panel shows them:

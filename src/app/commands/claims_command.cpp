@@ -28,7 +28,8 @@ int runClaims(const ClaimsOptions& options) {
         std::printf("%s  %s\n", names[k].c_str(), scene.title.c_str());
         if (scene.claims.empty()) std::printf("  (its text claims nothing a run can measure)\n");
         for (const scenes::ClaimCheck& check : scenes::checkClaims(scene)) {
-            std::printf("  %s \"%s\"%s: %s\n", check.holds ? "\u2713" : "\u2717", check.claim->says.c_str(),
+            std::printf("  %s \"%s\"%s: %s\n", check.holds ? "\u2713" : "\u2717",
+                        scenes::withCount(check.claim->says, scene).c_str(),
                         withSettings(check.claim->settings).c_str(), check.measured.c_str());
             (check.holds ? held : failed) += 1;
         }

@@ -111,11 +111,14 @@ std::vector<std::string> viewReadoutLines(const ViewReadout& view) {
     const physics::Diagnostics& d = view.diagnostics;
     char line[160];
     std::vector<std::string> lines{view.title};
-    std::snprintf(line, sizeof line, "E %.6g J   E~ %.6g J", d.total, d.modified);
+    // A number joined to its name and unit by no-break spaces (U+00A0): a narrow label wraps
+    // between the readouts, not inside one ("t" / "4.367 s").
+    std::snprintf(line, sizeof line, "E\u00a0%.6g\u00a0J   E~\u00a0%.6g\u00a0J", d.total, d.modified);
     lines.emplace_back(line);
     std::snprintf(line, sizeof line, "p (%.3g, %.3g, %.3g) kg m/s", d.momentum.x, d.momentum.y, d.momentum.z);
     lines.emplace_back(line);
-    std::snprintf(line, sizeof line, "penetration %.2f %% r   t %.3f s", 100.0 * d.maxPenetration, view.time);
+    std::snprintf(line, sizeof line, "penetration\u00a0%.2f\u00a0%%\u00a0r   t\u00a0%.3f\u00a0s",
+                  100.0 * d.maxPenetration, view.time);
     lines.emplace_back(line);
     std::snprintf(line, sizeof line, "hash %016llx", static_cast<unsigned long long>(d.hash));
     lines.emplace_back(line);
@@ -130,7 +133,6 @@ std::vector<std::string> compactLines(const ViewReadout& view) {
     std::snprintf(line, sizeof line, "E~\u00a0%.6g\u00a0J   penetration\u00a0%.2f\u00a0%%\u00a0r", view.diagnostics.modified,
                   100.0 * view.diagnostics.maxPenetration);
     std::vector<std::string> lines{view.title, line};
-    if (view.bouncesMeasured) lines.push_back(apexRatioLine(view, " "));
     appendProperties(view, lines);
     return lines;
 }
@@ -171,32 +173,29 @@ std::vector<std::vector<std::string>> comparisonReadouts(const Simulation& prima
 
 namespace {
 
-// What the run's method or solver counted in its last time step (the panel's readouts).
+// The most work the run's method or solver took in one time step since the restart: what
+// the views compare (a label of the last step's read 0 but in the frame of an impact).
 std::string workOf(const Simulation& run) {
     const physics::Params& params = run.params();
-    const physics::StepStats& s = run.lastStepStats();
+    const physics::StepStats& s = run.mostWorkAStep();
     const auto count = [](std::uint64_t n) { return static_cast<unsigned long long>(n); };
     char line[128] = "";
     if (params.method == physics::Method::Continuous) {
-        std::snprintf(line, sizeof line, "last step: impacts\u00a0%llu, TOI iterations\u00a0%llu", count(s.events),
-                      count(s.toiIterations));
+        std::snprintf(line, sizeof line, "impacts\u00a0%llu", count(s.events));
     } else if (params.solver == physics::Solver::GeneralizedReflections) {
-        std::snprintf(line, sizeof line, "last step: reflection rounds\u00a0%llu, capped\u00a0%llu",
-                      count(s.reflectionRounds), count(s.reflectionCapHits));
+        std::snprintf(line, sizeof line, "reflection rounds\u00a0%llu", count(s.reflectionRounds));
     } else if (physics::solvesGlobally(params.solver)) {
-        std::snprintf(line, sizeof line, "last step: lcp sweeps\u00a0%llu, residual\u00a0%.2g\u00a0m/s",
-                      count(s.lcpSweeps), s.lcpResidual);
+        std::snprintf(line, sizeof line, "lcp sweeps\u00a0%llu", count(s.lcpSweeps));
     } else if (params.solver == physics::Solver::UntilConverged) {
-        std::snprintf(line, sizeof line, "last step: passes\u00a0%llu, K reached\u00a0%llu", count(s.passesUsed),
-                      count(s.passCapHits));
+        std::snprintf(line, sizeof line, "passes\u00a0%llu", count(s.passesUsed));
     }
+    std::string work = line;
     if (params.shock == physics::ShockPropagation::On && physics::sweepsLevels(params.method)) {
-        char shock[96];
-        std::snprintf(shock, sizeof shock, "%sshock levels\u00a0%llu, rounds\u00a0%llu", *line ? "; " : "last step: ",
-                      count(s.shockLevels), count(s.shockRounds));
-        return std::string(line) + shock;
+        std::snprintf(line, sizeof line, "shock levels\u00a0%llu, rounds\u00a0%llu", count(s.shockLevels),
+                      count(s.shockRounds));
+        work += (work.empty() ? "" : ", ") + std::string(line);
     }
-    return line;
+    return work.empty() ? work : "most a step: " + work;
 }
 
 }  // namespace
@@ -217,8 +216,10 @@ std::vector<ViewReadout> viewReadouts(const Simulation& primary, const Compariso
         std::vector<physics::MirrorAsymmetry> mirrors;
         for (const physics::Plane& m : run.scene().mirrors) mirrors.push_back(physics::mirrorAsymmetry(world, m));
         readout.properties = propertiesMarks(judgeProperties(run.impacts(), mirrors, run.params()));
+        // Scenes the meter follows whole (not the selected sphere alone: a column's would read
+        // "–" for ever, and the label would change size with the selection).
         readout.bouncesMeasured = world.recordContacts && floorPlane(world, run.params()) >= 0 &&
-                                  !measuredSpheres(world, run.selectedSphere()).empty();
+                                  !measuredSpheres(world, -1).empty();
         if (run.restitution().latest()) readout.apexRatio = run.restitution().latest()->ratio();
         readout.betaSquared = run.params().beta * run.params().beta;
         readout.work = workOf(run);

@@ -76,9 +76,8 @@ struct ViewReadout {
     bool bouncesMeasured = false;
     std::optional<double> apexRatio;
     double betaSquared = 0.0;
-    // The work its method or solver did in the last time step, as the panel's readouts say
-    // it for view A ("last step: lcp sweeps 41, residual 3e-13 m/s"); "" for the sequential
-    // passes.
+    // The most work its method or solver took in one time step since the restart ("most a
+    // step: lcp sweeps 14"); "" for the sequential passes.
     std::string work;
 };
 
@@ -89,7 +88,7 @@ std::vector<std::string> viewReadoutLines(const ViewReadout& view);
 // The presentation layout's: the title, E~, the penetration and the apex ratio, short lines.
 std::vector<std::string> presentedLines(const ViewReadout& view);
 // Beside the dock (a sphere inspected or explained), where four full labels left thumbnails:
-// the title, E~ with the penetration, the apex ratio and the properties' marks.
+// the title, E~ with the penetration, and the properties' marks.
 std::vector<std::string> compactLines(const ViewReadout& view);
 
 // Which of those a view's label shows.

@@ -343,7 +343,9 @@ void Session::scrubTo(std::size_t index) {
     }
     touched();
     if (selected_ >= 0 && static_cast<std::size_t>(selected_) >= primary_.world().size()) selected_ = -1;
-    // The latest contacts at or before the frame shown (frames keep the selected sphere's).
+    // The latest contacts at or before the frame shown (frames keep the selected sphere's
+    // while one is selected); none kept (the sphere was selected later, in a scene whose
+    // contacts are recorded only for it): the frame shown run again (recallContacts).
     latest_ = {};
     for (std::size_t k = timeline().cursor() + 1; k-- > 0;) {
         const WorldState& state = timeline().at(k);
@@ -352,6 +354,7 @@ void Session::scrubTo(std::size_t index) {
         if (latest_.events.empty()) continue;
         break;
     }
+    if (latest_.events.empty()) recallContacts();
 }
 
 physics::Diagnostics Session::diagnostics(int k) const {

@@ -24,6 +24,7 @@ void Simulation::startFrom(physics::World world) {
     world_ = std::move(world);
     accumulator_ = 0.0;
     lastStats_ = {};
+    mostWork_ = {};
     impacts_ = {};
     behindFor_ = 0.0;
     history_.clear();
@@ -200,6 +201,7 @@ void Simulation::afterStep() {
     }
     bounces_ += lastStats_.collisions;
     impacts_.add(lastStats_.impacts);
+    keepMostWork();
     const double energyAfter = physics::modifiedEnergy(world_, scene_.params);
     // A sphere added or removed, or energy the app put in, is not the solver's doing.
     const bool checkEnergy = !skipEnergyCheck_ && world_.size() == sizeBefore_;
@@ -213,6 +215,17 @@ void Simulation::afterStep() {
     restitution_.afterStep(world_, scene_.params, selected_);
     ghosts_.afterStep(world_, scene_.params, selected_);
     lastStepTime_ = world_.time;
+}
+
+void Simulation::keepMostWork() {
+    const physics::StepStats& s = lastStats_;
+    physics::StepStats& most = mostWork_;
+    most.lcpSweeps = std::max(most.lcpSweeps, s.lcpSweeps);
+    most.reflectionRounds = std::max(most.reflectionRounds, s.reflectionRounds);
+    most.passesUsed = std::max(most.passesUsed, s.passesUsed);
+    most.events = std::max(most.events, s.events);
+    most.shockLevels = std::max(most.shockLevels, s.shockLevels);
+    most.shockRounds = std::max(most.shockRounds, s.shockRounds);
 }
 
 void Simulation::stepOnce() {

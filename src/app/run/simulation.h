@@ -57,6 +57,10 @@ public:
     double wallBudget = std::numeric_limits<double>::infinity();
 
     const physics::StepStats& lastStepStats() const { return lastStats_; }
+    // The most work any one time step took since the restart: the global solvers' sweeps
+    // and rounds, the passes until converged, the impacts, the shock sweep's levels and
+    // rounds (only those fields are kept).
+    const physics::StepStats& mostWorkAStep() const { return mostWork_; }
     // Whether time was dropped within the last kBehindHoldSeconds of real time: a window
     // that falls behind every other frame (the 1k pile at 1920x1080 on a software GL)
     // keeps its note shown, instead of a line that comes and goes at every frame.
@@ -84,6 +88,7 @@ public:
     // hand (a parameter, a sphere, the timeline): claimsInterrupted() says so.
     std::vector<scenes::ClaimCheck> measuredClaims() const { return claims_.judged(world_.time); }
     std::size_t claimsWatched() const { return claims_.size(); }  // judged or not yet
+    double claimsLastMoment() const { return claims_.lastMoment(); }  // s: all judged from then on
     bool claimsInterrupted() const { return claimsInterrupted_; }
     // The text claims something, but at other settings than this run's (a restart with a
     // slider moved): none of its claims is measured.
@@ -126,6 +131,7 @@ private:
     physics::World world_;
     double accumulator_ = 0.0;  // s of simulated time not yet stepped
     physics::StepStats lastStats_;
+    physics::StepStats mostWork_;
     ImpactRecord impacts_;
     double behindFor_ = 0.0;  // s of real time behindRealTime() still says so
     History history_;
@@ -151,6 +157,7 @@ private:
     // the energy alarm's why when the new settings lift what the old ones let sink.
     std::vector<double> settingsAtLastStep_;
     SettingsChange settingsChange_;
+    void keepMostWork();  // after a step: mostWork_ from lastStats_
     void watchClaims();  // before a step: stop the claims if the run was changed by hand
     mutable physics::ContactGraph graph_;  // contactGraph(), for the state whose hash is graphOf_
     mutable std::uint64_t graphOf_ = 0;

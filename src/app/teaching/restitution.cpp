@@ -110,11 +110,13 @@ void RestitutionMeter::afterStep(const physics::World& world, const physics::Par
         const double energy = normalEnergy(world, params, i, floor);  // J/kg
         if (t.inContact && t.floorBounce && !t.otherContact && t.beforeKnown && t.energyBefore > 0.0 &&
             std::isfinite(energy)) {
-            latest_ = BounceMeasurement{i, world.time, t.energyBefore / gn, energy / gn};
-            if (std::sqrt(2.0 * t.energyBefore) < minImpactSpeed) {
+            const BounceMeasurement bounce{i, world.time, t.energyBefore / gn, energy / gn};
+            const double impactSpeed = std::sqrt(2.0 * t.energyBefore);  // m/s
+            if (impactSpeed >= kMinLabelledImpactSpeedInGH * gn * params.solverStep()) latest_ = bounce;
+            if (impactSpeed < minImpactSpeed) {
                 ++tooSlow_;
             } else {
-                last_.push_back(*latest_);
+                last_.push_back(bounce);
                 ++measured_;
                 while (last_.size() > kMeasurementsKept) last_.pop_front();
             }

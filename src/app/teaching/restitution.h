@@ -24,6 +24,10 @@ constexpr std::size_t kMeasurementsKept = 4;     // the last ones, shown in the 
 // Bounces slower than this many g h are not measured: one step's travel would be
 // more than 1/10 of the height, and the ratio would say more about h than about beta.
 constexpr double kMinImpactSpeedInGH = 20.0;
+// The views' labels compare the methods at one coarse h, where the step's error is the
+// lesson, down to this: slower hops would measure little but the step (a ratio of 3.8 from
+// a hop of a few millimetres, slide 7's reflection one kick late).
+constexpr double kMinLabelledImpactSpeedInGH = 4.0;
 
 struct BounceMeasurement {
     std::uint32_t sphere = 0;
@@ -53,8 +57,9 @@ public:
     void afterStep(const physics::World& world, const physics::Params& params, int selected);
 
     const std::deque<BounceMeasurement>& last() const { return last_; }  // oldest first
-    // The newest clean floor bounce, slow ones too: the apex ratio a view's label shows,
-    // where comparing the methods at one coarse h is the lesson (slide 7's three answers).
+    // The newest clean floor bounce at least kMinLabelledImpactSpeedInGH g h fast, slow ones
+    // (under kMinImpactSpeedInGH) too: the apex ratio a view's label shows, where comparing
+    // the methods at one coarse h is the lesson (slide 7's three answers).
     const std::optional<BounceMeasurement>& latest() const { return latest_; }
     std::uint64_t measuredCount() const { return measured_; }
     // Clean floor bounces left unmeasured because they were slower than

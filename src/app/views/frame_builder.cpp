@@ -79,8 +79,8 @@ std::string restitutionNote(const Simulation& simulation) {
         const physics::Params& params = simulation.params();
         char text[200];
         std::snprintf(text, sizeof text,
-                      "(last bounce %.3f, but slower than %.0f g h%s = %.3g m/s: at this step it measures h as "
-                      "much as β)",
+                      "(last bounce %.3f: the method's error at this h shows in it too; the measured β² "
+                      "takes impacts above %.0f g h%s = %.3g m/s)",
                       latest->ratio(), kMinImpactSpeedInGH, params.substeps > 1 ? " / substeps" : "",
                       kMinImpactSpeedInGH * glm::length(params.gravity) * params.solverStep());
         return text;
@@ -96,9 +96,10 @@ void addMeasuredClaims(const Simulation& simulation, const Comparison* compariso
         const Simulation& run = k == 0 ? simulation : comparison->simulation(k - 1);
         const char view = runs > 1 ? char('A' + k) : 0;
         for (const scenes::ClaimCheck& check : run.measuredClaims()) {
-            r.claims.push_back({check.claim->says, check.measured, check.holds, view});
+            r.claims.push_back({scenes::withCount(check.claim->says, run.scene()), check.measured, check.holds, view});
         }
         r.claimsWatched += run.claimsWatched();
+        r.claimsLastMoment = std::max(r.claimsLastMoment, run.claimsLastMoment());
     }
     const auto inText = std::count_if(simulation.scene().claims.begin(), simulation.scene().claims.end(),
                                       [](const scenes::Claim& c) { return c.in == scenes::ClaimSource::Description; });
