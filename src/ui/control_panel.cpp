@@ -43,13 +43,19 @@ void wrappedColored(const ImVec4& color, const std::string& text);
 
 // The slider (or list) of one table entry. Its edit goes into `actions`: a Live one
 // while it is dragged, a Restart one when it is let go (meanwhile `state` holds the
-// value shown). Under it, why its last edit was refused.
+// value shown). Under it, why its last edit was refused. `labelAbove`: its label on a line
+// of its own and the widget the panel's width (large type in a narrow panel).
 void parameterWidget(const scenes::Parameter& p, const scenes::Scene& scene, PanelState& state,
-                     PanelActions& actions) {
+                     PanelActions& actions, bool labelAbove = false) {
     const bool pending = state.pendingName == p.name;
     double value = pending ? state.pendingValue : p.get(scene);
     bool changed = false;
-    const std::string label = labelOf(p);
+    std::string label = labelOf(p);
+    if (labelAbove) {
+        ImGui::TextUnformatted(label.c_str(), label.c_str() + label.find("##"));
+        label = label.substr(label.find("##"));
+        ImGui::PushItemWidth(-FLT_MIN);
+    }
     if (p.kind == scenes::ParameterKind::Choice) {
         int index = static_cast<int>(value);
         const std::string current = p.choiceShown(static_cast<std::size_t>(index));
@@ -94,6 +100,7 @@ void parameterWidget(const scenes::Parameter& p, const scenes::Scene& scene, Pan
             state.pendingName.clear();
         }
     }
+    if (labelAbove) ImGui::PopItemWidth();
     if (state.refusedName == p.name && !state.refusal.empty()) wrappedColored(kRefusalColor, state.refusal);
     if (std::find(state.onlyViewA.begin(), state.onlyViewA.end(), p.name) != state.onlyViewA.end()) {
         wrappedColored(ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled), kOnlyViewA);
@@ -508,11 +515,9 @@ void scrollToTopIfAsked(PanelState& state) {
     state.scrollToTop = false;
 }
 
-// Room for the widest label beside each control ("ε static-contact speed (m/s)"), also in the
-// presentation layout's large type on a 1024 px screen.
-void pushItemWidth() {
-    ImGui::PushItemWidth(std::min(ImGui::GetFontSize() * 9.5f, 0.4f * ImGui::GetContentRegionAvail().x));
-}
+// Room for the widest label beside each control ("ε static-contact speed (m/s)").
+float itemWidth() { return std::min(ImGui::GetFontSize() * 9.5f, 0.4f * ImGui::GetContentRegionAvail().x); }
+void pushItemWidth() { ImGui::PushItemWidth(itemWidth()); }
 
 // The presentation layout: the scene's text and its claims scroll; only the sliders the text
 // names and the keys stay in sight under them (a long text pushed them off at 720 lines).
@@ -526,9 +531,16 @@ void presentedPanel(const scenes::Scene& scene, const Readouts& readouts, PanelS
     const char* keys = "Esc: all controls  P: pause  R: restart  [ ]: preset";
     const ImGuiStyle& style = ImGui::GetStyle();
     const float wrap = ImGui::GetContentRegionAvail().x;
+    // A label too wide beside its slider (1024 px at 1.5 times the type): every label above.
+    float widest = 0.0f;
+    for (const scenes::Parameter* p : sliders) {
+        const std::string label = labelOf(*p);
+        widest = std::max(widest, ImGui::CalcTextSize(label.c_str(), label.c_str() + label.find("##")).x);
+    }
+    const bool labelsAbove = widest + style.ItemInnerSpacing.x > wrap - itemWidth();
     float below = 2.0f * style.ItemSpacing.y + ImGui::CalcTextSize(keys, nullptr, false, wrap).y + style.ItemSpacing.y;
     for (const scenes::Parameter* p : sliders) {  // each slider, and the lines parameterWidget adds under it
-        below += ImGui::GetFrameHeightWithSpacing();
+        below += ImGui::GetFrameHeightWithSpacing() + (labelsAbove ? ImGui::GetTextLineHeightWithSpacing() : 0.0f);
         if (state.refusedName == p->name && !state.refusal.empty()) {
             below += ImGui::CalcTextSize(state.refusal.c_str(), nullptr, false, wrap).y + style.ItemSpacing.y;
         }
@@ -543,7 +555,7 @@ void presentedPanel(const scenes::Scene& scene, const Readouts& readouts, PanelS
     ImGui::EndChild();
     ImGui::Separator();
     pushItemWidth();
-    for (const scenes::Parameter* p : sliders) parameterWidget(*p, scene, state, actions);
+    for (const scenes::Parameter* p : sliders) parameterWidget(*p, scene, state, actions, labelsAbove);
     ImGui::PopItemWidth();
     wrappedColored(ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled), keys);
 }
