@@ -58,6 +58,8 @@ struct LiveView {
     int explainIndex = 0;  // which of the selected sphere's latest contacts is explained
     bool rendererReady = false;
     float aspect = 0.0f;  // the canvas's last width / height: a change keeps the box's fit
+    int rows = 1;  // four views side by side: in one row, or two rows of two (the page's choice)
+    int labelRoom = 0;  // px, in two rows: the top of each quarter, left to its label
 };
 
 LiveView& live() {
@@ -105,18 +107,24 @@ constexpr const char* kColorings[] = {"id", "speed", "contact"};
 // px between the columns side by side, as in the window.
 constexpr int kViewGap = 4;
 
-// Each run's column of a canvas `width` px wide: x and width (px).
-struct Column {
-    int x, width;
+// Each run's view on a canvas of width x height px (x, y from its top-left corner): a
+// column each (its label over its sky), or for four views in two rows (LiveView::rows) a
+// quarter each, under the room its label takes.
+struct Cell {
+    int x, y, width, height;
 };
-Column columnOf(int k, int runs, int width) {
-    const int each = std::max(1, (width - kViewGap * (runs - 1)) / runs);
-    return {k * (each + kViewGap), each};
+Cell cellOf(int k, int runs, int width, int height) {
+    const int rows = runs == 4 ? std::clamp(live().rows, 1, 2) : 1;
+    const int columns = (runs + rows - 1) / rows;
+    const int w = std::max(1, (width - kViewGap * (columns - 1)) / columns);
+    const int h = std::max(1, (height - kViewGap * (rows - 1)) / rows);
+    const int room = rows == 2 ? std::clamp(live().labelRoom, 0, h / 2) : 0;
+    return {(k % columns) * (w + kViewGap), (k / columns) * (h + kViewGap) + room, w, h - room};
 }
 
 // A point of the canvas, (x, y) px from its top-left corner (width x height px): the
-// view whose column holds it (or `view`, while a drag keeps to its own) and the ray
-// from the camera through it.
+// view whose cell holds it (or `view`, while a drag keeps to its own) and the ray from
+// the camera through it.
 struct CanvasPoint {
     int view;
     render::Ray ray;
@@ -125,11 +133,13 @@ bool onCanvas(float x, float y) { return std::isfinite(x) && std::isfinite(y); }
 CanvasPoint canvasPoint(const LiveView& v, float x, float y, int width, int height, int view = -1) {
     const int runs = v.session->runCount();
     int k = std::clamp(view, 0, runs - 1);
-    if (view < 0) {
-        while (k + 1 < runs && x >= float(columnOf(k + 1, runs, width).x)) ++k;
+    for (int c = 0; view < 0 && c < runs; ++c) {  // the last cell whose top-left the point is past
+        const Cell cell = cellOf(c, runs, width, height);
+        if (x >= float(cell.x) && y >= float(cell.y)) k = c;
     }
-    const Column column = columnOf(k, runs, width);
-    return {k, v.camera.rayThroughPixel(glm::vec2(x - float(column.x), y), glm::vec2(float(column.width), float(height)))};
+    const Cell cell = cellOf(k, runs, width, height);
+    return {k, v.camera.rayThroughPixel(glm::vec2(x - float(cell.x), y - float(cell.y)),
+                                        glm::vec2(float(cell.width), float(cell.height)))};
 }
 
 // Selects sphere `index` (-1: none) and explains its first latest contact.
@@ -268,7 +278,8 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_open(const char* name, const char* sett
         }
         v.session = std::move(session);
         v.simulation = std::move(simulation);
-        fitCamera(columnOf(0, v.session->runCount(), width).width, height);
+        const Cell first = cellOf(0, v.session->runCount(), width, height);
+        fitCamera(first.width, first.height);
         return answer({{"title", scenes::withCount(s.title, s)},
                        {"preset", web::presetName(name)},
                        {"sliders", scenes::slidersToMove(s)},
@@ -281,14 +292,22 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_open(const char* name, const char* sett
     }
 }
 
+// Four views side by side in `rows` rows (1 or 2), in two rows each under `labelRoom` px
+// left to its label (at most half its quarter): the page lays the labels out alike.
+EMSCRIPTEN_KEEPALIVE void spheres_set_rows(int rows, int labelRoom) {
+    live().rows = std::clamp(rows, 1, 2);
+    live().labelRoom = std::max(0, labelRoom);
+}
+
 // Advances the runs by `seconds` of real time and draws them into the canvas: the whole
-// of it, or side by side a column each, seen by the same camera.
+// of it, or side by side a cell each, seen by the same camera.
 EMSCRIPTEN_KEEPALIVE void spheres_frame(double seconds, int width, int height) {
     LiveView& v = live();
     if (!v.simulation || !v.session || !v.rendererReady) return;
     v.session->advance(seconds);
     const int runs = v.session->runCount();
-    followCanvasShape(columnOf(0, runs, width).width, height);
+    const Cell first = cellOf(0, runs, width, height);
+    followCanvasShape(first.width, first.height);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glViewport(0, 0, width, height);
     glClearColor(ui::kBackdropColor[0], ui::kBackdropColor[1], ui::kBackdropColor[2], 1.0f);
@@ -297,11 +316,11 @@ EMSCRIPTEN_KEEPALIVE void spheres_frame(double seconds, int width, int height) {
     v.session->setCatchEveryStep(v.look.selectedSphere >= 0);  // a contact in any step of a frame, as the window
     v.renderer.style.overlayOnTop = app::overlaysOnTop(v.look, v.simulation->world().size());  // as the window
     for (int k = 0; k < runs; ++k) {
-        const Column column = columnOf(k, runs, width);
+        const Cell cell = cellOf(k, runs, width, height);
         app::buildSnapshot(v.session->run(k), v.look, v.snapshots[k]);
         const physics::ContactEvent* event = explained(v);
         v.session->appendSelection(k, v.camera, v.snapshots[k], event ? app::contactPartner(*event, v.session->selected()) : -1);
-        v.renderer.draw(v.snapshots[k], v.camera, column.x, 0, column.width, height);
+        v.renderer.draw(v.snapshots[k], v.camera, cell.x, height - cell.y - cell.height, cell.width, cell.height);
     }
 }
 

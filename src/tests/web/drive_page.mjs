@@ -294,6 +294,21 @@ try {
   await until((s) => s.time_s > 0, 30000);
   const onlyA = await js("[...document.querySelectorAll('#controls label.only-a')].filter((l) => l.offsetParent).map((l) => l.dataset.name)");
   check('presented side by side, K and shock say they move view A only', JSON.stringify(onlyA) === '["passes","shock"]', JSON.stringify(onlyA));
+  // Four views on a narrow page (800 x 1000: four columns were 100 px wide) go in two rows
+  // of two, each label over its quarter; at 1280 x 720 in one row again.
+  await navigate('scene=16_bernoulli');
+  await until((s) => s.time_s > 0, 30000);
+  const rows = async (width, height) => {
+    await send('Emulation.setDeviceMetricsOverride', { width, height, deviceScaleFactor: 1, mobile: false });
+    await sleep(1500);
+    return js("(() => { const l = document.getElementById('labels'); const s = document.getElementById('stage').getBoundingClientRect(); " +
+              "return { two: l.classList.contains('two-rows'), dTop: l.children[3].getBoundingClientRect().top - s.top, half: s.height / 2 }; })()");
+  };
+  const narrow = await rows(800, 1000);
+  check('four views on a narrow page go in two rows, D\'s label in the lower half', narrow.two && narrow.dTop >= narrow.half - 4, JSON.stringify(narrow));
+  const wide = await rows(1280, 720);
+  check('and in one row on a wide one', !wide.two && wide.dTop < 4, JSON.stringify(wide));
+  await send('Emulation.clearDeviceMetricsOverride');
 } catch (error) {
   check('the page answers', false, String(error));
 }
