@@ -519,6 +519,36 @@ void scrollToTopIfAsked(PanelState& state) {
 float itemWidth() { return std::min(ImGui::GetFontSize() * 9.5f, 0.4f * ImGui::GetContentRegionAvail().x); }
 void pushItemWidth() { ImGui::PushItemWidth(itemWidth()); }
 
+// Presenting, whether a slider's label is too wide beside it (1024 px at 1.5 times the
+// type): then every label goes above its slider.
+bool labelsAboveSliders(const std::vector<const scenes::Parameter*>& sliders) {
+    float widest = 0.0f;
+    for (const scenes::Parameter* p : sliders) {
+        const std::string label = labelOf(*p);
+        widest = std::max(widest, ImGui::CalcTextSize(label.c_str(), label.c_str() + label.find("##")).x);
+    }
+    return widest + ImGui::GetStyle().ItemInnerSpacing.x > ImGui::GetContentRegionAvail().x - itemWidth();
+}
+
+// The height the presentation's sliders and `keys` take under the text: each slider, and
+// the lines parameterWidget adds under it.
+float heightUnderText(const std::vector<const scenes::Parameter*>& sliders, const PanelState& state,
+                      bool labelsAbove, const char* keys) {
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float wrap = ImGui::GetContentRegionAvail().x;
+    float below = 2.0f * style.ItemSpacing.y + ImGui::CalcTextSize(keys, nullptr, false, wrap).y + style.ItemSpacing.y;
+    for (const scenes::Parameter* p : sliders) {
+        below += ImGui::GetFrameHeightWithSpacing() + (labelsAbove ? ImGui::GetTextLineHeightWithSpacing() : 0.0f);
+        if (state.refusedName == p->name && !state.refusal.empty()) {
+            below += ImGui::CalcTextSize(state.refusal.c_str(), nullptr, false, wrap).y + style.ItemSpacing.y;
+        }
+        if (std::find(state.onlyViewA.begin(), state.onlyViewA.end(), p->name) != state.onlyViewA.end()) {
+            below += ImGui::CalcTextSize(kOnlyViewA, nullptr, false, wrap).y + style.ItemSpacing.y;
+        }
+    }
+    return below;
+}
+
 // The presentation layout: the scene's text and its claims scroll; only the sliders the text
 // names and the keys stay in sight under them (a long text pushed them off at 720 lines).
 void presentedPanel(const scenes::Scene& scene, const Readouts& readouts, PanelState& state,
@@ -529,25 +559,8 @@ void presentedPanel(const scenes::Scene& scene, const Readouts& readouts, PanelS
         if (p && p->availableIn(scene)) sliders.push_back(p);
     }
     const char* keys = "Esc: all controls  P: pause  R: restart  [ ]: preset";
-    const ImGuiStyle& style = ImGui::GetStyle();
-    const float wrap = ImGui::GetContentRegionAvail().x;
-    // A label too wide beside its slider (1024 px at 1.5 times the type): every label above.
-    float widest = 0.0f;
-    for (const scenes::Parameter* p : sliders) {
-        const std::string label = labelOf(*p);
-        widest = std::max(widest, ImGui::CalcTextSize(label.c_str(), label.c_str() + label.find("##")).x);
-    }
-    const bool labelsAbove = widest + style.ItemInnerSpacing.x > wrap - itemWidth();
-    float below = 2.0f * style.ItemSpacing.y + ImGui::CalcTextSize(keys, nullptr, false, wrap).y + style.ItemSpacing.y;
-    for (const scenes::Parameter* p : sliders) {  // each slider, and the lines parameterWidget adds under it
-        below += ImGui::GetFrameHeightWithSpacing() + (labelsAbove ? ImGui::GetTextLineHeightWithSpacing() : 0.0f);
-        if (state.refusedName == p->name && !state.refusal.empty()) {
-            below += ImGui::CalcTextSize(state.refusal.c_str(), nullptr, false, wrap).y + style.ItemSpacing.y;
-        }
-        if (std::find(state.onlyViewA.begin(), state.onlyViewA.end(), p->name) != state.onlyViewA.end()) {
-            below += ImGui::CalcTextSize(kOnlyViewA, nullptr, false, wrap).y + style.ItemSpacing.y;
-        }
-    }
+    const bool labelsAbove = labelsAboveSliders(sliders);
+    const float below = heightUnderText(sliders, state, labelsAbove, keys);
     ImGui::BeginChild("presented", ImVec2(0.0f, -below));
     scrollToTopIfAsked(state);
     sceneText(scene);

@@ -92,10 +92,6 @@ std::string apexRatioLine(const ViewReadout& view, const char* space) {
     return line;
 }
 
-}  // namespace
-
-namespace {
-
 // The properties' marks, a line each as judged ("✓ momentum  ✓ energy  ✗ symmetry").
 void appendProperties(const ViewReadout& view, std::vector<std::string>& lines) {
     for (std::size_t at = 0; at < view.properties.size();) {
