@@ -152,6 +152,7 @@ std::string settingShown(const Claim& c, const ClaimCheck& check) {
 
 // The quantity a claim measures, named as a reader of the panel needs it beside a bare
 // number: "max bounce ratio of sphere #0", "bounce loss, samples", "moving at t = 0.35 s",
+// "hash changes over t = 1.2–10 s",
 // "speed / the same with mu=0.5",
 // as the inspector names a sphere.
 std::string quantityShown(const Claim& c) {
@@ -171,12 +172,11 @@ std::string quantityShown(const Claim& c) {
             k = end;
         }
     }
-    if (c.from == c.to && c.to > 0.0) {  // an instant: "at t = 0.25 s"
-        std::ostringstream at;
-        at.precision(4);
-        at << " at t = " << c.to << " s";
-        name += at.str();
-    }
+    std::ostringstream when;  // an instant, "at t = 0.25 s", or a stretch, "over t = 1.2–10 s"
+    when.precision(4);
+    if (c.from == c.to && c.to > 0.0) when << " at t = " << c.to << " s";
+    if (c.from < c.to) when << " over t = " << c.from << "\u2013" << c.to << " s";
+    name += when.str();
     if (c.ratioTo) {
         name += c.ratioTo->empty() ? " / the same at the preset's own settings" : " / the same with";
         for (const std::string& s : *c.ratioTo) name += " " + s;

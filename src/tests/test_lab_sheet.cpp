@@ -204,7 +204,7 @@ TEST(ClaimsCommandLine, MeasuresEachClaimOfAPresetAsTheLabSheetDoes) {
     EXPECT_EQ(code, 0) << output;
     EXPECT_EQ(countOf(output, "  \u2713 \""), int(claims)) << output;
     EXPECT_EQ(countOf(output, "\u2717 \""), 0) << output;
-    EXPECT_NE(output.find("  \u2713 \"the other leaves at 1 m/s\": vx of sphere #1 = 1"), std::string::npos) << output;
+    EXPECT_NE(output.find("  \u2713 \"the other leaves at 1 m/s\": vx of sphere #1 over t = 0.9\u20131.2 s = 1"), std::string::npos) << output;
     EXPECT_NE(output.find("\"Lower \u03b2 to see the lecture's attenuation v1 \u2190 \u03b1 v1\u2225 + \u03b2 v2\u22a5\" (with beta=0.5)"),
               std::string::npos) << output;
     const std::string total = std::to_string(claims);
@@ -226,7 +226,7 @@ TEST(ClaimsCommandLine, AClaimThatFailsIsMarkedAndTheExitCodeSaysSo) {
     std::ofstream(file) << text;
     const auto [output, code] = runSpheres("claims --scene '" + file.string() + "'");
     EXPECT_EQ(code, 1) << output;
-    EXPECT_NE(output.find("  \u2717 \"the other leaves at 1 m/s\": vx of sphere #1 = 1 m/s (19 samples), expected 2"), std::string::npos) << output;
+    EXPECT_NE(output.find("  \u2717 \"the other leaves at 1 m/s\": vx of sphere #1 over t = 0.9\u20131.2 s = 1 m/s (19 samples), expected 2"), std::string::npos) << output;
     EXPECT_NE(output.find(" 1 \u2717 of "), std::string::npos) << output;
     std::filesystem::remove(file);
     const auto [missing, refused] = runSpheres("claims --scene no_such_scene");
@@ -259,10 +259,10 @@ TEST(ClaimsCommandLine, ASettingIsNamedByItsValue) {
 TEST(ClaimsCommandLine, AMeasuredValueNamesItsQuantity) {
     const auto [output, code] = runSpheres("claims --scene 03_head_on --scene 21_shock_column");
     EXPECT_EQ(code, 0) << output;
-    for (const char* line : {"\"the moving one stops dead\": vx of sphere #0 = 0 m/s (19 samples)",
+    for (const char* line : {"\"the moving one stops dead\": vx of sphere #0 over t = 0.9\u20131.2 s = 0 m/s (19 samples)",
                              "\"Two equal spheres meet head-on\": mass of spheres #0, #1 = 1 kg (2 samples)",
-                             "\"so it squashes (overlaps up to 19 % of r)\": max penetration = 19.27 % of r",
-                             "\"the contact graph's 20 levels\" (with shock=on): shock levels = 20 (",
+                             "\"so it squashes (overlaps up to 19 % of r)\": max penetration over t = 0\u201310 s = 19.27 % of r",
+                             "\"the contact graph's 20 levels\" (with shock=on): shock levels over t = 1\u201310 s = 20 (",
                              "\"Twenty stacked spheres, position based\": method = position"}) {
         EXPECT_NE(output.find(line), std::string::npos) << line << "\n" << output;
     }
