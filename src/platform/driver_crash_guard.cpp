@@ -4,6 +4,7 @@
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <iterator>
 
 #include <unistd.h>
 
@@ -16,7 +17,7 @@ constexpr int kRefusedExitCode = 2;  // as the command line's refusals
 // Written before the driver runs: the handler may only write and exit.
 char message[512];
 std::size_t messageLength = 0;
-struct sigaction previous[sizeof kSignals / sizeof kSignals[0]];
+struct sigaction previous[std::size(kSignals)];
 
 extern "C" void sayWhyAndExit(int) {
     if (write(STDERR_FILENO, message, messageLength) < 0) {
@@ -45,11 +46,11 @@ DriverCrashGuard::DriverCrashGuard(const char* starting) {
     struct sigaction action {};
     action.sa_handler = sayWhyAndExit;
     sigemptyset(&action.sa_mask);
-    for (std::size_t k = 0; k < sizeof kSignals / sizeof kSignals[0]; ++k) sigaction(kSignals[k], &action, &previous[k]);
+    for (std::size_t k = 0; k < std::size(kSignals); ++k) sigaction(kSignals[k], &action, &previous[k]);
 }
 
 DriverCrashGuard::~DriverCrashGuard() {
-    for (std::size_t k = 0; k < sizeof kSignals / sizeof kSignals[0]; ++k) sigaction(kSignals[k], &previous[k], nullptr);
+    for (std::size_t k = 0; k < std::size(kSignals); ++k) sigaction(kSignals[k], &previous[k], nullptr);
 }
 
 }  // namespace platform

@@ -57,9 +57,12 @@ bool meets(const Claim& c, double x) {
     return true;
 }
 
+// A fraction of r is shown as the texts say it, a percentage: the factor for `unit`.
+double shownScale(const std::string& unit) { return unit == " r" ? 100.0 : 1.0; }
+
 // What the claim asks, in the unit its value is shown in (a fraction of r as a percentage).
 std::string expected(const Claim& c, const std::string& unit) {
-    const double scale = unit == " r" ? 100.0 : 1.0;
+    const double scale = shownScale(unit);
     const auto number = [&](double x) { return formatNumber(scale * x); };
     std::ostringstream out;
     if (c.near) out << number(*c.near) << " +- " << number(c.within.value_or(0.0));
@@ -81,7 +84,7 @@ std::string unitOf(const Claim& c) {
 // A value (or two, "lo to hi") in the claim's unit, four digits; a fraction of r as the
 // texts say it, "19.27 % of r".
 std::string valueShown(double lo, double hi, const std::string& unit) {
-    const double scale = unit == " r" ? 100.0 : 1.0;
+    const double scale = shownScale(unit);
     std::ostringstream out;
     out.precision(4);
     out << scale * lo;
@@ -150,28 +153,31 @@ std::string settingShown(const Claim& c, const ClaimCheck& check) {
     return text;
 }
 
+// " of spheres #0, #1, #5–#9", as the inspector names a sphere; "" for the meter's own.
+std::string spheresShown(const std::vector<int>& spheres) {
+    if (spheres.empty()) return "";
+    std::string text = spheres.size() == 1 ? " of sphere " : " of spheres ";
+    for (std::size_t k = 0; k < spheres.size();) {  // runs of numbers as "#1–#15"
+        std::size_t end = k + 1;
+        while (end < spheres.size() && spheres[end] == spheres[end - 1] + 1) ++end;
+        text += (k ? ", #" : "#") + std::to_string(spheres[k]);
+        if (end - k > 2) text += "\u2013#" + std::to_string(spheres[end - 1]);
+        else if (end - k == 2) text += ", #" + std::to_string(spheres[end - 1]);
+        k = end;
+    }
+    return text;
+}
+
 // The quantity a claim measures, named as a reader of the panel needs it beside a bare
 // number: "max bounce ratio of sphere #0", "bounce loss, samples", "moving at t = 0.35 s",
-// "hash changes over t = 1.2–10 s",
-// "speed / the same with mu=0.5",
-// as the inspector names a sphere.
+// "hash changes over t = 1.2–10 s", "speed / the same with mu=0.5".
 std::string quantityShown(const Claim& c) {
     std::string name = c.measure;
     std::replace(name.begin(), name.end(), '_', ' ');
     if (c.nth > 0) name = "sample " + std::to_string(c.nth) + " of " + name;
     else if (c.take == "count") name += ", samples";
     else if (c.take != "each") name = c.take + " " + name;
-    if (!c.spheres.empty()) {
-        name += c.spheres.size() == 1 ? " of sphere " : " of spheres ";
-        for (std::size_t k = 0; k < c.spheres.size();) {  // runs of numbers as "#1–#15"
-            std::size_t end = k + 1;
-            while (end < c.spheres.size() && c.spheres[end] == c.spheres[end - 1] + 1) ++end;
-            name += (k ? ", #" : "#") + std::to_string(c.spheres[k]);
-            if (end - k > 2) name += "\u2013#" + std::to_string(c.spheres[end - 1]);
-            else if (end - k == 2) name += ", #" + std::to_string(c.spheres[end - 1]);
-            k = end;
-        }
-    }
+    name += spheresShown(c.spheres);
     std::ostringstream when;  // an instant, "at t = 0.25 s", or a stretch, "over t = 1.2–10 s"
     when.precision(4);
     if (c.from == c.to && c.to > 0.0) when << " at t = " << c.to << " s";
@@ -191,18 +197,19 @@ void judge(ClaimCheck& check, const std::vector<double>* ratioSamples) {
         const std::optional<double> below = taken(c, *ratioSamples);
         check.value = below ? std::optional<double>(*check.value / *below) : std::nullopt;
     }
+    const std::string unit = ratioSamples ? std::string() : unitOf(c);  // a ratio has none
     std::ostringstream out;
     out.precision(4);
     if (c.take == "each" && c.nth == 0 && !ratioSamples) {
         check.holds = !check.samples.empty() &&
                       std::all_of(check.samples.begin(), check.samples.end(), [&](double x) { return meets(c, x); });
-        out << (check.samples.empty() ? std::string("nothing measured") : range(check.samples, unitOf(c)));
+        out << (check.samples.empty() ? std::string("nothing measured") : range(check.samples, unit));
     } else {
         check.holds = check.value && meets(c, *check.value);
-        if (check.value) out << valueShown(*check.value, *check.value, ratioSamples ? std::string() : unitOf(c));
+        if (check.value) out << valueShown(*check.value, *check.value, unit);
         else out << "nothing measured";
     }
-    if (!check.holds) out << ", expected " << expected(c, ratioSamples ? std::string() : unitOf(c));
+    if (!check.holds) out << ", expected " << expected(c, unit);
     check.measured = c.measure == "setting" ? settingShown(c, check) : quantityShown(c) + " = " + out.str();
 }
 
