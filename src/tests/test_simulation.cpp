@@ -1,12 +1,14 @@
 // The app's fixed-step clock: accumulator, clamp, wall-time budget.
 #include <gtest/gtest.h>
 
+#include <string>
 #include <vector>
 
 #include "app/run/simulation.h"
 #include "scenes/claims.h"
 #include "scenes/presets.h"
 #include "scenes/scene_json.h"
+#include "ui/control_panel.h"
 
 namespace {
 
@@ -64,6 +66,23 @@ TEST(Simulation, TheBehindNoteHoldsForASecondAfterTheLastDroppedTime) {
     sim.paused = true;  // nothing is behind while paused
     sim.advance(h);
     EXPECT_FALSE(sim.behindRealTime());
+}
+
+// "Lower the time scale or N" was the note's advice whatever took the frame; with three
+// views on a software GL the drawing takes it, and neither would help. The note names the
+// part that took most of the last frame, and its tooltip the remedy for that part.
+TEST(Simulation, TheBehindNoteNamesWhatTookTheFrame) {
+    ui::FrameTimes drawing;
+    drawing.fps = 10.0;  // 100 ms frames
+    drawing.steppingMs = 20.0;
+    EXPECT_EQ(ui::behindRealTimeLine(drawing), "slow motion: drawing takes 80 of 100 ms a frame");
+    EXPECT_NE(std::string(ui::behindRealTimeRemedy(drawing)).find("Fewer views"), std::string::npos);
+    ui::FrameTimes stepping;
+    stepping.fps = 20.0;  // 50 ms frames
+    stepping.steppingMs = 33.0;
+    EXPECT_EQ(ui::behindRealTimeLine(stepping), "slow motion: the steps take 33 of 50 ms a frame");
+    EXPECT_NE(std::string(ui::behindRealTimeRemedy(stepping)).find("lower time scale"), std::string::npos);
+    EXPECT_EQ(ui::behindRealTimeLine(ui::FrameTimes{}), "behind real time");  // a capture keeps no times
 }
 
 // The panel's "the text, measured": the claims of the text whose settings the run has are

@@ -182,6 +182,12 @@ void measuredRestitution(const Readouts& r) {
             "Measured for scenes of up to 10 spheres, or the selected sphere.");
 }
 
+// Whether the steps, not the rest of the frame, took most of the last frame.
+bool stepsTookTheFrame(const FrameTimes& timing) {
+    const double frameMs = 1000.0 / timing.fps;
+    return timing.steppingMs >= frameMs - timing.steppingMs;
+}
+
 void runSection(double& timeScale, const Readouts& r, PanelActions& actions) {
     if (ImGui::Button(r.paused ? "Run (P)" : "Pause (P)")) actions.togglePause = true;
     ImGui::SameLine();
@@ -196,7 +202,8 @@ void runSection(double& timeScale, const Readouts& r, PanelActions& actions) {
     // A line of its own whatever it says: a warning that came and went moved every slider
     // under it by a line, under the pointer.
     if (r.behindRealTime) {
-        ImGui::TextColored({1.0f, 0.55f, 0.2f, 1.0f}, "behind real time: lower the time scale or N");
+        ImGui::TextColored({1.0f, 0.55f, 0.2f, 1.0f}, "%s", behindRealTimeLine(r.timing).c_str());
+        tooltip(behindRealTimeRemedy(r.timing));
     } else if (r.paused) {
         ImGui::TextDisabled("paused");
     } else if (r.timing.fps > 0.0) {
@@ -574,6 +581,28 @@ void presentedPanel(const scenes::Scene& scene, const Readouts& readouts, PanelS
 }
 
 }  // namespace
+
+std::string behindRealTimeLine(const FrameTimes& timing) {
+    if (!(timing.fps > 0.0)) return "behind real time";
+    const double frameMs = 1000.0 / timing.fps;
+    const bool steps = stepsTookTheFrame(timing);
+    const double partMs = steps ? timing.steppingMs : std::max(0.0, frameMs - timing.steppingMs);
+    char line[96];
+    std::snprintf(line, sizeof line, "slow motion: %s %.0f of %.0f ms a frame", steps ? "the steps take" : "drawing takes",
+                  partMs, frameMs);
+    return line;
+}
+
+const char* behindRealTimeRemedy(const FrameTimes& timing) {
+    if (timing.fps > 0.0 && !stepsTookTheFrame(timing)) {
+        return "The run is behind real time because drawing (the views, the panel, the swap) takes most of "
+               "each frame, and the steps get what is left of 1/30 s. Fewer views side by side, a smaller "
+               "window or fewer spheres keep up.";
+    }
+    return "The run is behind real time because its steps take most of each frame (at most 1/30 s a "
+           "frame is spent stepping). A lower time scale, fewer spheres, fewer substeps or passes K, or "
+           "a larger h keep up.";
+}
 
 float panelWidth(const PanelState& state, float displayWidth) {
     if (!state.visible) return 0.0f;

@@ -101,6 +101,13 @@ struct FrameTimes {
     std::size_t antialiasedUpTo = 0;
 };
 
+// The run section's line while the run falls behind real time: what took the frame, the
+// steps or everything else (drawing, the panel, the swap), since the remedy differs:
+// "slow motion: the drawing takes 80 of 95 ms a frame". Empty when fps is 0 (a capture).
+std::string behindRealTimeLine(const FrameTimes& timing);
+// The tooltip under it: the remedy for that cause.
+const char* behindRealTimeRemedy(const FrameTimes& timing);
+
 // What the app shows in the readouts; plain numbers, filled each frame.
 struct Readouts {
     FrameTimes timing;
