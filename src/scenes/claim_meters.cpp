@@ -63,6 +63,13 @@ double planeDepth(const World& world, std::size_t i) {
 
 using WorldReadout = std::function<double(const World&)>;
 
+// The highest centre's z (m); -inf for an empty world.
+double highestCentre(const World& world) {
+    double top = -INFINITY;
+    for (const glm::dvec3& p : world.position) top = std::max(top, p.z);
+    return top;
+}
+
 class WorldMeter : public detail::Meter {
   public:
     WorldMeter(const Claim& claim, const Scene& variant, WorldReadout readout)
@@ -191,6 +198,22 @@ class KineticRatioMeter : public detail::Meter {
     Stretch stretch_;
     const physics::Params& params_;
     std::optional<double> start_;
+};
+
+// How far the highest centre is below the highest centre at t = 0 (m): "its top sinks 4.9
+// cm" measured as a drop, not as two heights the reader subtracts.
+class TopDropMeter : public detail::Meter {
+  public:
+    TopDropMeter(const Claim& claim, const Scene& variant) : stretch_(stretchOf(claim, variant)) {}
+    void observe(const World& world) override {
+        const double top = highestCentre(world);
+        if (!start_) start_ = top;
+        if (stretch_.contains(world.time)) samples_.push_back(*start_ - top);
+    }
+
+  private:
+    Stretch stretch_;
+    std::optional<double> start_;  // m
 };
 
 // --- event meters: one sample per apex or impact of each watched sphere ---
@@ -447,12 +470,8 @@ const std::vector<MeterEntry>& meterTable() {
              for (const glm::dvec3& v : w.velocity) sum += glm::length(v);
              return w.size() ? sum / static_cast<double>(w.size()) : 0.0;
          })},
-        {{"top", "m", "the highest centre's z"},
-         world([](const World& w, const Scene&) {
-             double top = -INFINITY;
-             for (const glm::dvec3& p : w.position) top = std::max(top, p.z);
-             return top;
-         })},
+        {{"top", "m", "the highest centre's z"}, world([](const World& w, const Scene&) { return highestCentre(w); })},
+        {{"top_drop", "m", "how far the highest centre is below the highest centre at t = 0"}, make<TopDropMeter>()},
         {{"sphere_count", "", "how many spheres the world holds"},
          world([](const World& w, const Scene&) { return static_cast<double>(w.size()); })},
         {{"outside_box", "", "spheres whose centre is outside the box (the escape alarm)"},

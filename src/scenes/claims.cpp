@@ -168,16 +168,24 @@ std::string spheresShown(const std::vector<int>& spheres) {
     return text;
 }
 
+// " to the floor", " of plane 6": which plane a plane meter reads ("" for other meters).
+std::string planeShown(const Claim& c) {
+    const bool to = c.measure == "plane_distance" || c.measure == "gap";
+    if (!to && c.measure.rfind("plane_", 0) != 0) return "";
+    const std::string plane = c.plane == 0 ? "the floor" : "plane " + std::to_string(c.plane);
+    return (to ? " to " : " of ") + plane;
+}
+
 // The quantity a claim measures, named as a reader of the panel needs it beside a bare
 // number: "max bounce ratio of sphere #0", "bounce loss, samples", "moving at t = 0.35 s",
 // "hash changes over t = 1.2–10 s", "speed / the same with mu=0.5".
 std::string quantityShown(const Claim& c) {
-    std::string name = c.measure;
+    std::string name = planeShown(c).empty() ? c.measure : c.measure.substr(c.measure.rfind("plane_", 0) == 0 ? 6 : 0);
     std::replace(name.begin(), name.end(), '_', ' ');
     if (c.nth > 0) name = "sample " + std::to_string(c.nth) + " of " + name;
     else if (c.take == "count") name += ", samples";
     else if (c.take != "each") name = c.take + " " + name;
-    name += spheresShown(c.spheres);
+    name += spheresShown(c.spheres) + planeShown(c);
     std::ostringstream when;  // an instant, "at t = 0.25 s", or a stretch, "over t = 1.2–10 s"
     when.precision(4);
     if (c.from == c.to && c.to > 0.0) when << " at t = " << c.to << " s";

@@ -257,9 +257,12 @@ TEST(ClaimsCommandLine, ASettingIsNamedByItsValue) {
 // A bare number means nothing beside a quote: the panel's line names what was measured, how
 // it was taken from the samples and of which sphere, as the inspector names it.
 TEST(ClaimsCommandLine, AMeasuredValueNamesItsQuantity) {
-    const auto [output, code] = runSpheres("claims --scene 03_head_on --scene 21_shock_column");
+    const auto [output, code] = runSpheres("claims --scene 03_head_on --scene 21_shock_column --scene 13_tunnelling");
     EXPECT_EQ(code, 0) << output;
-    for (const char* line : {"\"the moving one stops dead\": vx of sphere #0 over t = 0.9\u20131.2 s = 0 m/s (19 samples)",
+    for (const char* line : {"\"its top sinks 4.9 cm, about one radius\": last top drop at t = 10 s = 0.04872 m",
+                             "\"so its centre jumps past the middle of the wall\": distance to plane 6 at t = 0.15 s = -0.05 m",
+                             "\"a 2 cm wall\": thickness of plane 6 = 0.02 m",
+                             "\"the moving one stops dead\": vx of sphere #0 over t = 0.9\u20131.2 s = 0 m/s (19 samples)",
                              "\"Two equal spheres meet head-on\": mass of spheres #0, #1 = 1 kg (2 samples)",
                              "\"so it squashes (overlaps up to 19 % of r)\": max penetration over t = 0\u201310 s = 19.27 % of r",
                              "\"the contact graph's 20 levels\" (with shock=on): shock levels over t = 1\u201310 s = 20 (",
