@@ -181,6 +181,7 @@ std::string planeShown(const Claim& c) {
 // "hash changes over t = 1.2–10 s", "speed / the same with mu=0.5".
 std::string quantityShown(const Claim& c) {
     std::string name = planeShown(c).empty() ? c.measure : c.measure.substr(c.measure.rfind("plane_", 0) == 0 ? 6 : 0);
+    if (name == "hash_changes") name = "steps that changed the state";  // the hash is the panel's, not a student's word
     std::replace(name.begin(), name.end(), '_', ' ');
     if (c.nth > 0) name = "sample " + std::to_string(c.nth) + " of " + name;
     else if (c.take == "count") name += ", samples";
