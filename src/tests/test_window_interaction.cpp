@@ -91,6 +91,22 @@ TEST(WindowInteraction, SelectOpensTheInspectorAndTheExplainer) {
     EXPECT_GT(fraction(load(selected), kSceneX0, 40, kDockX0 - 10, 720, ring), 0.0005);
 }
 
+// Presenting four views with a contact explained, the explanation docked beside the panel
+// left the views 170 px wide at 1280x720. The explanation now takes the panel's place
+// while it is open: view A's sky where the panel's text was, and the four views each
+// wider than a quarter of the window less a margin.
+TEST(WindowInteraction, PresentingAnExplanationTakesThePanelsPlace) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run not found";
+    const std::string path = screenshot("window_present_explained", "--scene 16_bernoulli --paused --frames 10 --present "
+                                                                    "--select 1 --explain --width 1280 --height 720");
+    ASSERT_FALSE(path.empty());
+    const render::Image image = load(path);
+    const auto sky = [](glm::u8vec4 p) { return !notSky(p); };
+    EXPECT_GT(fraction(image, 20, 250, 290, 380, sky), 0.8) << "view A, left where the panel was";
+    EXPECT_GT(fraction(image, 980, 250, 1260, 380, sky), 0.8) << "view D";
+    EXPECT_GT(fraction(image, 20, 480, 1260, 700, notSky), 0.8) << "the explanation, the window's width";
+}
+
 bool haveXdotool() { return std::system("command -v xdotool >/dev/null 2>&1") == 0; }
 
 // Writes `script` (sh) into a fresh `folder` and runs it under Xvfb there (90 s at

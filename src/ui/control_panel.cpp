@@ -605,14 +605,14 @@ const char* behindRealTimeRemedy(const FrameTimes& timing) {
 }
 
 float panelWidth(const PanelState& state, float displayWidth) {
-    if (!state.visible) return 0.0f;
+    if (!state.visible || state.yieldsToExplainer) return 0.0f;
     return std::min(ImGui::GetFontSize() * 25.0f, displayWidth * 0.45f);
 }
 
 PanelActions drawControlPanel(const scenes::Scene& scene, double& timeScale, const Readouts& readouts,
                               PanelState& state, const std::vector<std::string>& presetNames) {
     PanelActions actions;
-    if (!state.visible) {
+    if (!state.visible || state.yieldsToExplainer) {
         state.pendingName.clear();  // hidden while a restart slider was held: its drag is over
         return actions;
     }

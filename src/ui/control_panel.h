@@ -46,6 +46,9 @@ struct PanelState {
     // The presentation layout (F5, --present): large type, only the scene's title, text
     // and the sliders it names, and the view; everything else one key away.
     bool present = false;
+    // Presenting with a contact explained: the explanation takes the panel's place, so that
+    // the views keep their size on a projector (set by the window each frame).
+    bool yieldsToExplainer = false;
     bool readoutsOpen = false;  // the readouts unfolded (numbers and plots); folded: one line
     float uiScale = 1.0f;      // multiplies the font size
     int colorBy = 2;           // render::ColorBy: 0 id, 1 speed, 2 contact state

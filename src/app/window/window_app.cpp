@@ -510,6 +510,7 @@ void WindowApp::frame(double dt) {
     showSceneTitle();
     input_.expireMessage(window_->time());
     handleMouse();
+    panel_.yieldsToExplainer = panel_.present && session_.selected() >= 0 && input_.tools().explainer;
     session_.setCatchEveryStep(input_.tools().explainer);
     profile_.lap(FrameProfile::Events);
     const auto stepping = std::chrono::steady_clock::now();
