@@ -454,13 +454,13 @@ const std::vector<MeterEntry>& meterTable() {
         {{"kinetic_energy_ratio", "", "the kinetic energy / its value at t = 0"}, make<KineticRatioMeter>()},
         {{"potential_energy", "J", "the potential energy readout"}, readout(&D::potential)},
         {{"penetration", "r", "the penetration readout: deepest overlap / smaller radius"}, readout(&D::maxPenetration)},
-        {{"modified_energy_change", "", "|E~ - E~ at the stretch's start| / |E~ at its start|"},
+        {{"modified_energy_change", "of |E~| at the stretch's start", "|E~ - E~ at the stretch's start| / |E~ at its start|"},
          make<ChangeMeter>(true, +[](const World& w, const physics::Params& p) {
              return glm::dvec3(physics::modifiedEnergy(w, p), 0.0, 0.0);
          })},
         {{"momentum", "kg m/s", "|P|, the length of the momentum readout"},
          world([](const World& w, const Scene& s) { return glm::length(physics::measure(w, s.params).momentum); })},
-        {{"momentum_change", "", "|P - P at t = 0| / |P at t = 0|, the momentum readout"},
+        {{"momentum_change", "of |P| at t = 0", "|P - P at t = 0| / |P at t = 0|, the momentum readout"},
          make<ChangeMeter>(false, +[](const World& w, const physics::Params& p) {
              return physics::measure(w, p).momentum;
          })},
@@ -539,7 +539,7 @@ const std::vector<MeterEntry>& meterTable() {
                  return count;
              });
          }},
-        {{"contact_state", "", "a sphere's state in the last step: 0 free, 1 bounced (orange), 2 static (green)"},
+        {{"contact_state", "(0 free, 1 bounced, 2 static)", "a sphere's state in the last step: 0 free, 1 bounced (orange), 2 static (green)"},
          sphere([](const World& w, std::size_t i) {
              switch (w.contactState[i]) {
                  case physics::ContactState::Colliding: return 1.0;

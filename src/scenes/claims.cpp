@@ -60,15 +60,17 @@ bool meets(const Claim& c, double x) {
 // A fraction of r is shown as the texts say it, a percentage: the factor for `unit`.
 double shownScale(const std::string& unit) { return unit == " r" ? 100.0 : 1.0; }
 
-// What the claim asks, in the unit its value is shown in (a fraction of r as a percentage).
-std::string expected(const Claim& c, const std::string& unit) {
+// What the claim asks, in the unit its value is shown in (a fraction of r as a percentage),
+// six digits: "0.2616 ± 0.001 m/s", "≥ 0.1", "≤ 1e-07 % of r". Without the unit after a
+// value that has it: "= 0 % of r (≤ 1e-07)".
+std::string expected(const Claim& c, const std::string& unit, bool withUnit) {
     const double scale = shownScale(unit);
-    const auto number = [&](double x) { return formatNumber(scale * x); };
     std::ostringstream out;
-    if (c.near) out << number(*c.near) << " +- " << number(c.within.value_or(0.0));
-    if (c.min) out << (c.near ? ", " : "") << ">= " << number(*c.min);
-    if (c.max) out << (c.near || c.min ? ", " : "") << "<= " << number(*c.max);
-    if (unit == " r") out << " % of r";
+    out.precision(6);
+    if (c.near) out << scale * *c.near << " \u00b1 " << scale * c.within.value_or(0.0);
+    if (c.min) out << (c.near ? ", " : "") << "\u2265 " << scale * *c.min;
+    if (c.max) out << (c.near || c.min ? ", " : "") << "\u2264 " << scale * *c.max;
+    if (withUnit) out << (unit == " r" ? std::string(" % of r") : unit);
     return out.str();
 }
 
@@ -153,10 +155,11 @@ std::string settingShown(const Claim& c, const ClaimCheck& check) {
     return text;
 }
 
-// " of spheres #0, #1, #5–#9", as the inspector names a sphere; "" for the meter's own.
-std::string spheresShown(const std::vector<int>& spheres) {
+// " of spheres #0, #1, #5–#9" (or " among #1–#15", for a count of them), as the inspector
+// names a sphere; "" for the meter's own.
+std::string spheresShown(const std::vector<int>& spheres, bool among) {
     if (spheres.empty()) return "";
-    std::string text = spheres.size() == 1 ? " of sphere " : " of spheres ";
+    std::string text = among ? " among " : spheres.size() == 1 ? " of sphere " : " of spheres ";
     for (std::size_t k = 0; k < spheres.size();) {  // runs of numbers as "#1–#15"
         std::size_t end = k + 1;
         while (end < spheres.size() && spheres[end] == spheres[end - 1] + 1) ++end;
@@ -176,17 +179,33 @@ std::string planeShown(const Claim& c) {
     return (to ? " to " : " of ") + plane;
 }
 
+// The meter's name in words: "wall_contact_at" as "time of the first wall contact",
+// "plane_tilt" as "tilt" (planeShown names the plane), else its name without underscores.
+std::string meterShown(const Claim& c) {
+    static const std::pair<const char*, const char*> kWords[] = {
+        {"hash_changes", "steps that changed the state"},  // the hash is the panel's word, not a student's
+        {"wall_contact_at", "time of the first wall contact"},
+        {"left_box_at", "time the centre first left the box"},
+        {"impact_end", "time each impact ended"},
+        {"moving", "spheres moving faster than 1 cm/s"},
+    };
+    for (const auto& [measure, words] : kWords) {
+        if (c.measure == measure) return words;
+    }
+    std::string name = planeShown(c).empty() ? c.measure : c.measure.substr(c.measure.rfind("plane_", 0) == 0 ? 6 : 0);
+    std::replace(name.begin(), name.end(), '_', ' ');
+    return name;
+}
+
 // The quantity a claim measures, named as a reader of the panel needs it beside a bare
 // number: "max bounce ratio of sphere #0", "bounce loss, samples", "moving at t = 0.35 s",
 // "hash changes over t = 1.2–10 s", "speed / the same with mu=0.5".
 std::string quantityShown(const Claim& c) {
-    std::string name = planeShown(c).empty() ? c.measure : c.measure.substr(c.measure.rfind("plane_", 0) == 0 ? 6 : 0);
-    if (name == "hash_changes") name = "steps that changed the state";  // the hash is the panel's, not a student's word
-    std::replace(name.begin(), name.end(), '_', ' ');
+    std::string name = meterShown(c);
     if (c.nth > 0) name = "sample " + std::to_string(c.nth) + " of " + name;
     else if (c.take == "count") name += ", samples";
     else if (c.take != "each") name = c.take + " " + name;
-    name += spheresShown(c.spheres) + planeShown(c);
+    name += spheresShown(c.spheres, c.measure == "moving") + planeShown(c);
     std::ostringstream when;  // an instant, "at t = 0.25 s", or a stretch, "over t = 1.2–10 s"
     when.precision(4);
     if (c.from == c.to && c.to > 0.0) when << " at t = " << c.to << " s";
@@ -218,7 +237,8 @@ void judge(ClaimCheck& check, const std::vector<double>* ratioSamples) {
         if (check.value) out << valueShown(*check.value, *check.value, unit);
         else out << "nothing measured";
     }
-    if (!check.holds) out << ", expected " << expected(c, unit);
+    if (!check.holds) out << ", expected " << expected(c, unit, true);
+    else if (!c.near) out << " (" << expected(c, unit, false) << ")";  // a bound: what was checked
     check.measured = c.measure == "setting" ? settingShown(c, check) : quantityShown(c) + " = " + out.str();
 }
 

@@ -257,9 +257,14 @@ TEST(ClaimsCommandLine, ASettingIsNamedByItsValue) {
 // A bare number means nothing beside a quote: the panel's line names what was measured, how
 // it was taken from the samples and of which sphere, as the inspector names it.
 TEST(ClaimsCommandLine, AMeasuredValueNamesItsQuantity) {
-    const auto [output, code] = runSpheres("claims --scene 03_head_on --scene 21_shock_column --scene 13_tunnelling");
+    const auto [output, code] =
+        runSpheres("claims --scene 03_head_on --scene 21_shock_column --scene 13_tunnelling --scene 05_billiard --scene 14_three_answers");
     EXPECT_EQ(code, 0) << output;
-    for (const char* line : {"\"its top sinks 4.9 cm, about one radius\": last top drop at t = 10 s = 0.04872 m",
+    for (const char* line : {"\"its momentum spreads to all 15\": spheres moving faster than 1 cm/s among #1\u2013#15 at t = 0.35 s = 15",
+                             "momentum change at t = 0.25 s = 0.1 of |P| at t = 0",
+                             "\"A and B never rest either\": max speed over t = 50\u201360 s = 0.2616 m/s (\u2265 0.1)",
+                             "\"B at every landing\" (with method=reflection): max contact state over t = 50\u201360 s = 1 (0 free, 1 bounced, 2 static)",
+                             "\"its top sinks 4.9 cm, about one radius\": last top drop at t = 10 s = 0.04872 m",
                              "\"so its centre jumps past the middle of the wall\": distance to plane 6 at t = 0.15 s = -0.05 m",
                              "\"a 2 cm wall\": thickness of plane 6 = 0.02 m",
                              "\"the moving one stops dead\": vx of sphere #0 over t = 0.9\u20131.2 s = 0 m/s (19 samples)",
