@@ -171,11 +171,15 @@ std::string spheresShown(const std::vector<int>& spheres, bool among) {
     return text;
 }
 
-// " to the floor", " of plane 6": which plane a plane meter reads ("" for other meters).
+// " to the floor", " of plane 0": which plane a plane meter reads, named as the explainer
+// names it (the box's walls by their place, the scene's own planes from 0); "" for other
+// meters.
 std::string planeShown(const Claim& c) {
     const bool to = c.measure == "plane_distance" || c.measure == "gap";
     if (!to && c.measure.rfind("plane_", 0) != 0) return "";
-    const std::string plane = c.plane == 0 ? "the floor" : "plane " + std::to_string(c.plane);
+    static const char* const kBox[] = {"the floor", "the ceiling", "wall \u2212x", "wall +x", "wall \u2212y", "wall +y"};
+    const std::string plane = c.plane < c.boxPlanes && c.plane < 6 ? kBox[c.plane]
+                                                                   : "plane " + std::to_string(c.plane - c.boxPlanes);
     return (to ? " to " : " of ") + plane;
 }
 
@@ -310,6 +314,7 @@ void stampClaimVariants(Scene& scene) {
         variant.claims.clear();
         applyAll(variant, claim.settings);
         claim.variant = tableValues(variant);
+        claim.boxPlanes = variant.box ? static_cast<int>(boxPlanes(*variant.box).size()) : 0;
     }
 }
 

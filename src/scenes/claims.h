@@ -66,6 +66,9 @@ struct Claim {
     // The parameters (tableValues) of the preset with `settings`, stamped when the
     // preset is loaded: a run whose parameters are these is the claim's run.
     std::vector<double> variant;
+    // How many of the world's planes the box makes (stamped with the variant): `plane`
+    // counts them, the lines name the others as the explainer does, "plane 0" and up.
+    int boxPlanes = 0;
 };
 
 // A meter: a readout the demo has, sampled at every step of a claim's stretch
