@@ -102,6 +102,14 @@ TEST(WindowSettings, ValuesOutOfRangeAreNamedAndNotTaken) {
     const app::WindowSettings read = app::readWindowSettings(path, warning);
     EXPECT_EQ(warning, path.string() + ": ui_scale 9, color_by 7, show_box \"yes\" out of range; the default instead");
     EXPECT_TRUE(read == app::WindowSettings({0.0f, 2, true, false}));  // the one good value is taken
+    // A value nested 300 000 deep overflowed the stack while the warning was written.
+    const std::string deep = "{\"ui_scale\": " + std::string(300000, '[') + std::string(300000, ']') + "}";
+    std::string deepWarning;
+    app::readWindowSettings(freshFile("deep.json", deep.c_str()), deepWarning);
+    EXPECT_NE(deepWarning.find("ui_scale an array out of range"), std::string::npos) << deepWarning.substr(0, 200);
+    std::string longWarning;
+    app::readWindowSettings(freshFile("long.json", ("{\"ui_scale\": \"" + std::string(100000, 'x') + "\"}").c_str()), longWarning);
+    EXPECT_LT(longWarning.size(), 200u);
     for (const char* bad : {R"({"color_by": -1})", R"({"color_by": 1.5})", R"({"color_by": 4294967297})",
                             R"({"ui_scale": 0.5})", R"({"ui_scale": null})"}) {
         std::string said;

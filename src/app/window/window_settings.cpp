@@ -18,6 +18,16 @@ namespace fs = std::filesystem;
 
 constexpr int kColorings = 3;  // render::ColorBy's values
 
+// A value as the warning names it: a number, true, "a string" (cut at 40 characters), or
+// "an array" / "an object" (a file's nesting may be deep enough to overflow a dump).
+std::string shown(const Json& value) {
+    if (value.is_array()) return "an array";
+    if (value.is_object()) return "an object";
+    std::string text = value.dump();
+    if (text.size() > 40) text = text.substr(0, 37) + "...";
+    return text;
+}
+
 // The field's value where it is `kind` and `accept`s it; else its name and value go into
 // `wrong`, and `value` keeps its default.
 template <class T, class Accept>
@@ -29,7 +39,7 @@ void take(const Json& json, const char* field, Json::value_t kind, T& value, con
         value = given.get<T>();
         return;
     }
-    wrong += std::string(wrong.empty() ? "" : ", ") + field + " " + given.dump();
+    wrong += std::string(wrong.empty() ? "" : ", ") + field + " " + shown(given);
 }
 
 }  // namespace
