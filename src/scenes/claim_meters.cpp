@@ -74,7 +74,7 @@ class WorldMeter : public detail::Meter {
   public:
     WorldMeter(const Claim& claim, const Scene& variant, WorldReadout readout)
         : stretch_(stretchOf(claim, variant)), readout_(std::move(readout)) {}
-    void observe(const World& world) override {
+    void measure(const World& world) override {
         if (stretch_.contains(world.time)) samples_.push_back(readout_(world));
     }
 
@@ -89,7 +89,7 @@ class SphereMeter : public detail::Meter {
   public:
     SphereMeter(const Claim& claim, const Scene& variant, SphereReadout readout)
         : claim_(claim), stretch_(stretchOf(claim, variant)), readout_(std::move(readout)) {}
-    void observe(const World& world) override {
+    void measure(const World& world) override {
         if (!stretch_.contains(world.time)) return;
         for (std::size_t i : watched(claim_, world)) samples_.push_back(readout_(world, i));
     }
@@ -105,7 +105,7 @@ class DisplacementMeter : public detail::Meter {
   public:
     DisplacementMeter(const Claim& claim, const Scene& variant)
         : claim_(claim), stretch_(stretchOf(claim, variant)) {}
-    void observe(const World& world) override {
+    void measure(const World& world) override {
         if (!stretch_.contains(world.time)) return;
         if (start_.empty()) start_ = world.position;
         for (std::size_t i : watched(claim_, world)) {
@@ -125,7 +125,7 @@ class StepMeter : public detail::Meter {
   public:
     StepMeter(const Claim& claim, const Scene& variant, bool upOnly)
         : claim_(claim), stretch_(stretchOf(claim, variant)), upOnly_(upOnly) {}
-    void observe(const World& world) override {
+    void measure(const World& world) override {
         if (stretch_.contains(world.time) && !previous_.empty()) {
             for (std::size_t i : watched(claim_, world)) {
                 if (i >= previous_.size()) continue;
@@ -148,7 +148,7 @@ class HashChangesMeter : public detail::Meter {
   public:
     HashChangesMeter(const Claim& claim, const Scene& variant)
         : stretch_(stretchOf(claim, variant)) {}
-    void observe(const World& world) override {
+    void measure(const World& world) override {
         const std::uint64_t hash = physics::stateHash(world);
         if (stretch_.contains(world.time)) {
             if (samples_.empty()) samples_.push_back(0.0);
@@ -168,7 +168,7 @@ class ChangeMeter : public detail::Meter {
     using Readout = glm::dvec3 (*)(const World&, const physics::Params&);
     ChangeMeter(const Claim& claim, const Scene& variant, bool fromStretch, Readout readout)
         : stretch_(stretchOf(claim, variant)), params_(variant.params), fromStretch_(fromStretch), readout_(readout) {}
-    void observe(const World& world) override {
+    void measure(const World& world) override {
         const glm::dvec3 now = readout_(world, params_);
         const bool in = stretch_.contains(world.time);
         if (!reference_ || (fromStretch_ && in && samples_.empty())) reference_ = now;
@@ -188,7 +188,7 @@ class KineticRatioMeter : public detail::Meter {
   public:
     KineticRatioMeter(const Claim& claim, const Scene& variant)
         : stretch_(stretchOf(claim, variant)), params_(variant.params) {}
-    void observe(const World& world) override {
+    void measure(const World& world) override {
         const double kinetic = physics::measure(world, params_).kinetic;
         if (!start_) start_ = kinetic;
         if (stretch_.contains(world.time)) samples_.push_back(kinetic / *start_);
@@ -205,7 +205,7 @@ class KineticRatioMeter : public detail::Meter {
 class TopDropMeter : public detail::Meter {
   public:
     TopDropMeter(const Claim& claim, const Scene& variant) : stretch_(stretchOf(claim, variant)) {}
-    void observe(const World& world) override {
+    void measure(const World& world) override {
         const double top = highestCentre(world);
         if (!start_) start_ = top;
         if (stretch_.contains(world.time)) samples_.push_back(*start_ - top);
@@ -227,7 +227,7 @@ class ApexMeter : public detail::Meter {
     enum class Sample { Apex, Ratio, EnergyRatio };
     ApexMeter(const Claim& claim, const Scene& variant, Sample sample)
         : claim_(claim), stretch_(stretchOf(claim, variant)), params_(variant.params), sample_(sample) {}
-    void observe(const World& world) override {
+    void measure(const World& world) override {
         if (last_.empty()) {
             for (std::size_t i = 0; i < world.size(); ++i) {
                 last_.push_back({world.position[i].z, world.velocity[i].z, apexOf(world, i, world.position[i].z)});
@@ -274,7 +274,7 @@ class ImpactDepthMeter : public detail::Meter {
   public:
     ImpactDepthMeter(const Claim& claim, const Scene& variant, bool time)
         : claim_(claim), stretch_(stretchOf(claim, variant)), time_(time) {}
-    void observe(const World& world) override {
+    void measure(const World& world) override {
         deepest_.resize(world.size(), 0.0);
         for (std::size_t i : watched(claim_, world)) {
             const double depth = planeDepth(world, i);
@@ -302,7 +302,7 @@ class LeftTheBoxMeter : public detail::Meter {
   public:
     LeftTheBoxMeter(const Claim& claim, const Scene& variant)
         : claim_(claim), stretch_(stretchOf(claim, variant)) {}
-    void observe(const World& world) override {
+    void measure(const World& world) override {
         left_.resize(world.size(), false);
         for (std::size_t i : watched(claim_, world)) {
             if (left_[i] || insideBoxBy(world, i) >= 0.0) continue;
@@ -325,7 +325,7 @@ class WallContactMeter : public detail::Meter {
   public:
     WallContactMeter(const Claim& claim, const Scene& variant)
         : claim_(claim), stretch_(stretchOf(claim, variant)), params_(variant.params) {}
-    void observe(const World& world) override {
+    void measure(const World& world) override {
         touched_.resize(world.size(), false);
         for (std::size_t i : watched(claim_, world)) {
             if (touched_[i]) continue;
@@ -371,7 +371,7 @@ class BounceLossMeter : public detail::Meter {
   public:
     BounceLossMeter(const Claim& claim, const Scene& variant)
         : claim_(claim), stretch_(stretchOf(claim, variant)), params_(variant.params) {}
-    void observe(const World& world) override {
+    void measure(const World& world) override {
         const double h = params_.solverStep(), g = glm::length(params_.gravity);
         const std::size_t known = energy_.size();
         energy_.resize(world.size(), NAN);

@@ -1,6 +1,7 @@
 #pragma once
 // The meters a claim can name (claims.h): each watches a run of a preset, step by
 // step, and keeps the samples that fall in the claim's stretch of time.
+#include <algorithm>
 #include <memory>
 #include <vector>
 
@@ -14,11 +15,21 @@ class Meter {
   public:
     virtual ~Meter() = default;
     // Called with the world as built (t = 0) and after every time step.
-    virtual void observe(const physics::World& world) = 0;
+    void observe(const physics::World& world) {
+        mostSpheres_ = std::max(mostSpheres_, world.size());
+        measure(world);
+    }
     const std::vector<double>& samples() const { return samples_; }
+    // The most spheres a world it observed held: a claim's sphere numbered beyond them was
+    // never in the run (the claim fails and says so, rather than measuring the others).
+    std::size_t mostSpheres() const { return mostSpheres_; }
 
   protected:
+    virtual void measure(const physics::World& world) = 0;
     std::vector<double> samples_;
+
+  private:
+    std::size_t mostSpheres_ = 0;
 };
 
 // The meter `claim.measure` names for a run of `variant` (the preset with the claim's

@@ -222,8 +222,15 @@ std::string quantityShown(const Claim& c) {
     return name;
 }
 
-void judge(ClaimCheck& check, const std::vector<double>* ratioSamples) {
+void judge(ClaimCheck& check, const std::vector<double>* ratioSamples, std::size_t spheresInRun) {
     const Claim& c = *check.claim;
+    if (!c.spheres.empty() && std::size_t(*std::max_element(c.spheres.begin(), c.spheres.end())) >= spheresInRun) {
+        check.holds = false;
+        check.measured = quantityShown(c) + ": no sphere #" +
+                         std::to_string(*std::max_element(c.spheres.begin(), c.spheres.end())) + " in the run (it had " +
+                         std::to_string(spheresInRun) + ", numbered from 0)";
+        return;
+    }
     check.value = taken(c, check.samples);
     if (ratioSamples && check.value) {
         const std::optional<double> below = taken(c, *ratioSamples);
@@ -270,6 +277,13 @@ std::string checkClaimForm(const Claim& c, const Scene& preset) {
     }
     if (c.near.has_value() != c.within.has_value()) return "near and within go together";
     if (!c.near && !c.min && !c.max) return "a claim needs near and within, min or max";
+    if (c.within && !(*c.within >= 0.0)) return "within must be at least 0";
+    if (c.min && c.max && *c.min > *c.max) return "min is above max: no value meets both";
+    const std::size_t planes = (variant.box ? boxPlanes(*variant.box).size() : 0) + variant.planes.size();
+    if (!planeShown(c).empty() && std::size_t(c.plane) >= planes) {
+        return "plane " + std::to_string(c.plane) + " is not one of the scene's " + std::to_string(planes) +
+               " planes (the box's first, numbered from 0)";
+    }
     if (c.ratioTo && c.take == "each" && c.nth == 0) return "ratio_to needs one value: a take other than each, or nth";
     return "";
 }
@@ -297,7 +311,7 @@ std::vector<ClaimCheck> checkClaims(const Scene& preset) {
     for (auto& entry : runs) entry.second->run();
     for (std::size_t k = 0; k < checks.size(); ++k) {
         if (meters[k]) checks[k].samples = meters[k]->samples();
-        judge(checks[k], ratioMeters[k] ? &ratioMeters[k]->samples() : nullptr);
+        judge(checks[k], ratioMeters[k] ? &ratioMeters[k]->samples() : nullptr, meters[k] ? meters[k]->mostSpheres() : 0);
     }
     return checks;
 }
@@ -374,7 +388,7 @@ std::vector<ClaimCheck> LiveClaims::judged(double time) const {
         ClaimCheck check;
         check.claim = &w.claims[k];
         if (w.meters[k]) check.samples = w.meters[k]->samples();
-        judge(check, nullptr);
+        judge(check, nullptr, w.meters[k] ? w.meters[k]->mostSpheres() : 0);
         checks.push_back(std::move(check));
     }
     return checks;

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <system_error>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -23,6 +24,9 @@ namespace {
 using Json = nlohmann::json;
 using Keys = std::vector<std::string_view>;
 
+// The longest title (and slide) and description a scene may have, in bytes: the presets'
+// longest are 45 and about 1 100.
+constexpr std::size_t kLongestTitle = 200, kLongestDescription = 20000;
 const Keys kSceneKeys = {"title", "slide",   "description", "box",      "planes", "parameters",
                          "seed",  "spheres", "generate",    "emitters", "time",   "steps",
                          "claims", "compare", "mirror"};
@@ -92,12 +96,23 @@ class SceneReader {
         failAt(detail::offsetOf(text_, pointer, atKey), what);
     }
 
+    // A text field, refused when longer than `most` characters (bytes): a panel shows it,
+    // and a megabyte of one word took seconds a frame to lay out.
+    std::string text(const Json& root, const char* key, std::size_t most) const {
+        std::string value = string(root, "", key);
+        if (value.size() > most) {
+            fail(std::string("/") + key, std::string(key) + " is " + std::to_string(value.size()) + " characters long; at most " +
+                                             std::to_string(most));
+        }
+        return value;
+    }
+
     Scene read(const Json& root) {
         Scene scene;
         checkKeys(root, "", kSceneKeys);
-        scene.title = string(root, "", "title");
-        scene.slide = string(root, "", "slide");
-        scene.description = string(root, "", "description");
+        scene.title = text(root, "title", kLongestTitle);
+        scene.slide = text(root, "slide", kLongestTitle);
+        scene.description = text(root, "description", kLongestDescription);
         if (const Json* box = find(root, "box")) scene.box = readBox(*box, "/box");
         scene.planes = readList(root, "planes", &SceneReader::readPlane);
         scene.mirrors = readList(root, "mirror", &SceneReader::readMirror);
@@ -359,7 +374,10 @@ class SceneReader {
         c.take = find(v, "take") ? string(v, pointer, "take") : c.take;
         if (const Json* set = find(v, "set")) c.settings = strings(*set, pointer + "/set");
         if (const Json* ratio = find(v, "ratio_to")) c.ratioTo = strings(*ratio, pointer + "/ratio_to");
-        if (const Json* sphere = find(v, "sphere")) c.spheres = indices(*sphere, pointer + "/sphere");
+        if (const Json* sphere = find(v, "sphere")) {
+            c.spheres = indices(*sphere, pointer + "/sphere");
+            if (c.spheres.empty()) fail(pointer + "/sphere", "sphere lists no sphere: leave it out to watch every sphere");
+        }
         if (const Json* plane = find(v, "plane")) c.plane = whole(*plane, pointer + "/plane", 0, 1000);
         if (const Json* nth = find(v, "nth")) c.nth = whole(*nth, pointer + "/nth", 1, kMaxGeneratedCount);
         c.from = optionalNumber(v, pointer, "from").value_or(0.0);
@@ -738,10 +756,18 @@ std::string sceneText(const Scene& scene, const physics::World& world) {
 
 void saveScene(const std::string& path, const Scene& scene, const physics::World& world) {
     const std::string text = sceneText(scene, world);
-    std::ofstream file(path, std::ios::binary | std::ios::trunc);
+    // Written beside it and moved over it once whole: a full disk left a truncated scene
+    // that would not load.
+    const std::string part = path + ".part";
+    std::ofstream file(part, std::ios::binary | std::ios::trunc);
     file << text;
     file.close();
-    if (!file) throw SceneError(path + ": cannot write the scene file");
+    std::error_code error;
+    if (file) std::filesystem::rename(part, path, error);
+    if (!file || error) {
+        std::filesystem::remove(part, error);
+        throw SceneError(path + ": cannot write the scene file (is the disk full?)");
+    }
 }
 
 }  // namespace scenes

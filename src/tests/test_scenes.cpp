@@ -16,6 +16,7 @@
 
 #include "physics/diagnostics.h"
 #include "physics/step.h"
+#include "scenes/claims.h"
 #include "scenes/parameters.h"
 #include "scenes/presets.h"
 #include "scenes/scene_json.h"
@@ -81,6 +82,34 @@ TEST(SceneFile, RefusesUnknownKeysAndSuggestsTheClosest) {
     "region": {"min": [0, 0, 0], "max": [1, 1, 1], "mid": [0, 0, 0]}}]
 })",
                 "4:52", {"unknown key 'mid'", "did you mean 'min'?", "generate[0].region"});
+}
+
+// A megabyte of one word in a title or text took the window seconds a frame to lay out;
+// the texts have lengths a panel can show.
+TEST(SceneFile, RefusesTextsLongerThanAPanelShows) {
+    expectError("{\"title\": \"" + std::string(201, 't') + "\"}", "1:11", {"title is 201 characters long; at most 200"});
+    expectError("{\"description\": \"" + std::string(20001, 'y') + "\"}", "1:17",
+                {"description is 20001 characters long; at most 20000"});
+}
+
+// A claim that cannot hold, or names what the scene lacks, is refused where it is written
+// (it passed, or failed with "nan to nan m"); a sphere beyond the run's fails and says so.
+TEST(SceneFile, RefusesClaimsThatNoValueOrNoPlaneCanMeet) {
+    const std::string head = std::string("{\"description\": \"two meet\", ") + kBox +
+                             R"("spheres": [{"p": [0, 0, 1], "r": 0.1}, {"p": [0.5, 0, 1], "r": 0.1}], "claims": [)";
+    expectError(head + R"({"says": "two meet", "measure": "vx", "min": 5, "max": 1}]})", "1:149", {"min is above max"});
+    expectError(head + R"({"says": "two meet", "measure": "vx", "near": 0, "within": -1}]})", "1:149", {"within must be at least 0"});
+    expectError(head + R"({"says": "two meet", "measure": "gap", "plane": 9, "min": 0}]})", "1:149",
+                {"plane 9 is not one of the scene's 6 planes"});
+    expectError(head + R"({"says": "two meet", "measure": "vx", "sphere": [], "min": 0}]})", "1:197",
+                {"sphere lists no sphere: leave it out to watch every sphere"});
+    const Scene scene = scenes::parseScene(head + R"({"says": "two meet", "measure": "vx", "sphere": [0, 9], "min": -1}]})",
+                                           "claims.json");
+    const std::vector<scenes::ClaimCheck> checks = scenes::checkClaims(scene);
+    ASSERT_EQ(checks.size(), 1u);
+    EXPECT_FALSE(checks[0].holds);
+    EXPECT_NE(checks[0].measured.find("no sphere #9 in the run (it had 2, numbered from 0)"), std::string::npos)
+        << checks[0].measured;
 }
 
 TEST(SceneFile, RefusesRepeatedKeys) {

@@ -4,6 +4,7 @@
 #include <string>
 
 #include <imgui.h>
+#include <imgui_internal.h>  // ImTextCharFromUtf8
 
 namespace ui {
 namespace {
@@ -12,26 +13,40 @@ bool isLetter(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z');
 
 float widthOf(std::string_view text) { return ImGui::CalcTextSize(text.data(), text.data() + text.size()).x; }
 
+// No line is as wide as this many bytes of text (at least a few pixels a character, on a
+// panel at most a few thousand pixels wide): a word is searched and measured no further,
+// so that a text of one long word (a broken scene file's) wraps in linear time.
+constexpr std::size_t kMostMeasured = 2048;
+
 // The next space at or after `from` where a line may break: not one beside '=', so that
-// "passes = 1" stays on one line.
+// "passes = 1" stays on one line. Searched up to kMostMeasured bytes on: none there, it
+// returns where the search stopped (a line that long does not fit).
 std::size_t nextBreak(std::string_view text, std::size_t from) {
-    for (std::size_t at = text.find(' ', from); at != std::string_view::npos; at = text.find(' ', at + 1)) {
+    const std::size_t stop = std::min(text.size(), from + kMostMeasured);
+    const std::string_view searched = text.substr(0, stop);
+    for (std::size_t at = searched.find(' ', from); at != std::string_view::npos; at = searched.find(' ', at + 1)) {
         const bool besideEquals = (at > 0 && text[at - 1] == '=') || (at + 1 < text.size() && text[at + 1] == '=');
         if (!besideEquals) return at;
     }
-    return text.size();
+    return stop;
 }
 
 // The longest start of `word` that fits `width`, cut between characters (not inside a
-// UTF-8 sequence), at least one character.
+// UTF-8 sequence), at least one character. The widths are summed character by character.
 std::size_t cutToFit(std::string_view word, float width) {
+    const ImFont* font = ImGui::GetFont();
+    const float scale = ImGui::GetFontSize() / font->FontSize;
+    float x = 0.0f;
     std::size_t fits = 0;
-    for (std::size_t at = 1; at <= word.size(); ++at) {
-        if (at < word.size() && (static_cast<unsigned char>(word[at]) & 0xC0) == 0x80) continue;  // inside a character
-        if (widthOf(word.substr(0, at)) > width) break;
+    for (std::size_t at = 0; at < word.size();) {
+        unsigned int c = 0;
+        const int bytes = ImTextCharFromUtf8(&c, word.data() + at, word.data() + word.size());
+        x += font->GetCharAdvance(static_cast<ImWchar>(c)) * scale;
+        if (x > width) break;
+        at += std::size_t(std::max(bytes, 1));
         fits = at;
     }
-    if (fits > 0) return fits;
+    if (fits > 0) return std::min(fits, word.size());
     std::size_t one = 1;
     while (one < word.size() && (static_cast<unsigned char>(word[one]) & 0xC0) == 0x80) ++one;
     return one;
@@ -46,20 +61,18 @@ std::size_t cutToFit(std::string_view word, float width) {
 std::size_t lineEnd(std::string_view text, float width) {
     std::size_t end = nextBreak(text, 1);
     if (widthOf(text.substr(0, end)) > width) {
-        for (std::size_t mark = text.find_last_of("/-", end - 1); mark != std::string_view::npos && mark > 0;
+        const std::size_t fit = cutToFit(text.substr(0, end), width);  // at least one character
+        for (std::size_t mark = text.find_last_of("/-", fit - 1); mark != std::string_view::npos && mark > 0;
              mark = text.find_last_of("/-", mark - 1)) {
             if (text[mark] == '-' && !(isLetter(text[mark - 1]) && mark + 1 < text.size() && isLetter(text[mark + 1]))) {
                 continue;  // a minus sign or an exponent ("-0.87", "1.2e-05"): a number stays whole
             }
-            if (widthOf(text.substr(0, mark + 1)) <= width) return mark + 1;
+            return mark + 1;
         }
         // "a = b" wider than the line: broken after its '=' rather than clipped ("method =" /
         // "reflection" in a view a third of a projector wide).
-        for (std::size_t space = text.rfind(' ', end - 1); space != std::string_view::npos && space > 0;
-             space = text.rfind(' ', space - 1)) {
-            if (widthOf(text.substr(0, space)) <= width) return space;
-        }
-        return cutToFit(text.substr(0, end), width);
+        const std::size_t space = text.rfind(' ', fit);
+        return space != std::string_view::npos && space > 0 ? space : fit;
     }
     while (end < text.size()) {
         const std::size_t next = nextBreak(text, end + 1);
