@@ -238,6 +238,26 @@ std::string outputOf(const std::string& arguments) { return runSpheres(arguments
 
 }  // namespace
 
+// A full disk: each file the commands write is checked once closed, and a file that could
+// not be written whole is said and not left behind (a 16 KB disk left a tenth of a state,
+// of a log and of a screenshot, each called written). /dev/full fails every write.
+TEST(CaptureCommandLine, AFileThatCannotBeWrittenWholeIsSaidAndNotLeft) {
+    if (!std::filesystem::exists("/dev/full")) GTEST_SKIP() << "no /dev/full";
+    const std::filesystem::path folder = std::filesystem::path(SPHERES_TEST_OUTPUT_DIR) / "full_disk";
+    std::filesystem::remove_all(folder);
+    std::filesystem::create_directories(folder);
+    for (const char* name : {"state.csv", "log.csv", "log.jsonl"}) std::filesystem::create_symlink("/dev/full", folder / name);
+    const Outcome state = runSpheres("simulate --scene 11_pile --steps 1 --state '" + (folder / "state.csv").string() + "'");
+    EXPECT_EQ(state.code, 2) << state.output;
+    EXPECT_NE(state.output.find("state.csv: cannot be written whole (is the disk full?)"), std::string::npos) << state.output;
+    for (const char* log : {"log.csv", "log.jsonl"}) {
+        const Outcome out = runSpheres("simulate --scene 11_pile --steps 600 --every 1 --out '" + (folder / log).string() + "'");
+        EXPECT_EQ(out.code, 2) << out.output;
+        EXPECT_NE(out.output.find(std::string(log) + ": cannot be written whole"), std::string::npos) << out.output;
+    }
+    EXPECT_FALSE(std::filesystem::exists(std::filesystem::symlink_status(folder / "state.csv"))) << "the truncated state is left";
+}
+
 // A GL driver that crashes while it starts (Debian 12's OSMesa, given a GALLIUM_DRIVER it
 // does not have, dereferences a null screen) ends the capture with one line naming the
 // setting, exit code 2, instead of "Segmentation fault". A Mesa that refuses the name

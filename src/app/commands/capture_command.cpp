@@ -666,8 +666,11 @@ int Capturer::run() {
     }
     if (!writer_->finish()) return 1;
     const std::string path = (fs::path(options_.out) / "manifest.json").string();
+    // A file name that is not UTF-8 is written with U+FFFD in its place, not thrown.
+    const std::string text = manifest().dump(2, ' ', false, Json::error_handler_t::replace) + '\n';
     std::ofstream file(path);
-    file << manifest().dump(2) << '\n';
+    file << text;
+    file.close();
     if (!file) {
         std::fprintf(stderr, "spheres: %s: cannot write the file\n", path.c_str());
         return 1;

@@ -21,7 +21,7 @@ std::string hexHash(std::uint64_t hash) {
     return buffer;
 }
 
-DiagnosticsLog::DiagnosticsLog(const std::string& path) {
+DiagnosticsLog::DiagnosticsLog(const std::string& path) : path_(path) {
     if (endsWith(path, ".jsonl")) {
         csv_ = false;
     } else if (!endsWith(path, ".csv")) {
@@ -33,6 +33,14 @@ DiagnosticsLog::DiagnosticsLog(const std::string& path) {
     if (csv_) {
         file_ << "step,time_s,kinetic_J,potential_J,total_J,modified_J,px,py,pz,"
                  "sphere_contacts,wall_contacts,max_penetration_r,hash\n";
+    }
+}
+
+void DiagnosticsLog::finish() {
+    file_.close();
+    if (!file_) {
+        std::remove(path_.c_str());  // not a truncated log that reads as the whole run
+        throw UsageError("--out " + path_ + ": cannot be written whole (is the disk full?)");
     }
 }
 

@@ -13,8 +13,11 @@ public:
     // cannot be opened for writing.
     explicit DiagnosticsLog(const std::string& path);
     void write(std::uint64_t step, double time, const physics::Diagnostics& d);
+    // Closes the file; throws UsageError when it could not be written whole (a full disk).
+    void finish();
 
 private:
+    std::string path_;
     std::ofstream file_;
     bool csv_ = true;
 };

@@ -25,6 +25,11 @@ void writeState(const std::string& path, const physics::World& world) {
         file << i << ',' << p.x << ',' << p.y << ',' << p.z << ',' << v.x << ',' << v.y << ','
              << v.z << ',' << world.radius[i] << ',' << world.mass[i] << '\n';
     }
+    file.close();
+    if (!file) {
+        std::remove(path.c_str());  // not a truncated state that reads as the whole
+        throw UsageError("--state " + path + ": cannot be written whole (is the disk full?)");
+    }
 }
 
 }  // namespace
@@ -54,6 +59,7 @@ int runSimulate(const SimulateOptions& options) {
         progress->update(static_cast<std::uint64_t>(k));
     }
     progress.reset();  // the line goes before the result is printed
+    if (log) log->finish();
 
     const double sphereSteps = static_cast<double>(options.steps) * params.substeps *
                                static_cast<double>(std::max<std::size_t>(world.size(), 1));
