@@ -11,7 +11,7 @@
 namespace platform {
 namespace {
 
-constexpr int kSignals[] = {SIGSEGV, SIGBUS, SIGILL, SIGFPE};
+constexpr int kSignals[] = {SIGSEGV, SIGBUS, SIGILL, SIGFPE, SIGABRT};  // virpipe aborts when it finds no server
 constexpr int kRefusedExitCode = 2;  // as the command line's refusals
 
 // Written before the driver runs: the handler may only write and exit.
