@@ -340,4 +340,19 @@ TEST(WindowInteraction, RefusedOptionsExitWithCodeTwo) {
     }
 }
 
+// A display whose GL driver cannot be loaded: the advice is about the driver, not "without
+// a display" (there is one), and the exit code 2.
+TEST(WindowInteraction, ADisplayWithoutAGlDriverIsSaidSo) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run not found";
+    const fs::path out = fs::path(SPHERES_TEST_OUTPUT_DIR) / "no_gl_driver.txt";
+    const std::string command = "xvfb-run -a -s '-screen 0 1280x800x24' env LIBGL_DRIVERS_PATH=/nonexistent '" SPHERES_EXECUTABLE
+                                "' --scene 03_head_on --frames 1 >'" + out.string() + "' 2>&1";
+    const int status = std::system(command.c_str());
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 2);
+    std::ifstream file(out);
+    const std::string said((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+    EXPECT_NE(said.find("The display is there, its GL driver gave no OpenGL 3.3 core context"), std::string::npos) << said;
+}
+
 }  // namespace

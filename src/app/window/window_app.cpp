@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <ctime>
 #include <filesystem>
 #include <memory>
@@ -636,9 +637,17 @@ int runWindowApp(const WindowAppOptions& options) {
     windowOptions.height = options.height;
     auto window = platform::Window::create(windowOptions, &error);
     if (!window) {
+        // A display whose GL gives no 3.3 core context is another fault than no display.
+        const char* x11 = std::getenv("DISPLAY");
+        const char* wayland = std::getenv("WAYLAND_DISPLAY");
+        const bool display = (x11 && *x11) || (wayland && *wayland);
         std::fprintf(stderr,
-                     "spheres: cannot open a window (%s). Without a display, run headless: "
-                     "`spheres capture --scene %s --frames 60 --out frames/` or `xvfb-run -a spheres`\n",
+                     display ? "spheres: cannot open a window (%s). The display is there, its GL driver gave no "
+                               "OpenGL 3.3 core context: update the graphics driver, or try Mesa's software GL "
+                               "(LIBGL_ALWAYS_SOFTWARE=1), or run headless: `spheres capture --scene %s --frames 60 "
+                               "--out frames/`\n"
+                             : "spheres: cannot open a window (%s). Without a display, run headless: "
+                               "`spheres capture --scene %s --frames 60 --out frames/` or `xvfb-run -a spheres`\n",
                      error.c_str(), options.scene.c_str());
         return 2;
     }
