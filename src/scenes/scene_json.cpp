@@ -521,6 +521,14 @@ class SceneReader {
                 if (p.applies == pass) readParameter(p, item.value(), root, scene);
             }
         }
+        // Once all are set, as --set does: a setting for another method is refused, not
+        // kept unused ("shock": "on" with the continuous method).
+        for (const auto& item : parameters->items()) {
+            const std::string setting = item.key() + "=" + formatValue(*findParameter(item.key()), scene);
+            if (const std::string why = settingsThatActOnNothing(scene, {setting}); !why.empty()) {
+                fail(detail::childPointer("/parameters", item.key()), why);
+            }
+        }
     }
 
     void readParameter(const Parameter& p, const Json& v, const Json& root, Scene& scene) const {
@@ -593,12 +601,13 @@ std::string planesText(const std::vector<physics::Plane>& planes, std::size_t fi
     return "[" + out + (out.empty() ? "]" : "\n  ]");
 }
 
-// The Live parameters; count, radius and seed belong to generators and the top level,
-// emit_period to the first emitter.
+// The Live parameters that act in the scene (a file that sets one for another method is
+// refused); count, radius and seed belong to generators and the top level, emit_period to
+// the first emitter.
 std::string parametersText(const Scene& scene) {
     std::string out;
     for (const Parameter& p : parameterTable()) {
-        if (p.applies != Applies::Live || p.name == "emit_period") continue;
+        if (p.applies != Applies::Live || p.name == "emit_period" || !p.availableIn(scene)) continue;
         const std::string value = formatValue(p, scene);
         out += out.empty() ? "\n    " : ",\n    ";
         out += dump(std::string(p.name)) + ": ";

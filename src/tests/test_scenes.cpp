@@ -112,6 +112,14 @@ TEST(SceneFile, RefusesClaimsThatNoValueOrNoPlaneCanMeet) {
         << checks[0].measured;
 }
 
+// A setting for another method is refused in a file as --set refuses it (it was kept,
+// acting on nothing, while the run seemed to have it).
+TEST(SceneFile, RefusesSettingsThatActOnNothing) {
+    expectError(R"({"parameters": {"method": "continuous", "shock": "on"}})", "1:50",
+                {"shock=on: shock acts only with the position, velocity or reflection method, and this run's is continuous"});
+    expectError(R"({"parameters": {"toi": "bisection"}})", "1:24", {"toi=bisection: toi acts only with the continuous method"});
+}
+
 TEST(SceneFile, RefusesRepeatedKeys) {
     expectError("{\n  \"parameters\": {\"alpha\": 0.5,\n    \"alpha\": 0.7}\n}", "3:5",
                 {"key 'parameters.alpha' appears twice"});
