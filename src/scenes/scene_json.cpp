@@ -764,6 +764,17 @@ std::string sceneText(const Scene& scene, const physics::World& world) {
 }
 
 void saveScene(const std::string& path, const Scene& scene, const physics::World& world) {
+    // A state the loader would refuse is not written: a file that cannot be opened again.
+    for (std::size_t i = 0; i < world.size(); ++i) {
+        const glm::dvec3 &p = world.position[i], &v = world.velocity[i];
+        for (double x : {p.x, p.y, p.z, v.x, v.y, v.z}) {
+            if (!(std::abs(x) <= kPhysical)) {
+                throw SceneError(path + ": sphere #" + std::to_string(i) +
+                                 " is beyond what a scene file holds (coordinates and speeds up to 1e9 m and m/s); "
+                                 "not saved");
+            }
+        }
+    }
     const std::string text = sceneText(scene, world);
     // Written beside it and moved over it once whole: a full disk left a truncated scene
     // that would not load.
