@@ -20,6 +20,8 @@ constexpr double kTouching = 1e-9;
 // m/s: the fastest a scene file may start a sphere (its mean plus its spread). 13 shoots at
 // 100 m/s; a sphere at 1e160 m/s made the energy overflow to inf with no value to name.
 constexpr double kMostSceneSpeed = 1000.0;
+// m/s: a saved state's, as fast as a run made it (a scene file's numbers stop at 1e9).
+constexpr double kMostSavedSpeed = 1e9;
 
 [[noreturn]] void fail(const std::string& what, const std::string& path) {
     throw SceneError(what, path);
@@ -40,11 +42,9 @@ std::string number(double x) {
 // m/s, without overflow (glm::length of 1e160 m/s is inf).
 double speedOf(const glm::dvec3& v) { return std::hypot(v.x, std::hypot(v.y, v.z)); }
 
-// Fails with `what` "speed ... is above 1000 m/s" when `speed` is.
-void checkSpeed(double speed, const std::string& what, const std::string& path) {
-    if (speed > kMostSceneSpeed) {
-        fail(what + " " + number(speed) + " m/s is above " + number(kMostSceneSpeed) + " m/s", path);
-    }
+// Fails with `what` "speed ... is above 1000 m/s" when `speed` is above `most`.
+void checkSpeed(double speed, const std::string& what, const std::string& path, double most = kMostSceneSpeed) {
+    if (speed > most) fail(what + " " + number(speed) + " m/s is above " + number(most) + " m/s", path);
 }
 
 std::string sphereName(std::size_t i) { return "spheres[" + std::to_string(i) + "]"; }
@@ -100,7 +100,7 @@ void addExtraPlanes(const Scene& scene, physics::World& world) {
 void checkSphere(const Sphere& s, std::size_t i, bool snapshot) {
     if (!isFinite(s.p)) fail(sphereName(i) + " position must be finite", spherePath(i, "p"));
     if (!isFinite(s.v)) fail(sphereName(i) + " velocity must be finite", spherePath(i, "v"));
-    if (!snapshot) checkSpeed(speedOf(s.v), sphereName(i) + " speed |v| =", spherePath(i, "v"));
+    checkSpeed(speedOf(s.v), sphereName(i) + " speed |v| =", spherePath(i, "v"), snapshot ? kMostSavedSpeed : kMostSceneSpeed);
     if (!(s.r > 0) || !std::isfinite(s.r)) {
         fail(sphereName(i) + " radius must be positive (m), got " + number(s.r),
              spherePath(i, "r"));
