@@ -218,7 +218,7 @@ std::vector<Parameter> makeTable() {
                "at its instant within the step and answered there, in time order (physically "
                "correct, computationally heavy; one thread).",
                param<&Params::method>()),
-        choice("solver", "multiple collisions", {"sequential", "until-converged", "simultaneous", "lcp",
+        choice("solver", "solver (multiple collisions)", {"sequential", "until-converged", "simultaneous", "lcp",
                                                        "generalized-reflections"},
                static_cast<double>(kDefaults.solver),
                "Slide 14: how the contacts of a step are answered. sequential: K passes, one "

@@ -468,9 +468,10 @@ TEST(SideBySide, EachViewsLabelSaysTheMostWorkItsSolverTookInAStep) {
     EXPECT_EQ(session.run(2).lastStepStats().lcpSweeps, 0u) << "the spheres have parted";
     const std::vector<app::ViewReadout> views = app::viewReadouts(simulation, *session.comparison());
     EXPECT_EQ(views[0].work, "");
-    EXPECT_EQ(views[2].work, "most a step: lcp sweeps\u00a0" + std::to_string(most));
-    EXPECT_EQ(views[3].work.rfind("most a step: reflection rounds\u00a0", 0), 0u) << views[3].work;
-    EXPECT_NE(views[3].work, "most a step: reflection rounds\u00a00");
+    EXPECT_EQ(views[2].work, "most in one step: " + std::to_string(most) + "\u00a0lcp sweeps");
+    EXPECT_EQ(views[3].work.rfind("most in one step: ", 0), 0u) << views[3].work;
+    EXPECT_NE(views[3].work.find("\u00a0reflection rounds"), std::string::npos) << views[3].work;
+    EXPECT_NE(views[3].work, "most in one step: 0\u00a0reflection rounds");
     const std::vector<std::string> label = app::viewReadoutLines(views[2]);
     EXPECT_NE(std::find(label.begin(), label.end(), views[2].work), label.end());
     simulation.restart();

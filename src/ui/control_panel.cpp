@@ -287,7 +287,8 @@ void frameTimings(const Readouts& r) {
         ImGui::Text("  %llu pair tests, %llu candidates", static_cast<unsigned long long>(s.pairTests),
                     static_cast<unsigned long long>(s.candidatePairs));
     } else {
-        ImGui::Text("  pairs kept, %llu candidates", static_cast<unsigned long long>(s.candidatePairs));
+        ImGui::Text("  last step's pairs kept (no pair tests), %llu candidates",
+                    static_cast<unsigned long long>(s.candidatePairs));
     }
     tooltip("Where the last step went (its substeps together): finding the candidate pairs "
             "(the broad phase: a grid, or all N(N-1)/2 pairs; the pair tests are its distance tests, none when no sphere "

@@ -39,6 +39,9 @@ void applyStyle(float uiScale) {
     // mid-slider, where the grab covered its digits).
     style.Colors[ImGuiCol_SliderGrab].w = 0.45f;
     style.Colors[ImGuiCol_SliderGrabActive].w = 0.7f;
+    // An open list covers the controls under it: ImGui's dark popups are 94 % opaque, and
+    // the labels behind showed through its choices ("k propagation" amid "lecture").
+    style.Colors[ImGuiCol_PopupBg].w = 1.0f;
     style.ScaleAllSizes(uiScale);
     ImGui::GetStyle() = style;
 }

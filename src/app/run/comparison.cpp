@@ -177,21 +177,21 @@ std::string workOf(const Simulation& run) {
     const auto count = [](std::uint64_t n) { return static_cast<unsigned long long>(n); };
     char line[128] = "";
     if (params.method == physics::Method::Continuous) {
-        std::snprintf(line, sizeof line, "impacts\u00a0%llu", count(s.events));
+        std::snprintf(line, sizeof line, "%llu\u00a0impacts", count(s.events));
     } else if (params.solver == physics::Solver::GeneralizedReflections) {
-        std::snprintf(line, sizeof line, "reflection rounds\u00a0%llu", count(s.reflectionRounds));
+        std::snprintf(line, sizeof line, "%llu\u00a0reflection rounds", count(s.reflectionRounds));
     } else if (physics::solvesGlobally(params.solver)) {
-        std::snprintf(line, sizeof line, "lcp sweeps\u00a0%llu", count(s.lcpSweeps));
+        std::snprintf(line, sizeof line, "%llu\u00a0lcp sweeps", count(s.lcpSweeps));
     } else if (params.solver == physics::Solver::UntilConverged) {
-        std::snprintf(line, sizeof line, "passes\u00a0%llu", count(s.passesUsed));
+        std::snprintf(line, sizeof line, "%llu\u00a0passes", count(s.passesUsed));
     }
     std::string work = line;
     if (params.shock == physics::ShockPropagation::On && physics::sweepsLevels(params.method)) {
-        std::snprintf(line, sizeof line, "shock levels\u00a0%llu, rounds\u00a0%llu", count(s.shockLevels),
+        std::snprintf(line, sizeof line, "%llu\u00a0shock levels, %llu\u00a0rounds", count(s.shockLevels),
                       count(s.shockRounds));
         work += (work.empty() ? "" : ", ") + std::string(line);
     }
-    return work.empty() ? work : "most a step: " + work;
+    return work.empty() ? work : "most in one step: " + work;
 }
 
 }  // namespace

@@ -152,6 +152,10 @@ std::string propertiesLine(const std::vector<PropertyVerdict>& verdicts) {
 }
 
 std::string propertiesMarks(const std::vector<PropertyVerdict>& verdicts) {
+    // Five dashes said nothing to a student: before any impact, one line that says why.
+    if (std::all_of(verdicts.begin(), verdicts.end(), [](const PropertyVerdict& v) { return v.verdict == Verdict::Untested; })) {
+        return "properties: no impact measured yet";
+    }
     std::string line;
     for (std::size_t k = 0; k < verdicts.size(); ++k) {
         if (k > 0) line += k == 3 ? "\n" : "  ";  // two lines: a label stays narrow
