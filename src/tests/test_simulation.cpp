@@ -137,4 +137,14 @@ TEST(Simulation, TheTextsClaimsAreMeasuredAsTheRunGoes) {
     sim.editableScene().params.beta = 0.8;
     sim.restart();
     EXPECT_FALSE(sim.claimsForOtherSettings());
+
+    // A setting changed before the first step, as a text asks ("β = 1: it bounces for
+    // ever"), at t = 0: that variant's claims are watched, not "stopped (changed by hand)".
+    sim.editableScene().params.beta = 1.0;
+    sim.singleStep();
+    EXPECT_FALSE(sim.claimsInterrupted());
+    EXPECT_EQ(sim.claimsWatched(), 1u);
+    sim.editableScene().params.beta = 0.8;  // once it has run, a change stops them
+    sim.singleStep();
+    EXPECT_TRUE(sim.claimsInterrupted());
 }

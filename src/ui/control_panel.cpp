@@ -495,7 +495,7 @@ void measuredClaims(const Readouts& r) {
     for (const Readouts::ClaimLine& c : r.claims) held += c.holds;
     char header[160];
     if (r.claimsInterrupted) {
-        std::snprintf(header, sizeof header, "The text, measured: stopped (changed by hand)###claims");
+        std::snprintf(header, sizeof header, "The text, measured: stopped (changed by hand; R measures again)###claims");
     } else {
         std::snprintf(header, sizeof header, "The text, measured: %d \u2713 %d \u2717 of %zu###claims", held,
                       int(r.claims.size()) - held, r.claimsWatched);

@@ -41,7 +41,8 @@ void Simulation::startFrom(physics::World world) {
     settingsAtLastStep_.clear();
     settingsChange_ = {};
     claims_.observe(world_);
-    claimsState_ = physics::stateHash(world_);
+    claimsState_ = claimsStartState_ = physics::stateHash(world_);
+    claimsStartSteps_ = world_.stepCount;
     updateRecording();
     measureNow();
 }
@@ -54,11 +55,22 @@ bool Simulation::claimsForOtherSettings() const {
 }
 
 void Simulation::watchClaims() {
-    if (claims_.empty()) return;
-    if (physics::stateHash(world_) != claimsState_ || scenes::tableValues(scene_) != claimsParameters_) {
-        claims_ = {};
-        claimsInterrupted_ = true;
+    const std::uint64_t state = physics::stateHash(world_);
+    std::vector<double> parameters = scenes::tableValues(scene_);
+    if (state == claimsState_ && parameters == claimsParameters_) return;
+    // Settings changed before the first step (a text's "switch response to lecture", done
+    // at t = 0): that variant's claims are watched from the start, not stopped.
+    if (world_.stepCount == claimsStartSteps_ && state == claimsStartState_) {
+        claims_ = scenes::LiveClaims(scene_);
+        claimsInterrupted_ = false;
+        claimsParameters_ = std::move(parameters);
+        claims_.observe(world_);
+        claimsState_ = state;
+        return;
     }
+    if (claims_.empty()) return;
+    claims_ = {};
+    claimsInterrupted_ = true;
 }
 
 const physics::ContactGraph& Simulation::contactGraph() const {

@@ -151,6 +151,7 @@ private:
     // a change by hand between steps stops them.
     scenes::LiveClaims claims_;
     std::uint64_t claimsState_ = 0;
+    std::uint64_t claimsStartState_ = 0, claimsStartSteps_ = 0;  // the world as restarted
     std::vector<double> claimsParameters_;
     bool claimsInterrupted_ = false;
     // The live settings at the last step, and the last change of them since the restart:
