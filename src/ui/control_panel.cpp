@@ -287,8 +287,7 @@ void frameTimings(const Readouts& r) {
         ImGui::Text("  %llu pair tests, %llu candidates", static_cast<unsigned long long>(s.pairTests),
                     static_cast<unsigned long long>(s.candidatePairs));
     } else {
-        ImGui::Text("  last step's pairs kept (no pair tests), %llu candidates",
-                    static_cast<unsigned long long>(s.candidatePairs));
+        ImGui::Text("  pairs kept, no tests: %llu candidates", static_cast<unsigned long long>(s.candidatePairs));
     }
     tooltip("Where the last step went (its substeps together): finding the candidate pairs "
             "(the broad phase: a grid, or all N(N-1)/2 pairs; the pair tests are its distance tests, none when no sphere "
@@ -652,11 +651,13 @@ PanelActions drawControlPanel(const scenes::Scene& scene, double& timeScale, con
 }
 
 // "Readouts   41 FPS   kinetic 0.5 J   potential 0 J   hash 7568873c8f2cd1a0": the folded line.
-std::string readoutsTitle(const Readouts& r) {
-    char text[192];
+// Side by side, the readouts are view A's, and say so.
+std::string readoutsTitle(const Readouts& r, bool viewA) {
+    char text[208];
     const int fps = static_cast<int>(r.timing.fps + 0.5);
-    std::snprintf(text, sizeof text, "Readouts   %s%skinetic %.4g J   potential %.6g J   hash %016llx###Readouts",
-                  fps > 0 ? std::to_string(fps).c_str() : "", fps > 0 ? " FPS   " : "", r.diagnostics.kinetic,
+    std::snprintf(text, sizeof text, "Readouts%s   %s%skinetic %.4g J   potential %.6g J   hash %016llx###Readouts",
+                  viewA ? " of view A" : "", fps > 0 ? std::to_string(fps).c_str() : "", fps > 0 ? " FPS   " : "",
+                  r.diagnostics.kinetic,
                   r.diagnostics.potential, static_cast<unsigned long long>(r.diagnostics.hash));
     return text;
 }
@@ -669,7 +670,10 @@ void drawReadouts(const Readouts& readouts, PanelState& state, PanelActions& act
     ImGui::SetNextWindowSize(ImVec2(at.z, std::max(at.w, ImGui::GetFrameHeight())), ImGuiCond_Always);
     ImGui::SetNextWindowCollapsed(!state.readoutsOpen, ImGuiCond_Always);
     ImGui::SetNextWindowBgAlpha(0.92f);
-    ImGui::Begin(state.readoutsOpen ? "Readouts###Readouts" : readoutsTitle(readouts).c_str(), nullptr,
+    const bool viewA = !state.onlyViewA.empty();  // side by side
+    ImGui::Begin(state.readoutsOpen ? (viewA ? "Readouts of view A###Readouts" : "Readouts###Readouts")
+                                    : readoutsTitle(readouts, viewA).c_str(),
+                 nullptr,
                  ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoSavedSettings);
     const bool unfolded = !ImGui::IsWindowCollapsed();  // the arrow was clicked: laid out so from the next frame
     if (unfolded) readoutsBody(readouts, state, actions);

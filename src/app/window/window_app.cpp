@@ -451,11 +451,13 @@ void WindowApp::apply(const ui::PanelActions& a) {
 }
 
 // The views side by side: their labels with this step's numbers (none for one view);
-// short ones beside the dock of a selected sphere when three or four views share the rest.
+// short ones beside a dock (a selected sphere's, or the unfolded readouts, which hold the
+// numbers) when three or four views share the rest.
 void WindowApp::makeLabels() {
     labels_.clear();
     if (const Comparison* comparison = session_.comparison()) {
-        const bool crowded = session_.runCount() >= 3 && session_.selected() >= 0;
+        const bool docked = session_.selected() >= 0 || (panel_.readoutsOpen && !panel_.present);
+        const bool crowded = session_.runCount() >= 3 && docked;
         labels_ = comparisonLabels(simulation_, *comparison,
                                    panel_.present ? LabelLines::Presented
                                    : crowded      ? LabelLines::Compact
