@@ -305,6 +305,8 @@ TEST(CommandLine, RefusedInputIsOneLineNamingItAndLeavesNothing) {
         {"claims --scene '" + folder + "/loop.json'", "spheres: --scene " + folder + "/loop.json: "},
         {"simulate --scene cradle --steps 1 --state '" + folder + "/none/state.csv'",
          "spheres: --state " + folder + "/none/state.csv: its folder " + folder + "/none does not exist"},
+        {"simulate --scene cradle --steps 1 --state '" SPHERES_EXECUTABLE "/state.csv'",
+         "spheres: --state " SPHERES_EXECUTABLE "/state.csv: its folder " SPHERES_EXECUTABLE " is a file, not a folder"},
         {"simulate --scene cradle --steps 1 --save '" + folder + "/cradle.json' --state '" + folder + "/none/s.csv'",
          "spheres: --state "},
         {"--scene cradle --select 99 --screenshot '" + folder + "/shot.png'", "spheres: "},

@@ -27,7 +27,8 @@ void checkWritable(const std::string& flag, const std::string& path, const std::
     if (fs::is_directory(path, error)) throw UsageError(flag + " " + path + ": is a folder, not a file");
     const fs::path folder = fs::path(path).parent_path();
     if (!folder.empty() && !fs::is_directory(folder, error)) {
-        throw UsageError(flag + " " + path + ": its folder " + folder.string() + " does not exist");
+        throw UsageError(flag + " " + path + ": its folder " + folder.string() +
+                         (fs::exists(folder, error) ? " is a file, not a folder" : " does not exist"));
     }
     const bool existed = fs::exists(path, error);
     std::ofstream probe(path, std::ios::app);
