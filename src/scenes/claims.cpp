@@ -202,8 +202,9 @@ std::string meterShown(const Claim& c) {
 }
 
 // The quantity a claim measures, named as a reader of the panel needs it beside a bare
-// number: "max bounce ratio of sphere #0", "bounce loss, samples", "moving at t = 0.35 s",
-// "hash changes over t = 1.2–10 s", "speed / the same with mu=0.5".
+// number: "max bounce ratio of sphere #0", "bounce loss, samples", "distance to plane 0 at
+// t = 0.15 s", "steps that changed the state over t = 1.2–10 s", "speed / the same with
+// mu=0.5".
 std::string quantityShown(const Claim& c) {
     std::string name = meterShown(c);
     if (c.nth > 0) name = "sample " + std::to_string(c.nth) + " of " + name;
@@ -224,10 +225,10 @@ std::string quantityShown(const Claim& c) {
 
 void judge(ClaimCheck& check, const std::vector<double>* ratioSamples, std::size_t spheresInRun) {
     const Claim& c = *check.claim;
-    if (!c.spheres.empty() && std::size_t(*std::max_element(c.spheres.begin(), c.spheres.end())) >= spheresInRun) {
+    const int highest = c.spheres.empty() ? -1 : *std::max_element(c.spheres.begin(), c.spheres.end());
+    if (highest >= 0 && std::size_t(highest) >= spheresInRun) {
         check.holds = false;
-        check.measured = quantityShown(c) + ": no sphere #" +
-                         std::to_string(*std::max_element(c.spheres.begin(), c.spheres.end())) + " in the run (it had " +
+        check.measured = quantityShown(c) + ": no sphere #" + std::to_string(highest) + " in the run (it had " +
                          std::to_string(spheresInRun) + ", numbered from 0)";
         return;
     }
