@@ -494,7 +494,7 @@ void measuredClaims(const Readouts& r) {
     for (const Readouts::ClaimLine& c : r.claims) held += c.holds;
     char header[160];
     if (r.claimsInterrupted) {
-        std::snprintf(header, sizeof header, "The text, measured: stopped (changed by hand; R measures again)###claims");
+        std::snprintf(header, sizeof header, "The text, measured: stopped; R measures again###claims");
     } else {
         std::snprintf(header, sizeof header, "The text, measured: %d \u2713 %d \u2717 of %zu###claims", held,
                       int(r.claims.size()) - held, r.claimsWatched);
@@ -502,8 +502,9 @@ void measuredClaims(const Readouts& r) {
     const bool open = ImGui::CollapsingHeader(header);
     tooltip("What the text above says, measured in this run since its start: each claim once its moment has "
             "passed (the lab sheet checks the same claims). Side by side, each view measures what the text says "
-            "of it (its letter first). A change by hand (a slider, a sphere, the timeline) stops the measurement "
-            "until the next restart (R).");
+            "of it (its letter first). A change by hand once the run has started (a slider, a sphere, the "
+            "timeline) stops the measurement until the next restart (R); a setting changed before the first step "
+            "measures the text's claims for that setting.");
     if (!open) return;
     for (const Readouts::ClaimLine& c : r.claims) {
         const std::string view = c.view ? std::string(1, c.view) + "  " : "";
