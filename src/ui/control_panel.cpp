@@ -18,6 +18,7 @@ namespace {
 constexpr const char* kOnlyViewA = "view A only: the other views set their own";
 
 const ImVec4 kAlarmLit{1.0f, 0.30f, 0.25f, 1.0f};     // red, readable on the dark panel
+const ImVec4 kNoteOrange{1.0f, 0.55f, 0.2f, 1.0f};    // paused, behind real time: the run's state
 const ImVec4 kAlarmDimmed{0.72f, 0.42f, 0.40f, 1.0f};  // fired earlier
 const ImVec4 kHintColor{0.85f, 0.78f, 0.70f, 1.0f};
 const ImVec4 kMeasuredColor{0.55f, 0.85f, 1.0f, 1.0f};
@@ -202,7 +203,7 @@ void runSection(double& timeScale, const Readouts& r, PanelActions& actions) {
     // A line of its own whatever it says: a warning that came and went moved every slider
     // under it by a line, under the pointer.
     if (r.behindRealTime) {
-        ImGui::TextColored({1.0f, 0.55f, 0.2f, 1.0f}, "%s", behindRealTimeLine(r.timing).c_str());
+        ImGui::TextColored(kNoteOrange, "%s", behindRealTimeLine(r.timing).c_str());
         tooltip(behindRealTimeRemedy(r.timing));
     } else if (r.paused) {
         ImGui::TextDisabled("paused");
@@ -540,35 +541,62 @@ bool labelsAboveSliders(const std::vector<const scenes::Parameter*>& sliders) {
 
 // The height the presentation's sliders and `keys` take under the text: each slider, and
 // the lines parameterWidget adds under it.
+// What stays in sight under the presented text: the lines it takes, each wrapped to the panel.
+struct UnderText {
+    std::vector<std::string> notes;   // the view-A note (once), then the run's state
+    std::vector<std::string> alarms;  // the lit alarms' headlines
+    const char* keys = "Esc: all controls  P: pause  R: restart  [ ]: preset";
+};
+
 float heightUnderText(const std::vector<const scenes::Parameter*>& sliders, const PanelState& state,
-                      bool labelsAbove, const char* keys) {
+                      bool labelsAbove, const UnderText& under) {
     const ImGuiStyle& style = ImGui::GetStyle();
     const float wrap = ImGui::GetContentRegionAvail().x;
-    float below = 2.0f * style.ItemSpacing.y + ImGui::CalcTextSize(keys, nullptr, false, wrap).y + style.ItemSpacing.y;
+    const auto lines = [&](const char* text) { return ImGui::CalcTextSize(text, nullptr, false, wrap).y + style.ItemSpacing.y; };
+    float below = 2.0f * style.ItemSpacing.y + lines(under.keys);
     for (const scenes::Parameter* p : sliders) {
         below += ImGui::GetFrameHeightWithSpacing() + (labelsAbove ? ImGui::GetTextLineHeightWithSpacing() : 0.0f);
-        if (state.refusedName == p->name && !state.refusal.empty()) {
-            below += ImGui::CalcTextSize(state.refusal.c_str(), nullptr, false, wrap).y + style.ItemSpacing.y;
-        }
-        if (std::find(state.onlyViewA.begin(), state.onlyViewA.end(), p->name) != state.onlyViewA.end()) {
-            below += ImGui::CalcTextSize(kOnlyViewA, nullptr, false, wrap).y + style.ItemSpacing.y;
-        }
+        if (state.refusedName == p->name && !state.refusal.empty()) below += lines(state.refusal.c_str());
     }
+    for (const std::string& note : under.notes) below += lines(note.c_str());
+    for (const std::string& alarm : under.alarms) below += lines(alarm.c_str());
     return below;
 }
 
+// Under the presented sliders: "view A only" once (under each slider it took two lines a
+// slider), "t = 3.450 s, paused" (a paused scene looked frozen), and the lit alarms (a ball
+// that fell through the floor was simply gone).
+UnderText underPresentedText(const std::vector<const scenes::Parameter*>& sliders, const PanelState& state,
+                             const Readouts& r, const std::vector<Readouts::Alarm>& alarms) {
+    UnderText under;
+    const bool viewA = std::any_of(sliders.begin(), sliders.end(), [&](const scenes::Parameter* p) {
+        return std::find(state.onlyViewA.begin(), state.onlyViewA.end(), p->name) != state.onlyViewA.end();
+    });
+    if (viewA) under.notes.push_back(kOnlyViewA);
+    char status[96];
+    std::snprintf(status, sizeof status, "t = %.3f s, %s", r.time, r.paused ? "paused (P runs, O steps)" : "running");
+    under.notes.push_back(status);
+    for (const Readouts::Alarm& alarm : alarms) {
+        if (alarm.lit) under.alarms.push_back(alarm.text);
+    }
+    return under;
+}
+
 // The presentation layout: the scene's text and its claims scroll; only the sliders the text
-// names and the keys stay in sight under them (a long text pushed them off at 720 lines).
-void presentedPanel(const scenes::Scene& scene, const Readouts& readouts, PanelState& state,
-                    PanelActions& actions) {
+// names, the run's state, its alarms and the keys stay in sight under them (a long text
+// pushed them off at 720 lines).
+// `alarms` as alarmsToShow keeps them: a new one waits for the pointer to leave the panel,
+// so that the sliders do not move up under it.
+void presentedPanel(const scenes::Scene& scene, const Readouts& readouts, const std::vector<Readouts::Alarm>& alarms,
+                    PanelState& state, PanelActions& actions) {
     std::vector<const scenes::Parameter*> sliders;
     for (const std::string& name : scenes::slidersToMove(scene)) {
         const scenes::Parameter* p = scenes::findParameter(name);
         if (p && p->availableIn(scene)) sliders.push_back(p);
     }
-    const char* keys = "Esc: all controls  P: pause  R: restart  [ ]: preset";
     const bool labelsAbove = labelsAboveSliders(sliders);
-    const float below = heightUnderText(sliders, state, labelsAbove, keys);
+    const UnderText under = underPresentedText(sliders, state, readouts, alarms);
+    const float below = heightUnderText(sliders, state, labelsAbove, under);
     ImGui::BeginChild("presented", ImVec2(0.0f, -below));
     scrollToTopIfAsked(state);
     sceneText(scene);
@@ -576,9 +604,18 @@ void presentedPanel(const scenes::Scene& scene, const Readouts& readouts, PanelS
     ImGui::EndChild();
     ImGui::Separator();
     pushItemWidth();
+    std::vector<std::string> onlyViewA;
+    std::swap(onlyViewA, state.onlyViewA);  // said once, under the sliders
     for (const scenes::Parameter* p : sliders) parameterWidget(*p, scene, state, actions, labelsAbove);
+    std::swap(onlyViewA, state.onlyViewA);
     ImGui::PopItemWidth();
-    wrappedColored(ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled), keys);
+    for (std::size_t k = 0; k < under.notes.size(); ++k) {
+        const bool status = k + 1 == under.notes.size();
+        wrappedColored(status && readouts.paused ? kNoteOrange : ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled),
+                       under.notes[k]);
+    }
+    for (const std::string& alarm : under.alarms) wrappedColored(kAlarmLit, alarm);
+    wrappedColored(ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled), under.keys);
 }
 
 }  // namespace
@@ -626,7 +663,7 @@ PanelActions drawControlPanel(const scenes::Scene& scene, double& timeScale, con
                  ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
     state.pointerOverPanel = ImGui::IsWindowHovered(ImGuiHoveredFlags_ChildWindows | ImGuiHoveredFlags_AllowWhenBlockedByActiveItem);
     if (state.present) {
-        presentedPanel(scene, readouts, state, actions);
+        presentedPanel(scene, readouts, alarms, state, actions);
         ImGui::End();
         return actions;
     }
