@@ -211,8 +211,13 @@ void drawExplainer(const Placement& placement, const ExplainerInput& input, Tool
                    ToolActions& actions) {
     if (!state.explainer || input.selected < 0 || !input.events || !input.params) return;
     place(placement);
-    char title[64];
-    std::snprintf(title, sizeof title, "Explain this contact: sphere #%d###explainer", input.selected);
+    char title[80];
+    if (input.view != '\0') {  // side by side: which view's contact it is (a presented dock has no inspector)
+        std::snprintf(title, sizeof title, "Explain this contact: sphere #%d in view %c###explainer", input.selected,
+                      input.view);
+    } else {
+        std::snprintf(title, sizeof title, "Explain this contact: sphere #%d###explainer", input.selected);
+    }
     bool open = true;
     ImGui::Begin(title, &open, kFixed | ImGuiWindowFlags_NoCollapse);
     if (!open) actions.toggleExplainer = true;
@@ -223,7 +228,7 @@ void drawExplainer(const Placement& placement, const ExplainerInput& input, Tool
         ImGui::TextWrapped(input.frameRecalled ? "Sphere #%d touched nothing in the frame shown, nor since. %s"
                                                : "No contact of sphere #%d recorded since it was selected. %s",
                            input.selected,
-                           input.paused ? "Step with O until it touches something."
+                           input.paused ? "Step with O until it touches something, or back with \u2190 to a contact it had."
                                         : "It is explained here after its next contact.");
     }
     if (events.empty()) {
@@ -374,8 +379,8 @@ ToolActions drawInteractionWindows(const Session& session, const WindowLayout& l
                             selected >= 0 && static_cast<std::size_t>(selected) < world.size();
     const int level = showsLevel ? simulation.contactGraph().level[std::size_t(selected)] : kLevelNotShown;
     state.inspectorHeight = 0.0f;
+    const char view = comparison ? char('A' + session.selectedView()) : '\0';
     if (!layout.inspector.empty()) {
-        const char view = comparison ? char('A' + session.selectedView()) : '\0';
         state.inspectorHeight = drawInspector(docked(layout.inspector, true), world, selected, view,
                                               session.run(0).paused, level, state, actions);
     } else if (selected >= 0) {
@@ -386,7 +391,7 @@ ToolActions drawInteractionWindows(const Session& session, const WindowLayout& l
         drawExplainer(docked(layout.explainer, false),
                       {selected, &contacts.events, contacts.time, contacts.steps, world.time, world.boxPlaneCount,
                        &simulation.params(), session.run(0).paused, world.recordContacts, contacts.frameRecalled,
-                       &contacts.solvedTogether},
+                       &contacts.solvedTogether, view},
                       state, actions);
     }
     for (std::size_t k = 0; k < labels.size() && k < std::size_t(kMostViews); ++k) {

@@ -98,6 +98,7 @@ struct ExplainerInput {
     bool recording = true;  // world.recordContacts: Simulation records while a sphere is selected
     bool frameRecalled = false;  // Session::Contacts': the frame shown was run again at the selection
     const std::vector<physics::ContactEvent>* solvedTogether = nullptr;  // Session::Contacts'
+    char view = '\0';  // side by side: the view whose sphere it explains ('A'...), else '\0'
 };
 
 // The other sphere of the contact the explainer shows (ringed in magenta), or -1:
