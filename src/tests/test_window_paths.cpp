@@ -296,6 +296,9 @@ TEST(WindowPaths, AClickThatMissesASphereKeepsTheExplanation) {
     camera.reset(glm::vec3(-1.0f, -1.0f, 0.0f), glm::vec3(1.0f, 1.0f, 2.0f), views.aspect());
     const ImVec2 sky(5.0f, 5.0f);  // the top left corner: above the box
     ASSERT_LT(app::pickSphere(simulation.world(), views.ray(camera, 0, glm::vec2(sky.x, sky.y))), 0);
+    input.toggleExplainer();  // E with nothing selected: said, not ignored
+    EXPECT_FALSE(input.tools().explainer);
+    EXPECT_NE(input.tools().message.find("click a sphere first"), std::string::npos) << input.tools().message;
     session.select(3);
     input.toggleExplainer();
     clickAt(input, views, camera, sky);

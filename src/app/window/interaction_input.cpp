@@ -133,8 +133,12 @@ bool InteractionInput::applyCompare(double now) {
     return true;
 }
 
-void InteractionInput::toggleExplainer() {
-    if (session_.selected() >= 0 || tools_.explainer) tools_.explainer = !tools_.explainer;
+void InteractionInput::toggleExplainer(double now) {
+    if (session_.selected() >= 0 || tools_.explainer) {
+        tools_.explainer = !tools_.explainer;
+        return;
+    }
+    say(now, "E explains a sphere's contact: click a sphere first");  // nothing happened, and nothing said why
 }
 
 bool InteractionInput::backOut() {

@@ -35,8 +35,8 @@ public:
     // Side by side with the overrides' field, on or again; says what the views differ
     // in, or that they do not. False when refused (the runs stay as they were).
     bool applyCompare(double now);
-    // E: the explainer, for the selected sphere.
-    void toggleExplainer();
+    // E: the explainer, for the selected sphere; with none selected, says to click one.
+    void toggleExplainer(double now = 0.0);
     // Esc (after the presentation layout): closes the explainer, else deselects the
     // sphere. False when nothing was open: Esc never ends the session.
     bool backOut();

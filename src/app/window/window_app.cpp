@@ -307,7 +307,7 @@ void WindowApp::handleKey(int key, int mods) {
         case GLFW_KEY_RIGHT: session_.stepForward(); break;
         case GLFW_KEY_F: input_.shoot(layout().views, camera_, true, window_->time()); break;
         case GLFW_KEY_V: if (input_.toggleCompare(window_->time())) fitCamera(); break;
-        case GLFW_KEY_E: input_.toggleExplainer(); break;
+        case GLFW_KEY_E: input_.toggleExplainer(window_->time()); break;
         case GLFW_KEY_TAB: panel_.visible = !panel_.visible; break;
         case GLFW_KEY_F5: togglePresentation(); break;
         case GLFW_KEY_F12: screenshotRequested_ = true; break;
