@@ -387,6 +387,23 @@ TEST(SideBySide, EachViewMeasuresWhatTheTextSaysOfIt) {
     EXPECT_EQ(app::makeReadouts(simulation, ui::FrameTimes{}).claimsWatched, simulation.claimsWatched());
 }
 
+// Presented on a projector, 16's labels say what each solver breaks, the slide's lesson in
+// one line of large type (the five marks broke inside their words): A the symmetry, B the
+// energy, C and D nothing.
+TEST(SideBySide, PresentedLabelsSayWhatEachSolverBreaks) {
+    app::Simulation simulation(scenes::loadScene(scenes::presetPath("16_bernoulli")));
+    app::Session session(simulation);
+    session.sceneChanged();
+    ASSERT_EQ(session.runCount(), 4);
+    while (simulation.world().time < 0.5) session.advance(1.0 / 30.0);
+    const auto labels = app::comparisonReadouts(simulation, *session.comparison(), app::LabelLines::Presented);
+    const std::vector<std::string> expected{"\u2717 symmetry", "\u2717 energy", "\u2713 nothing broken", "\u2713 nothing broken"};
+    for (std::size_t k = 0; k < 4; ++k) {
+        ASSERT_FALSE(labels[k].empty());
+        EXPECT_EQ(labels[k].back(), expected[k]) << k;
+    }
+}
+
 // Slide 7's three answers side by side at a coarse step: each view's label (the projector's
 // too) shows its newest floor bounce's apex ratio beside beta^2, the lesson of 14's text: A
 // (projection) under 0.64, B (reflection) above it by then, C (back to the contact) 0.640.

@@ -101,6 +101,19 @@ void appendProperties(const ViewReadout& view, std::vector<std::string>& lines) 
     }
 }
 
+// The marks' line as a projector shows it: what the solver breaks ("✗ symmetry, energy"),
+// or "✓ nothing broken" (five marks in large type broke inside their words).
+std::string brokenProperties(const std::string& marks) {
+    const std::string broken = "\u2717\u00a0";
+    std::string names;
+    for (std::size_t at = marks.find(broken); at != std::string::npos; at = marks.find(broken, at + 1)) {
+        const std::size_t name = at + broken.size();
+        const std::size_t end = std::min(marks.find_first_of(" \n", name), marks.size());
+        names += (names.empty() ? "" : ", ") + marks.substr(name, end - name);
+    }
+    return names.empty() ? "\u2713 nothing broken" : "\u2717 " + names;
+}
+
 }  // namespace
 
 std::vector<std::string> viewReadoutLines(const ViewReadout& view) {
@@ -135,13 +148,17 @@ std::vector<std::string> compactLines(const ViewReadout& view) {
 
 // Presented, a label is short lines in large type: what the slides compare, the energy
 // (slide 14's simultaneous solver makes it grow) and the deepest penetration (slide 7's
-// answers, slide 14's sweep).
+// answers, slide 14's sweep); where the views compare solvers, the five properties too
+// (slide 14's lesson: sequential breaks the symmetry, simultaneous creates energy).
 std::vector<std::string> presentedLines(const ViewReadout& view) {
     char energy[64], penetration[64];  // a number and its unit joined by no-break spaces (U+00A0)
     std::snprintf(energy, sizeof energy, "E~ %.4g\u00a0J", view.diagnostics.modified);
     std::snprintf(penetration, sizeof penetration, "penetration %.2f\u00a0%%\u00a0r", 100.0 * view.diagnostics.maxPenetration);
     std::vector<std::string> lines{view.title, energy, penetration};
     if (view.bouncesMeasured) lines.push_back(apexRatioLine(view, "\u00a0"));
+    if (view.title.find("solver =") != std::string::npos && !view.properties.empty()) {
+        lines.push_back(brokenProperties(view.properties));
+    }
     return lines;
 }
 

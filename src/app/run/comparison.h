@@ -85,7 +85,8 @@ struct ViewReadout {
 // apex ratio where bounces are measured, the solver's work, and the five properties' marks
 // when there are any.
 std::vector<std::string> viewReadoutLines(const ViewReadout& view);
-// The presentation layout's: the title, E~, the penetration and the apex ratio, short lines.
+// The presentation layout's: the title, E~, the penetration and the apex ratio, short lines,
+// and the properties' marks where the views compare solvers.
 std::vector<std::string> presentedLines(const ViewReadout& view);
 // Beside the dock (a sphere inspected or explained), where four full labels left thumbnails:
 // the title, E~ with the penetration, and the properties' marks.
