@@ -90,7 +90,10 @@ std::string overrideVariants(const Scene& scene, const std::vector<std::string>&
             }
             continue;
         }
-        if (settings.empty()) return "'" + part + "' has no name: write name=value,value";
+        if (settings.empty()) {
+            return findParameter(part) ? "'" + part + "' has no value: write " + part + "=value"
+                                       : "'" + part + "' has no name: write name=value,value";
+        }
         settings.back().second.push_back(part);
     }
     // A view per combination of the values: the names with several first (their values

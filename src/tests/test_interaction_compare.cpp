@@ -153,6 +153,7 @@ TEST(SideBySide, ANameWithSeveralValuesMakesAViewEach) {
     ASSERT_EQ(app::overrideVariants(scene, {"beta=0.5", "beta=0.2,0.3"}, variants), "");
     EXPECT_EQ(variants, (app::Variants{{"beta=0.5"}, {"beta=0.2"}, {"beta=0.3"}}));
     EXPECT_EQ(app::overrideVariants(scene, {"reflection"}, variants), "'reflection' has no name: write name=value,value");
+    EXPECT_EQ(app::overrideVariants(scene, {"order"}, variants), "'order' has no value: write order=value");
     EXPECT_EQ(app::overrideVariants(scene, {"method=velocity,reflection,beta=0.5,0.6"}, variants),
               "at most 4 views: A and 3 others");  // four combinations, none of them A's
     // Two names with two values each: a view per combination, the one A shows left out.

@@ -567,7 +567,7 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_overlays() {
 
 // The run now: {"time_s", "steps", "spheres", "hash", "paused" (by the page, or by an
 // alarm: a value not finite), "time_scale", "camera": {"azimuth_rad", "elevation_rad",
-// "distance_m"}, "kinetic_J", "potential_J", "penetration_r",
+// "distance_m"}, "kinetic_J", "potential_J", "momentum_kg_m_s" ([x, y, z]), "penetration_r",
 // "behind_real_time", "views" (side by side: each view's label lines and its presented ones, viewsOf), "only_view_a"
 // (side by side: the parameters every other view sets, Comparison::setInEveryView), "selected"
 // (selectedOf), "timeline" (timelineOf), "claims" (claimsOf), "suggested_compare" (what the
@@ -588,6 +588,7 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_state() {
                                {"distance_m", v.camera.distance}}},
                    {"kinetic_J", d.kinetic},
                    {"potential_J", d.potential},
+                   {"momentum_kg_m_s", {d.momentum.x, d.momentum.y, d.momentum.z}},
                    {"penetration_r", d.maxPenetration},
                    {"behind_real_time", v.simulation->behindRealTime()},
                    {"views", viewsOf(v)},

@@ -152,9 +152,9 @@ std::string propertiesLine(const std::vector<PropertyVerdict>& verdicts) {
 }
 
 std::string propertiesMarks(const std::vector<PropertyVerdict>& verdicts) {
-    // Five dashes said nothing to a student: before any impact, one line that says why.
+    // Five dashes said nothing to a student: one line while no impact has tested any of them.
     if (std::all_of(verdicts.begin(), verdicts.end(), [](const PropertyVerdict& v) { return v.verdict == Verdict::Untested; })) {
-        return "properties: no impact measured yet";
+        return "properties: none tested yet";
     }
     std::string line;
     for (std::size_t k = 0; k < verdicts.size(); ++k) {

@@ -201,6 +201,16 @@ try {
   run = await until((s) => s.time_scale !== 1);
   check('the time scale slider slows the run to 0.25 x', run.time_scale === 0.25 && (await text('time-scale-shown')) === '0.25 x',
         run.time_scale + ', shown ' + (await text('time-scale-shown')));
+  // A value typed beside a slider: ε 0-10 m/s on a slider cannot reach a text's "0.01".
+  const epsilon = () => js("JSON.parse(call('spheres_parameters', 'string', [], [])).find((p) => p.name === 'epsilon').value");
+  await js(`(() => { const f = document.querySelector('#controls label[data-name=epsilon] input.typed');
+                     f.value = '0.01'; f.dispatchEvent(new Event('change')); })()`);
+  check('ε typed beside its slider: 0.01', Math.abs((await epsilon()) - 0.01) < 1e-12, 'ε = ' + (await epsilon()));
+  await js(`(() => { const f = document.querySelector('#controls label[data-name=epsilon] input.typed');
+                     f.value = 'abc'; f.dispatchEvent(new Event('change')); })()`);
+  const notANumber = await text('refusal');
+  check('ε typed abc: refused in one line, ε kept', notANumber === 'epsilon = abc: not a number' &&
+        Math.abs((await epsilon()) - 0.01) < 1e-12, notANumber);
   await key('p', 'KeyP', 80);
   await js("document.getElementById('plots').open = true");
   await until((s) => s.time_s > t0 + 0.2);
@@ -240,12 +250,13 @@ try {
   await send('Emulation.setTouchEmulationEnabled', { enabled: false });
 
   // What the panel tells beside the view, as the desktop's: the scene's text measured (the
-  // cradle's seven claims, none failed), and an invariant alarm, lit, with why under it
-  // (the velocity-based bounce at beta = 1 gains energy at its first bounce, t = 0.55 s).
+  // cradle's 16 claims at its own settings, none failed, the last at 1.6 s), and an invariant
+  // alarm, lit, with why under it (the velocity-based bounce at beta = 1 gains energy at its
+  // first bounce, t = 0.55 s).
   await navigate('scene=08_newtons_cradle');
-  run = await until((s) => s.claims && s.claims.lines.length === 7, 30000);
+  run = await until((s) => s.claims && s.claims.lines.length === 16, 30000);
   const claims = await text('claims-count');
-  check('the cradle\'s text, measured: 7 claims held', claims === 'The text, measured: 7 ✓ 0 ✗ of 7' &&
+  check('the cradle\'s text, measured: 16 claims held', claims === 'The text, measured: 16 ✓ 0 ✗ of 16' &&
         !(await js("document.getElementById('claims').hidden")), claims);
   await navigate('scene=02_bounce_projection&method=velocity&beta=1');
   run = await until((s) => s.alarms && s.alarms.length > 0, 30000);
