@@ -102,8 +102,9 @@ TEST(WindowInteraction, PresentingAnExplanationTakesThePanelsPlace) {
     ASSERT_FALSE(path.empty());
     const render::Image image = load(path);
     const auto sky = [](glm::u8vec4 p) { return !notSky(p); };
-    EXPECT_GT(fraction(image, 20, 250, 290, 380, sky), 0.8) << "view A, left where the panel was";
-    EXPECT_GT(fraction(image, 980, 250, 1260, 380, sky), 0.8) << "view D";
+    const auto titleBlue = [](glm::u8vec4 p) { return p.z > 100 && p.z > p.x + 50; };  // the panel's title bar
+    EXPECT_LT(fraction(image, 0, 2, 570, 30, titleBlue), 0.2) << "the panel's title bar is gone";
+    EXPECT_GT(fraction(image, 0, 0, 570, 400, sky), 0.1) << "a view where the panel was";
     EXPECT_GT(fraction(image, 20, 480, 1260, 700, notSky), 0.8) << "the explanation, the window's width";
 }
 

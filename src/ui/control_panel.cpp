@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include <glm/geometric.hpp>
 #include <imgui.h>
 #include <imgui_internal.h>  // TempInputIsActive: a number typed into a slider
 #include <imgui_stdlib.h>
@@ -545,6 +546,7 @@ bool labelsAboveSliders(const std::vector<const scenes::Parameter*>& sliders) {
 struct UnderText {
     std::vector<std::string> notes;   // the view-A note (once), then the run's state
     std::vector<std::string> alarms;  // the lit alarms' headlines
+    float restitutionHeight = 0.0f;   // under β, its measured apex ratios (measuredRestitution)
     const char* keys = "Esc: all controls  P: pause  R: restart  [ ]: preset";
 };
 
@@ -559,6 +561,7 @@ float heightUnderText(const std::vector<const scenes::Parameter*>& sliders, cons
         if (state.refusedName == p->name && !state.refusal.empty()) below += lines(state.refusal.c_str());
     }
     for (const std::string& note : under.notes) below += lines(note.c_str());
+    below += under.restitutionHeight;
     for (const std::string& alarm : under.alarms) below += lines(alarm.c_str());
     return below;
 }
@@ -573,6 +576,21 @@ UnderText underPresentedText(const std::vector<const scenes::Parameter*>& slider
         return std::find(state.onlyViewA.begin(), state.onlyViewA.end(), p->name) != state.onlyViewA.end();
     });
     if (viewA) under.notes.push_back(kOnlyViewA);
+    if (std::any_of(sliders.begin(), sliders.end(), [](const scenes::Parameter* p) { return p->name == "beta"; })) {
+        // "β² = 0.640   measured ≈ ..." on a line, or "β² = 0.640" and its note wrapped under it
+        const float wrap = ImGui::GetContentRegionAvail().x;
+        under.restitutionHeight = ImGui::GetTextLineHeightWithSpacing();
+        if (r.measuredBetaSquared.empty() && !r.restitutionNote.empty()) {
+            under.restitutionHeight += ImGui::CalcTextSize(r.restitutionNote.c_str(), nullptr, false, wrap).y +
+                                       ImGui::GetStyle().ItemSpacing.y;
+        }
+    }
+    // The numbers the texts point at ("the momentum readout", "kinetic energy falls to 18 %"),
+    // which the full layout's readouts show (view A's, side by side).
+    char numbers[160];
+    std::snprintf(numbers, sizeof numbers, "kinetic\u00a0%.4g\u00a0J   E~\u00a0%.5g\u00a0J   |p|\u00a0%.4g\u00a0kg\u00a0m/s",
+                  r.diagnostics.kinetic, r.diagnostics.modified, glm::length(r.diagnostics.momentum));
+    under.notes.push_back(numbers);
     char status[96];
     std::snprintf(status, sizeof status, "t = %.3f s, %s", r.time, r.paused ? "paused (P runs, O steps)" : "running");
     under.notes.push_back(status);
@@ -595,20 +613,38 @@ void presentedPanel(const scenes::Scene& scene, const Readouts& readouts, const 
         if (p && p->availableIn(scene)) sliders.push_back(p);
     }
     const bool labelsAbove = labelsAboveSliders(sliders);
-    const UnderText under = underPresentedText(sliders, state, readouts, alarms);
-    const float below = heightUnderText(sliders, state, labelsAbove, under);
+    UnderText under = underPresentedText(sliders, state, readouts, alarms);
+    // The sliders stay in sight under the text while they leave it at least half the panel;
+    // else (five sliders with their labels above at 1024x768 left it two lines) they scroll
+    // with it, under it.
+    float below = heightUnderText(sliders, state, labelsAbove, under);
+    const bool slidersScroll = below > 0.5f * ImGui::GetContentRegionAvail().y;
+    if (slidersScroll) {
+        under.restitutionHeight = 0.0f;  // under β, with it
+        below = heightUnderText({}, state, labelsAbove, under);
+    }
+    const auto drawSliders = [&] {
+        pushItemWidth();
+        std::vector<std::string> onlyViewA;
+        std::swap(onlyViewA, state.onlyViewA);  // said once, under the sliders
+        for (const scenes::Parameter* p : sliders) {
+            parameterWidget(*p, scene, state, actions, labelsAbove);
+            if (p->name == "beta") measuredRestitution(readouts);  // 02's "comes back to about β²"
+        }
+        std::swap(onlyViewA, state.onlyViewA);
+        ImGui::PopItemWidth();
+    };
     ImGui::BeginChild("presented", ImVec2(0.0f, -below));
     scrollToTopIfAsked(state);
     sceneText(scene);
     measuredClaims(readouts);
+    if (slidersScroll) {
+        ImGui::Separator();
+        drawSliders();
+    }
     ImGui::EndChild();
     ImGui::Separator();
-    pushItemWidth();
-    std::vector<std::string> onlyViewA;
-    std::swap(onlyViewA, state.onlyViewA);  // said once, under the sliders
-    for (const scenes::Parameter* p : sliders) parameterWidget(*p, scene, state, actions, labelsAbove);
-    std::swap(onlyViewA, state.onlyViewA);
-    ImGui::PopItemWidth();
+    if (!slidersScroll) drawSliders();
     for (std::size_t k = 0; k < under.notes.size(); ++k) {
         const bool status = k + 1 == under.notes.size();
         wrappedColored(status && readouts.paused ? kNoteOrange : ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled),

@@ -102,7 +102,8 @@ void appendProperties(const ViewReadout& view, std::vector<std::string>& lines) 
 }
 
 // The marks' line as a projector shows it: what the solver breaks ("✗ symmetry, energy"),
-// or "✓ nothing broken" (five marks in large type broke inside their words).
+// "✓ nothing broken", or "– none tested yet" (five marks in large type broke inside their
+// words).
 std::string brokenProperties(const std::string& marks) {
     const std::string broken = "\u2717\u00a0";
     std::string names;
@@ -111,7 +112,8 @@ std::string brokenProperties(const std::string& marks) {
         const std::size_t end = std::min(marks.find_first_of(" \n", name), marks.size());
         names += (names.empty() ? "" : ", ") + marks.substr(name, end - name);
     }
-    return names.empty() ? "\u2713 nothing broken" : "\u2717 " + names;
+    if (!names.empty()) return "\u2717 " + names;
+    return marks.find("\u2713") != std::string::npos ? "\u2713 nothing broken" : "\u2013 none tested yet";
 }
 
 }  // namespace

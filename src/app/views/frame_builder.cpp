@@ -69,7 +69,7 @@ std::string restitutionNote(const Simulation& simulation) {
     if (measuredSpheres(world, simulation.selectedSphere()).empty()) {
         // More spheres than the meter follows (the tooltip: or the selected sphere): the value
         // beside is the β² set, not a measure.
-        return "(not measured: more than " + std::to_string(kMaxMeasuredSpheres) + " spheres; select one to measure it)";
+        return "(over " + std::to_string(kMaxMeasuredSpheres) + " spheres: select one to measure)";
     }
     if (!world.recordContacts) return "(not measured above " + std::to_string(kMaxRecordSpheres) + " spheres)";
     const std::optional<BounceMeasurement>& latest = simulation.restitution().latest();
