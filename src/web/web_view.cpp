@@ -150,12 +150,16 @@ void selectSphere(LiveView& v, int index) {
 }
 
 // Side by side's views: {"views": [{"lines": [label, readouts...], "presented": [label, E~,
-// penetration]}, ...]} (none when off; "presented": the presentation layout's, as F5).
+// penetration]}, "compact": [label, E~ and penetration, marks]}, ...]} (none when off;
+// "presented": the presentation layout's, as F5; "compact": four views in two rows, where
+// the full lines were cut off).
 Json viewsOf(const LiveView& v) {
     Json views = Json::array();
     if (!v.session->comparison()) return views;
     for (const app::ViewReadout& view : app::viewReadouts(v.session->run(0), *v.session->comparison())) {
-        views.push_back({{"lines", app::viewReadoutLines(view)}, {"presented", app::presentedLines(view)}});
+        views.push_back({{"lines", app::viewReadoutLines(view)},
+                         {"presented", app::presentedLines(view)},
+                         {"compact", app::compactLines(view)}});
     }
     return views;
 }
