@@ -544,7 +544,8 @@ bool labelsAboveSliders(const std::vector<const scenes::Parameter*>& sliders) {
 // the lines parameterWidget adds under it.
 // What stays in sight under the presented text: the lines it takes, each wrapped to the panel.
 struct UnderText {
-    std::vector<std::string> notes;   // the view-A note (once), then the run's state
+    std::vector<std::string> notes;   // the view-A note (once), the numbers the texts point at
+    std::string status;               // "t = 3.450 s, paused (P runs, O steps)"
     std::vector<std::string> alarms;  // the lit alarms' headlines
     float restitutionHeight = 0.0f;   // under β, its measured apex ratios (measuredRestitution)
     const char* keys = "Esc: all controls  P: pause  R: restart  [ ]: preset";
@@ -561,7 +562,7 @@ float heightUnderText(const std::vector<const scenes::Parameter*>& sliders, cons
         if (state.refusedName == p->name && !state.refusal.empty()) below += lines(state.refusal.c_str());
     }
     for (const std::string& note : under.notes) below += lines(note.c_str());
-    below += under.restitutionHeight;
+    below += lines(under.status.c_str()) + under.restitutionHeight;
     for (const std::string& alarm : under.alarms) below += lines(alarm.c_str());
     return below;
 }
@@ -593,7 +594,7 @@ UnderText underPresentedText(const std::vector<const scenes::Parameter*>& slider
     under.notes.push_back(numbers);
     char status[96];
     std::snprintf(status, sizeof status, "t = %.3f s, %s", r.time, r.paused ? "paused (P runs, O steps)" : "running");
-    under.notes.push_back(status);
+    under.status = status;
     for (const Readouts::Alarm& alarm : alarms) {
         if (alarm.lit) under.alarms.push_back(alarm.text);
     }
@@ -645,11 +646,8 @@ void presentedPanel(const scenes::Scene& scene, const Readouts& readouts, const 
     ImGui::EndChild();
     ImGui::Separator();
     if (!slidersScroll) drawSliders();
-    for (std::size_t k = 0; k < under.notes.size(); ++k) {
-        const bool status = k + 1 == under.notes.size();
-        wrappedColored(status && readouts.paused ? kNoteOrange : ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled),
-                       under.notes[k]);
-    }
+    for (const std::string& note : under.notes) wrappedColored(ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled), note);
+    wrappedColored(readouts.paused ? kNoteOrange : ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled), under.status);
     for (const std::string& alarm : under.alarms) wrappedColored(kAlarmLit, alarm);
     wrappedColored(ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled), under.keys);
 }
