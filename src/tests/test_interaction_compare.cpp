@@ -403,6 +403,15 @@ TEST(SideBySide, PresentedLabelsSayWhatEachSolverBreaks) {
         ASSERT_FALSE(labels[k].empty());
         EXPECT_EQ(labels[k].back(), expected[k]) << k;
     }
+    // Titled by the values alone where the views differ in one name (the slider names it):
+    // "solver = generalized-reflections" took four lines of large type.
+    EXPECT_EQ(labels[0].front(), "A   sequential");
+    EXPECT_EQ(labels[3].front(), "D   generalized-reflections");
+    app::Simulation column(scenes::loadScene(scenes::presetPath("21_shock_column")));
+    app::Session columns(column);
+    columns.sceneChanged();
+    const auto twoNames = app::comparisonReadouts(column, *columns.comparison(), app::LabelLines::Presented);
+    EXPECT_EQ(twoNames[0].front(), "A   shock = off, passes = 1") << "two names: both said";
 }
 
 // Slide 7's three answers side by side at a coarse step: each view's label (the projector's

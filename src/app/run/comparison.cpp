@@ -101,6 +101,27 @@ void appendProperties(const ViewReadout& view, std::vector<std::string>& lines) 
     }
 }
 
+// Presented, views that differ in one name are titled by its values alone, "B  simultaneous"
+// (the panel's slider names it): "solver = generalized-reflections" took four lines of large
+// type in a quarter of a projector, and the labels their views' room.
+void dropSharedName(std::vector<std::vector<std::string>>& views) {
+    // A title is its letter, spaces, then "name = value" ("A   solver = sequential").
+    const auto nameAt = [](const std::string& title) { return std::min(title.find_first_not_of(' ', 1), title.size()); };
+    std::string name;
+    for (const std::vector<std::string>& lines : views) {
+        const std::string& title = lines.front();
+        const std::size_t equals = title.find(" = ");
+        if (equals == std::string::npos || title.find(", ") != std::string::npos || equals < nameAt(title)) return;
+        const std::string own = title.substr(nameAt(title), equals - nameAt(title));
+        if (!name.empty() && own != name) return;
+        name = own;
+    }
+    for (std::vector<std::string>& lines : views) {
+        std::string& title = lines.front();
+        title = title.substr(0, nameAt(title)) + title.substr(title.find(" = ") + 3);
+    }
+}
+
 // The marks' line as a projector shows it: what the solver breaks ("✗ symmetry, energy"),
 // "✓ nothing broken", or "– none tested yet" (five marks in large type broke inside their
 // words).
@@ -183,6 +204,7 @@ std::vector<std::vector<std::string>> comparisonReadouts(const Simulation& prima
                         : lines == LabelLines::Compact ? compactLines(readout)
                                                        : viewReadoutLines(readout));
     }
+    if (lines == LabelLines::Presented) dropSharedName(views);
     return views;
 }
 
