@@ -215,22 +215,23 @@ namespace {
 std::string workOf(const Simulation& run) {
     const physics::Params& params = run.params();
     const physics::StepStats& s = run.mostWorkAStep();
-    const auto count = [](std::uint64_t n) { return static_cast<unsigned long long>(n); };
-    char line[128] = "";
+    // "1 reflection round", "26 lcp sweeps": the number joined to its noun by a no-break space.
+    const auto counted = [](std::uint64_t n, const char* one, const char* many) {
+        return std::to_string(n) + "\u00a0" + (n == 1 ? one : many);
+    };
+    std::string work;
     if (params.method == physics::Method::Continuous) {
-        std::snprintf(line, sizeof line, "%llu\u00a0impacts", count(s.events));
+        work = counted(s.events, "impact", "impacts");
     } else if (params.solver == physics::Solver::GeneralizedReflections) {
-        std::snprintf(line, sizeof line, "%llu\u00a0reflection rounds", count(s.reflectionRounds));
+        work = counted(s.reflectionRounds, "reflection round", "reflection rounds");
     } else if (physics::solvesGlobally(params.solver)) {
-        std::snprintf(line, sizeof line, "%llu\u00a0lcp sweeps", count(s.lcpSweeps));
+        work = counted(s.lcpSweeps, "lcp sweep", "lcp sweeps");
     } else if (params.solver == physics::Solver::UntilConverged) {
-        std::snprintf(line, sizeof line, "%llu\u00a0passes", count(s.passesUsed));
+        work = counted(s.passesUsed, "pass", "passes");
     }
-    std::string work = line;
     if (params.shock == physics::ShockPropagation::On && physics::sweepsLevels(params.method)) {
-        std::snprintf(line, sizeof line, "%llu\u00a0shock levels, %llu\u00a0rounds", count(s.shockLevels),
-                      count(s.shockRounds));
-        work += (work.empty() ? "" : ", ") + std::string(line);
+        work += (work.empty() ? "" : ", ") + counted(s.shockLevels, "shock level", "shock levels") + ", " +
+                counted(s.shockRounds, "round", "rounds");
     }
     return work.empty() ? work : "most in one step: " + work;
 }
