@@ -84,7 +84,7 @@ TEST(ImpactReport, EachPropertySaysWhatItMeasuredAndWhetherItHolds) {
     EXPECT_EQ(verdictOf(cradle, elastic(), "positivity"), Verdict::Broken);
     EXPECT_EQ(verdictOf(lcp, elastic(), "positivity"), Verdict::Kept);
     const std::string marks = app::propertiesMarks(app::judgeProperties(cradle, {}, elastic()));
-    EXPECT_EQ(marks, "\u2713\u00a0momentum  \u2713\u00a0energy  -\u00a0symmetry\n\u2713\u00a0break-away  \u2717\u00a0positivity");
+    EXPECT_EQ(marks, "\u2713\u00a0momentum  \u2713\u00a0energy  \u2013\u00a0symmetry\n\u2713\u00a0break-away  \u2717\u00a0positivity");
 }
 
 // "Elastic" needs mu = 1 too: at epsilon = 0 a contact with no normal speed is static, and

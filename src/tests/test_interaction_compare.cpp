@@ -472,7 +472,7 @@ TEST(SideBySide, CompactLabelsKeepWhatTheSlidesCompare) {
     EXPECT_EQ(full[1].size(), 7u);
     EXPECT_EQ(compact[1].size(), 4u);
     EXPECT_EQ(compact[1][0], full[1][0]);                                                 // B   solver = simultaneous
-    EXPECT_EQ(compact[1][1], "E~\u00a00.875\u00a0J   penetration\u00a00.00\u00a0%\u00a0r");  // grown 1.75 times
+    EXPECT_EQ(compact[1][1], "E~\u00a00.875\u00a0J   penetration 0.00\u00a0%\u00a0r");  // grown 1.75 times
     EXPECT_EQ(compact[1][2], full[1][5]);                                                 // ✓ momentum  ✗ energy ...
     EXPECT_EQ(compact[1][3], full[1][6]);
 }

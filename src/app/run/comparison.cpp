@@ -149,7 +149,7 @@ std::vector<std::string> viewReadoutLines(const ViewReadout& view) {
     lines.emplace_back(line);
     std::snprintf(line, sizeof line, "p (%.3g, %.3g, %.3g) kg m/s", d.momentum.x, d.momentum.y, d.momentum.z);
     lines.emplace_back(line);
-    std::snprintf(line, sizeof line, "penetration\u00a0%.2f\u00a0%%\u00a0r   t\u00a0%.3f\u00a0s",
+    std::snprintf(line, sizeof line, "penetration %.2f\u00a0%%\u00a0r   t\u00a0%.3f\u00a0s",
                   100.0 * d.maxPenetration, view.time);
     lines.emplace_back(line);
     std::snprintf(line, sizeof line, "hash %016llx", static_cast<unsigned long long>(d.hash));
@@ -162,7 +162,7 @@ std::vector<std::string> viewReadoutLines(const ViewReadout& view) {
 
 std::vector<std::string> compactLines(const ViewReadout& view) {
     char line[160];
-    std::snprintf(line, sizeof line, "E~\u00a0%.6g\u00a0J   penetration\u00a0%.2f\u00a0%%\u00a0r", view.diagnostics.modified,
+    std::snprintf(line, sizeof line, "E~\u00a0%.6g\u00a0J   penetration %.2f\u00a0%%\u00a0r", view.diagnostics.modified,
                   100.0 * view.diagnostics.maxPenetration);
     std::vector<std::string> lines{view.title, line};
     appendProperties(view, lines);

@@ -137,7 +137,7 @@ std::vector<PropertyVerdict> judgeProperties(const ImpactRecord& record,
 namespace {
 
 const char* markOf(Verdict verdict) {
-    return verdict == Verdict::Kept ? "\u2713" : verdict == Verdict::Broken ? "\u2717" : "-";
+    return verdict == Verdict::Kept ? "\u2713" : verdict == Verdict::Broken ? "\u2717" : "\u2013";  // an en dash: a browser breaks a line after a hyphen
 }
 
 }  // namespace
