@@ -1,6 +1,7 @@
 #include "app/window/window_settings.h"
 
 #include <cmath>
+#include <cstdio>
 #include <cstdint>
 #include <cstdlib>
 #include <fstream>
@@ -28,10 +29,12 @@ std::string shown(const Json& value) {
     return text;
 }
 
-// The field's value where it is `kind` and `accept`s it; else its name and value go into
-// `wrong`, and `value` keeps its default.
+// The field's value where it is `kind` and `accept`s it; else its name, its value and what it
+// should be ("show_box \"yes\" (not true or false)") go into `wrong`, and `value` keeps its
+// default.
 template <class T, class Accept>
-void take(const Json& json, const char* field, Json::value_t kind, T& value, const Accept& accept, std::string& wrong) {
+void take(const Json& json, const char* field, Json::value_t kind, const std::string& expected, T& value, const Accept& accept,
+          std::string& wrong) {
     if (!json.contains(field)) return;
     const Json& given = json[field];
     const bool number = kind == Json::value_t::number_float && given.is_number();
@@ -39,7 +42,7 @@ void take(const Json& json, const char* field, Json::value_t kind, T& value, con
         value = given.get<T>();
         return;
     }
-    wrong += std::string(wrong.empty() ? "" : ", ") + field + " " + shown(given);
+    wrong += std::string(wrong.empty() ? "" : ", ") + field + " " + shown(given) + " (not " + expected + ")";
 }
 
 }  // namespace
@@ -66,19 +69,27 @@ WindowSettings readWindowSettings(const fs::path& path, std::string& warning) {
         json = Json::value_t::discarded;
     }
     if (json.is_discarded() || !json.is_object()) {
-        warning = path.string() + ": not a JSON object; the default view settings instead";
+        warning = path.string() + ": not readable as a JSON object; the default view settings instead";
+        // Kept beside it: the settings written at exit would replace what was typed there.
+        const fs::path kept = path.string() + ".unreadable";
+        if (fs::is_regular_file(path, error)) {
+            fs::rename(path, kept, error);
+            if (!error) warning += " (the file is kept as " + kept.filename().string() + ")";
+        }
         return settings;
     }
     std::string wrong;
-    take(json, "ui_scale", Json::value_t::number_float, settings.uiScale, [](const Json& s) {
+    char scales[64];
+    std::snprintf(scales, sizeof scales, "a number from %g to %g", ui::kUiScaleRange[0], ui::kUiScaleRange[1]);
+    take(json, "ui_scale", Json::value_t::number_float, scales, settings.uiScale, [](const Json& s) {
         return s.get<double>() >= ui::kUiScaleRange[0] && s.get<double>() <= ui::kUiScaleRange[1];
     }, wrong);
-    take(json, "color_by", Json::value_t::number_unsigned, settings.colorBy,
+    take(json, "color_by", Json::value_t::number_unsigned, "0, 1 or 2", settings.colorBy,
          [](const Json& c) { return c.get<std::uint64_t>() < kColorings; }, wrong);
     const auto anyBool = [](const Json&) { return true; };
-    take(json, "show_box", Json::value_t::boolean, settings.showBox, anyBool, wrong);
-    take(json, "show_grid", Json::value_t::boolean, settings.showGrid, anyBool, wrong);
-    if (!wrong.empty()) warning = path.string() + ": " + wrong + " out of range; the default instead";
+    take(json, "show_box", Json::value_t::boolean, "true or false", settings.showBox, anyBool, wrong);
+    take(json, "show_grid", Json::value_t::boolean, "true or false", settings.showGrid, anyBool, wrong);
+    if (!wrong.empty()) warning = path.string() + ": " + wrong + "; the default instead";
     return settings;
 }
 
