@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <exception>
+#include <limits>
 #include <stdexcept>
 
 #include <CLI/CLI.hpp>
@@ -22,21 +23,27 @@ constexpr int kBadInput = 2;
 
 // A whole number at least `least`, with a message a person can read (CLI11's own
 // range check prints the largest double in full).
-CLI::Validator wholeNumberFrom(long long least) {
+// A whole number from `least` to `most` (an int option's most: 99999999999 frames gave
+// CLI11's bare "Could not convert").
+CLI::Validator wholeNumberFrom(long long least, long long most = std::numeric_limits<long long>::max()) {
+    const bool bounded = most < std::numeric_limits<long long>::max();
     return CLI::Validator(
-        [least](std::string& text) -> std::string {
+        [least, most, bounded](std::string& text) -> std::string {
             try {
                 std::size_t used = 0;
                 const long long value = std::stoll(text, &used);
-                if (used == text.size() && value >= least) return {};
+                if (used == text.size() && value >= least && value <= most) return {};
             } catch (const std::out_of_range&) {
-                return "is too large a number (got " + text + ")";
+                if (!bounded) return "is too large a number (got " + text + ")";
             } catch (const std::exception&) {
             }
-            return "must be a whole number, " + std::to_string(least) + " or more (got " + text + ")";
+            return "must be a whole number, " + std::to_string(least) +
+                   (bounded ? " to " + std::to_string(most) : std::string(" or more")) + " (got " + text + ")";
         },
         "INT>=" + std::to_string(least));
 }
+
+constexpr long long kMostInt = std::numeric_limits<int>::max();  // an int option's
 
 void addSimulate(CLI::App& cli, SimulateOptions& o) {
     CLI::App* sim = cli.add_subcommand("simulate", "Run a scene without any window or GL and print a summary");
@@ -54,9 +61,11 @@ void addCapture(CLI::App& cli, CaptureOptions& o) {
     cap->add_option("--scene", o.scene, "Scene file or preset name (see `spheres presets`)")->required();
     cap->add_option("--set", o.settings, "Override a parameter: name=value (repeatable)");
     cap->add_option_function<int>("--frames", [&o](const int& n) { o.frames = n; },
-                                  "Run N frames of 1/60 s (frame 0 = the initial state) and write frames 0 .. N-1");
+                                  "Run N frames of 1/60 s (frame 0 = the initial state) and write frames 0 .. N-1")
+        ->check(wholeNumberFrom(1, kMostCapturedFrames));
     cap->add_option_function<int>("--every", [&o](const int& k) { o.every = k; },
-                                  "With --frames: write only frames 0, K, 2K, ... (default 1)");
+                                  "With --frames: write only frames 0, K, 2K, ... (default 1)")
+        ->check(wholeNumberFrom(1, kMostCapturedFrames));
     cap->add_option_function<std::string>("--at", [&o](const std::string& list) { o.at = list; },
                                           "Instead of --frames: write these frames, e.g. 0,30,120 (increasing)");
     cap->add_option("--out", o.out, "Folder for frame_NNNNNN.png and manifest.json (created if missing)")->required();
@@ -85,7 +94,7 @@ void addClaims(CLI::App& cli, ClaimsOptions& o) {
 void addWindowOptions(CLI::App& cli, WindowAppOptions& o) {
     cli.add_option("--scene", o.scene, "Scene file or preset name (see `spheres presets`; default 11_pile)");
     cli.add_option("--set", o.settings, "Override a parameter: name=value (repeatable)");
-    cli.add_option("--frames", o.frames, "Run this many frames, then exit")->check(wholeNumberFrom(1));
+    cli.add_option("--frames", o.frames, "Run this many frames, then exit")->check(wholeNumberFrom(1, kMostInt));
     cli.add_option("--screenshot", o.screenshot, "Write the last frame to this PNG file");
     cli.add_flag("--paused", o.paused, "Start paused");
     cli.add_option("--width", o.width, "Window width (screen coordinates)")->check(CLI::Range(320, 8192));
@@ -93,7 +102,7 @@ void addWindowOptions(CLI::App& cli, WindowAppOptions& o) {
     cli.add_option("--compare", o.compare,
                    "Side by side: more views with these overrides, name=value[,name=value] (e.g. method=velocity; several values of one name make a view each, at most 4 views)");
     cli.add_option("--select", o.select, "Start with this sphere selected (the inspector open)")
-        ->check(wholeNumberFrom(0));
+        ->check(wholeNumberFrom(0, kMostInt));
     cli.add_flag("--explain", o.explain, "With --select: open \"explain this contact\"");
     cli.add_flag("--present", o.present,
                  "Start in the presentation layout (F5): large type, the scene's text, the sliders it names and the view");

@@ -46,7 +46,8 @@ using Json = nlohmann::ordered_json;
 
 constexpr int kMinSide = 16;                             // px
 constexpr int kMaxSide = 8192;                           // px
-constexpr int kMaxFrameIndex = 999999;                   // six digits in the file names
+// (kMostCapturedFrames - 1, capture_command.h: six digits in the file names)
+constexpr int kMaxFrameIndex = kMostCapturedFrames - 1;
 constexpr int kMaxSamples = 16;                          // per pixel
 constexpr double kMaxElevationDeg = 88.0;                // the orbit camera must stay off the pole
 constexpr double kMaxDistance = 1000.0;                  // m, render::Camera's zoom limit

@@ -9,6 +9,9 @@
 
 namespace app {
 
+// The most frames a capture writes, and the largest --every: frame_NNNNNN.png has six digits.
+constexpr int kMostCapturedFrames = 1000000;
+
 struct CaptureOptions {
     std::string scene;                  // file or preset name
     std::vector<std::string> settings;  // "name=value", applied in order
