@@ -405,8 +405,9 @@ std::string parseValue(const Parameter& p, std::string_view text, double& value)
         char* end = nullptr;
         errno = 0;
         const long long exact = std::strtoll(copy.c_str(), &end, 10);
-        const bool whole = end == copy.c_str() + copy.size() && errno == 0;
-        if (whole && static_cast<long long>(value) != exact) {  // (9.007199254740992e15 is 2^53 itself)
+        const bool digits = end == copy.c_str() + copy.size();  // written as a whole number
+        // (9.007199254740992e15 is 2^53 itself; past a long long, the digits as written)
+        if (digits && (errno == ERANGE || static_cast<long long>(value) != exact)) {
             return std::string(p.name) + " = " + copy + " is out of range [" + formatNumber(p.min) + ", " +
                    formatNumber(p.max) + "]";
         }

@@ -192,8 +192,8 @@ class SceneReader {
     // A number; with `whole`, one without a fractional part.
     double integerOrNumber(const Json& v, const std::string& pointer, bool whole) const {
         if (whole && v.is_number_unsigned() && v.get<std::uint64_t>() > kMaxInteger) {
-            fail(pointer,
-                 where(pointer) + " is out of range [0, " + formatNumber(kMaxInteger) + "]");
+            fail(pointer, where(pointer) + " = " + std::to_string(v.get<std::uint64_t>()) + " is out of range [0, " +
+                              formatNumber(kMaxInteger) + "]");  // as written, not rounded to a double
         }
         const double x = number(v, pointer);
         if (whole && x != std::floor(x)) {

@@ -175,6 +175,8 @@ TEST(ApplySetting, RefusesValuesThatAreNotNumbersOrChoices) {
     // The seed's largest is 2^53; one more read as the nearest double was 2^53 again.
     EXPECT_EQ(applySetting(scene, "seed=9007199254740992"), "");
     EXPECT_EQ(applySetting(scene, "seed=9007199254740993"), "seed = 9007199254740993 is out of range [0, 9007199254740992]");
+    EXPECT_EQ(applySetting(scene, "seed=18446744073709551615"),  // past a long long: as written, not ...616
+              "seed = 18446744073709551615 is out of range [0, 9007199254740992]");
     EXPECT_EQ(applySetting(scene, "gravity=inf"), "value 'inf' for gravity is not a number");
     EXPECT_EQ(applySetting(scene, "method=fast"),
               "method = 'fast' is not a choice; choices: position, velocity, response-only, reflection, continuous");

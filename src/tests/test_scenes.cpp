@@ -120,6 +120,11 @@ TEST(SceneFile, RefusesSettingsThatActOnNothing) {
     expectError(R"({"parameters": {"toi": "bisection"}})", "1:24", {"toi=bisection: toi acts only with the continuous method"});
 }
 
+// A seed past 2^53 in a file is named as written (it was "seed is out of range" alone).
+TEST(SceneFile, RefusesASeedPastTwoToThe53AsWritten) {
+    expectError(R"({"seed": 9223372036854775808})", "1:10", {"seed = 9223372036854775808 is out of range [0, 9007199254740992]"});
+}
+
 TEST(SceneFile, RefusesRepeatedKeys) {
     expectError("{\n  \"parameters\": {\"alpha\": 0.5,\n    \"alpha\": 0.7}\n}", "3:5",
                 {"key 'parameters.alpha' appears twice"});
