@@ -47,8 +47,10 @@ void wrappedColored(const ImVec4& color, const std::string& text);
 // while it is dragged, a Restart one when it is let go (meanwhile `state` holds the
 // value shown). Under it, why its last edit was refused. `labelAbove`: its label on a line
 // of its own and the widget the panel's width (large type in a narrow panel).
+// `noteViewA`: say "view A only" under it when side by side sets it in the other views
+// (the presented panel says it once, under all its sliders).
 void parameterWidget(const scenes::Parameter& p, const scenes::Scene& scene, PanelState& state,
-                     PanelActions& actions, bool labelAbove = false) {
+                     PanelActions& actions, bool labelAbove = false, bool noteViewA = true) {
     const bool pending = state.pendingName == p.name;
     double value = pending ? state.pendingValue : p.get(scene);
     bool changed = false;
@@ -104,7 +106,7 @@ void parameterWidget(const scenes::Parameter& p, const scenes::Scene& scene, Pan
     }
     if (labelAbove) ImGui::PopItemWidth();
     if (state.refusedName == p.name && !state.refusal.empty()) wrappedColored(kRefusalColor, state.refusal);
-    if (std::find(state.onlyViewA.begin(), state.onlyViewA.end(), p.name) != state.onlyViewA.end()) {
+    if (noteViewA && std::find(state.onlyViewA.begin(), state.onlyViewA.end(), p.name) != state.onlyViewA.end()) {
         wrappedColored(ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled), kOnlyViewA);
     }
 }
@@ -626,13 +628,10 @@ void presentedPanel(const scenes::Scene& scene, const Readouts& readouts, const 
     }
     const auto drawSliders = [&] {
         pushItemWidth();
-        std::vector<std::string> onlyViewA;
-        std::swap(onlyViewA, state.onlyViewA);  // said once, under the sliders
         for (const scenes::Parameter* p : sliders) {
-            parameterWidget(*p, scene, state, actions, labelsAbove);
+            parameterWidget(*p, scene, state, actions, labelsAbove, false);  // "view A only" once, under them
             if (p->name == "beta") measuredRestitution(readouts);  // 02's "comes back to about β²"
         }
-        std::swap(onlyViewA, state.onlyViewA);
         ImGui::PopItemWidth();
     };
     ImGui::BeginChild("presented", ImVec2(0.0f, -below));

@@ -55,12 +55,14 @@ bool Simulation::claimsForOtherSettings() const {
 }
 
 void Simulation::watchClaims() {
+    const bool atStart = world_.stepCount == claimsStartSteps_;
+    if (claims_.empty() && !atStart) return;  // nothing to stop, nothing to start: no hash of every sphere
     const std::uint64_t state = physics::stateHash(world_);
     std::vector<double> parameters = scenes::tableValues(scene_);
     if (state == claimsState_ && parameters == claimsParameters_) return;
     // Settings changed before the first step (a text's "switch response to lecture", done
     // at t = 0): that variant's claims are watched from the start, not stopped.
-    if (world_.stepCount == claimsStartSteps_ && state == claimsStartState_) {
+    if (atStart && state == claimsStartState_) {
         claims_ = scenes::LiveClaims(scene_);
         claimsInterrupted_ = false;
         claimsParameters_ = std::move(parameters);
