@@ -93,6 +93,14 @@ struct Emitter {
     int emitted = 0;          // already emitted when the scene starts (a saved state), <= max
 };
 
+// The region the camera fits on opening and on C (key "camera_fits"), m: a small group of
+// spheres in a large box framed for a projector (slide 14's presets, four views side by
+// side). The box stays drawn; the mouse wheel zooms out to it.
+struct CameraFits {
+    glm::dvec3 min{0.0};  // m
+    glm::dvec3 max{0.0};  // m, above min on every axis
+};
+
 struct Scene {
     std::string title;
     std::string slide;        // which lecture slide it illustrates, e.g. "Rigid spheres 4/14"
@@ -105,6 +113,7 @@ struct Scene {
     // Mirror planes the scene is symmetric in (key "mirror"): the demo measures how far
     // the state drifts from its mirror image (Smith et al.'s symmetry, slide 14).
     std::vector<physics::Plane> mirrors;
+    std::optional<CameraFits> cameraFits;  // none: the camera fits the box
     physics::Params params;
     std::uint64_t seed = 1;
     std::vector<Sphere> spheres;

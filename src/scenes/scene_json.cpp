@@ -9,6 +9,7 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <tuple>
 #include <utility>
 
 #include "scenes/generate.h"
@@ -29,7 +30,7 @@ using Keys = std::vector<std::string_view>;
 constexpr std::size_t kLongestTitle = 200, kLongestDescription = 20000;
 const Keys kSceneKeys = {"title", "slide",   "description", "box",      "planes", "parameters",
                          "seed",  "spheres", "generate",    "emitters", "time",   "steps",
-                         "claims", "compare", "mirror"};
+                         "claims", "compare", "mirror", "camera_fits"};
 const Keys kMirrorKeys = {"point", "normal"};
 const Keys kBoxKeys = {"size", "tilt"};
 const Keys kPlaneKeys = {"point", "normal", "thickness"};
@@ -116,6 +117,7 @@ class SceneReader {
         if (const Json* box = find(root, "box")) scene.box = readBox(*box, "/box");
         scene.planes = readList(root, "planes", &SceneReader::readPlane);
         scene.mirrors = readList(root, "mirror", &SceneReader::readMirror);
+        if (const Json* fits = find(root, "camera_fits")) scene.cameraFits = readCameraFits(*fits, "/camera_fits");
         if (const Json* seed = find(root, "seed")) scene.seed = readSeed(*seed, "/seed");
         scene.spheres = readList(root, "spheres", &SceneReader::readSphere);
         scene.generators = readList(root, "generate", &SceneReader::readGenerator);
@@ -202,12 +204,24 @@ class SceneReader {
         return x;
     }
 
-    glm::dvec3 vector3(const Json& v, const std::string& pointer) const {
+    void threeNumbers(const Json& v, const std::string& pointer) const {
         if (!v.is_array() || v.size() != 3) {
             fail(pointer, where(pointer) + " must be an array of 3 numbers [x, y, z], got " +
                               typeName(v) +
                               (v.is_array() ? " of " + std::to_string(v.size()) : ""));
         }
+    }
+
+    // [x, y, z], each positive (a size: its range is said as (0, 1e9], not [-1e9, 1e9]).
+    glm::dvec3 positiveVector3(const Json& v, const std::string& pointer, const char* unit) const {
+        threeNumbers(v, pointer);
+        glm::dvec3 x;
+        for (int i = 0; i < 3; ++i) x[i] = positive(v[i], pointer + "/" + std::to_string(i), unit);
+        return x;
+    }
+
+    glm::dvec3 vector3(const Json& v, const std::string& pointer) const {
+        threeNumbers(v, pointer);
         glm::dvec3 x;
         for (int i = 0; i < 3; ++i) {
             const std::string at = pointer + "/" + std::to_string(i);
@@ -264,12 +278,7 @@ class SceneReader {
         if (v.is_null()) return std::nullopt;
         checkKeys(v, pointer, kBoxKeys);
         Box box;
-        if (const Json* size = find(v, "size")) {
-            box.size = vector3(*size, pointer + "/size");
-            for (int i = 0; i < 3; ++i) {
-                positive((*size)[i], pointer + "/size/" + std::to_string(i), "m");
-            }
-        }
+        if (const Json* size = find(v, "size")) box.size = positiveVector3(*size, pointer + "/size", "m");
         if (const Json* tilt = find(v, "tilt")) {
             box.tilt = inRange(*tilt, pointer + "/tilt", -kMaxTilt, kMaxTilt);
         }
@@ -444,15 +453,25 @@ class SceneReader {
         fail(pointer + "/kind", detail::unknownName("kind", kind, kKinds));
     }
 
-    void readRegion(const Json& v, const std::string& pointer, Generator& g) const {
+    // {"min": [..], "max": [..]}, m, max above min on every axis.
+    std::pair<glm::dvec3, glm::dvec3> region(const Json& v, const std::string& pointer) const {
         checkKeys(v, pointer, kRegionKeys);
-        g.regionMin = vector3(required(v, pointer, "min"), pointer + "/min");
-        g.regionMax = vector3(required(v, pointer, "max"), pointer + "/max");
+        const glm::dvec3 min = vector3(required(v, pointer, "min"), pointer + "/min");
+        const glm::dvec3 max = vector3(required(v, pointer, "max"), pointer + "/max");
         for (int i = 0; i < 3; ++i) {
-            if (g.regionMin[i] >= g.regionMax[i]) {
-                fail(pointer + "/max", where(pointer) + " max must exceed min in x, y and z");
-            }
+            if (min[i] >= max[i]) fail(pointer + "/max", where(pointer) + " max must exceed min in x, y and z");
         }
+        return {min, max};
+    }
+
+    void readRegion(const Json& v, const std::string& pointer, Generator& g) const {
+        std::tie(g.regionMin, g.regionMax) = region(v, pointer);
+    }
+
+    CameraFits readCameraFits(const Json& v, const std::string& pointer) const {
+        CameraFits fits;
+        std::tie(fits.min, fits.max) = region(v, pointer);
+        return fits;
     }
 
     // A fixed radius, or [min, max] drawn uniformly, in m.
@@ -586,6 +605,10 @@ std::string vectorText(const glm::dvec3& v) { return dump(Json::array({v.x, v.y,
 std::string boxText(const std::optional<Box>& box) {
     if (!box) return "null";
     return "{\"size\": " + vectorText(box->size) + ", \"tilt\": " + dump(box->tilt) + "}";
+}
+
+std::string cameraFitsText(const CameraFits& fits) {
+    return "{\"min\": " + vectorText(fits.min) + ", \"max\": " + vectorText(fits.max) + "}";
 }
 
 std::string planesText(const std::vector<physics::Plane>& planes, std::size_t first) {
@@ -753,6 +776,7 @@ std::string sceneText(const Scene& scene, const physics::World& world) {
         << "  \"box\": " << boxText(scene.box) << ",\n"
         << "  \"planes\": " << planesText(world.planes, std::size_t(world.boxPlaneCount)) << ",\n"
         << (scene.mirrors.empty() ? "" : "  \"mirror\": " + planesText(scene.mirrors, 0) + ",\n")
+        << (scene.cameraFits ? "  \"camera_fits\": " + cameraFitsText(*scene.cameraFits) + ",\n" : "")
         << "  \"parameters\": " << parametersText(scene) << ",\n"
         << "  \"seed\": " << scene.seed << ",\n"
         << "  \"time\": " << dump(world.time) << ",\n"

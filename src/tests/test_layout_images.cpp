@@ -1,14 +1,17 @@
 // The classroom sizes, as images: `spheres capture --with-ui` at 1024x768 and
 // 1280x720 (projectors), 1920x1080 and a HiDPI screen at 2x, lays the frame out as the
-// window does (app/views/window_layout.h). In each, every corner of the preset's box
-// projects inside a view, no panel, label or bar was drawn over a view (ImGui's own
+// window does (app/views/window_layout.h). In each, every corner of what the camera fits
+// (the preset's box, or its camera_fits) projects inside a view, no panel, label or bar was drawn over a view (ImGui's own
 // draw lists say where it drew), and the pixels at the corners show the scene: no
 // panel's dark grey there.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <string>
 #include <vector>
+
+#include <glm/geometric.hpp>
 
 #include "app/commands/capture_command.h"
 #include "render/camera.h"
@@ -54,7 +57,7 @@ class LayoutImages : public ::testing::TestWithParam<Case> {
     }
 };
 
-TEST_P(LayoutImages, TheBoxIsInViewAndUncovered) {
+TEST_P(LayoutImages, WhatTheCameraFitsIsInViewAndUncovered) {
     const Case& c = GetParam();
     const std::string out = capture_test::freshFolder("layout_" + c.name);
     app::CaptureOptions options;
@@ -71,7 +74,10 @@ TEST_P(LayoutImages, TheBoxIsInViewAndUncovered) {
     const render::Camera camera = capture_test::cameraOf(manifest);
     const scenes::Scene scene = scenes::loadScene(scenes::presetPath(c.scene));
     ASSERT_TRUE(scene.box.has_value());
+    // What the camera fits: the preset's camera_fits (16_bernoulli's three spheres), else the box.
     const glm::vec3 size(scene.box->size);
+    const glm::vec3 lo = scene.cameraFits ? glm::vec3(scene.cameraFits->min) : glm::vec3(-0.5f * size.x, -0.5f * size.y, 0.0f);
+    const glm::vec3 hi = scene.cameraFits ? glm::vec3(scene.cameraFits->max) : glm::vec3(0.5f * size.x, 0.5f * size.y, size.z);
     const nlohmann::json& views = manifest.at("layout").at("views");
     ASSERT_GE(views.size(), 1u);
     std::vector<glm::vec4> drawn;
@@ -84,8 +90,7 @@ TEST_P(LayoutImages, TheBoxIsInViewAndUncovered) {
                                             << ", " << ui.w << ") covers view " << k;
         }
         for (int corner = 0; corner < 8; ++corner) {
-            const glm::vec3 p{(corner & 1 ? 0.5f : -0.5f) * size.x, (corner & 2 ? 0.5f : -0.5f) * size.y,
-                              corner & 4 ? size.z : 0.0f};
+            const glm::vec3 p{corner & 1 ? hi.x : lo.x, corner & 2 ? hi.y : lo.y, corner & 4 ? hi.z : lo.z};
             const glm::vec3 pixel = camera.project(p, glm::vec2(view.z, view.w));
             EXPECT_GE(pixel.x, 0.0f) << c.name << " view " << k << " corner " << corner;
             EXPECT_LE(pixel.x, view.z) << c.name << " view " << k << " corner " << corner;
@@ -151,6 +156,44 @@ TEST_F(LayoutImages, ThePresentationsTypeGrowsWithTheScreensHeight) {
     EXPECT_FLOAT_EQ(ui::presentedScale(1.0f, 1080.0f), 2.25f);
     EXPECT_FLOAT_EQ(ui::presentedScale(2.0f, 720.0f), 3.0f);
     EXPECT_FLOAT_EQ(ui::presentedScale(1.0f, 600.0f), ui::kPresentScale) << "never below the 720 lines' type";
+}
+
+// The radius (px) sphere `centre`, `radius` m, is drawn with in a view `viewSize` px.
+float drawnRadius(const render::Camera& camera, glm::vec3 centre, float radius, glm::vec2 viewSize) {
+    const glm::vec3 right = glm::normalize(glm::cross(camera.forward(), glm::vec3(0.0f, 0.0f, 1.0f)));
+    return glm::distance(glm::vec2(camera.project(centre, viewSize)), glm::vec2(camera.project(centre + radius * right, viewSize)));
+}
+
+// Slide 14's small presets on a projector: four views of three spheres in a 1.2 m box drew
+// each sphere with a radius of about 8 px at 1280x720. Their camera_fits frames the
+// spheres: the layout turns to two rows of wider views, and the spheres are drawn more
+// than twice as large as fitting the box would draw them in the same views.
+TEST_F(LayoutImages, APresetThatFramesItsSpheresDrawsThemLarge) {
+    const std::string out = capture_test::freshFolder("present_framed_1280x720");
+    app::CaptureOptions options;
+    options.scene = "16_bernoulli";
+    options.out = out;
+    options.size = "1280x720";
+    options.at = "0";
+    options.withUi = true;
+    options.present = true;
+    ASSERT_EQ(app::runCapture(options), 0);
+    const nlohmann::json manifest = capture_test::readManifest(out);
+    const render::Camera camera = capture_test::cameraOf(manifest);
+    const scenes::Scene scene = scenes::loadScene(scenes::presetPath("16_bernoulli"));
+    const nlohmann::json& views = manifest.at("layout").at("views");
+    ASSERT_EQ(views.size(), 4u);
+    EXPECT_NE(float(views[0][1]), float(views[2][1])) << "two rows";
+    const glm::vec2 viewSize{float(views[0][2]), float(views[0][3])};
+    const glm::vec3 centre(scene.spheres[0].p);
+    const float framed = drawnRadius(camera, centre, float(scene.spheres[0].r), viewSize);
+    render::Camera boxCamera = camera;
+    const glm::vec3 size(scene.box->size);
+    boxCamera.reset({-0.5f * size.x, -0.5f * size.y, 0.0f}, {0.5f * size.x, 0.5f * size.y, size.z}, viewSize.x / viewSize.y);
+    const float boxed = drawnRadius(boxCamera, centre, float(scene.spheres[0].r), viewSize);
+    std::printf("sphere 0 drawn with a radius of %.1f px (%.1f with the box fitted in the same view)\n", framed, boxed);
+    EXPECT_GT(framed, 16.0f);
+    EXPECT_GT(framed, 2.0f * boxed);
 }
 
 }  // namespace

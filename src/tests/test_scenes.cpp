@@ -187,6 +187,8 @@ TEST(SceneFile, RefusesMagnitudesNoSceneHas) {
     expectError(R"({"spheres": [{"p": [0, 0, 0.5], "v": [0, -2e9, 0]}]})", "1:42",
                 {"spheres[0].v[1] = -2000000000 is out of range"});
     expectError(R"({"time": 1e300, "spheres": [{"p": [0, 0, 0.5]}]})", "1:10", {"time = 1e+300 is out of range [0, 1000000000] (s)"});
+    // A size says its positive range (it said [-1000000000, 1000000000]).
+    expectError(R"({"box": {"size": [2, 1e12, 2]}})", "1:22", {"box.size[1] = 1000000000000 is out of range [1e-09, 1000000000] (m)"});
 }
 
 TEST(SceneFile, RefusesNumbersTooLargeForADouble) {
@@ -259,6 +261,12 @@ TEST(SceneFile, RefusesGeneratorRegionsOutsideTheBox) {
                 "1:64", {"generate[0].region max must exceed min"});
 }
 
+TEST(SceneFile, RefusesACameraRegionWithoutDepth) {
+    expectError(R"({"camera_fits": {"min": [0, 0, 0], "max": [1, 1, 0]}})", "1:43",
+                {"camera_fits max must exceed min in x, y and z"});
+    expectError(R"({"camera_fits": {"min": [0, 0, 0], "high": [1, 1, 1]}})", "1:36", {"unknown key 'high'", "valid: min, max"});
+}
+
 TEST(SceneFile, RefusesANegativeCount) {
     expectError("{\n  \"generate\": [\n    {\"count\": -3}\n  ]\n}", "3:15",
                 {"generate[0].count = -3 is out of range [0, 1000000]"});
@@ -310,6 +318,7 @@ TEST(SceneFile, ReadsEveryKey) {
                  "response": "momentum", "split": "mass", "order": "reversed",
                  "broadphase": "allpairs", "count": 12, "radius": 0.04},
   "seed": 77,
+  "camera_fits": {"min": [-0.5, -0.25, 1], "max": [0.5, 0.25, 2]},
   "spheres": [{"p": [0, 0, 1.5], "v": [1, 2, 3], "r": 0.1, "m": 2}],
   "generate": [{"kind": "lattice", "count": 5, "region": {"min": [-0.5, -0.5, 1], "max": [0.5, 0.5, 1.4]},
                 "radius": [0.03, 0.05], "mass": 0.2, "velocity": [0, 0, -1], "velocitySpread": 0.1,
@@ -338,6 +347,9 @@ TEST(SceneFile, ReadsEveryKey) {
     EXPECT_EQ(s.params.order, physics::PairOrder::Reversed);
     EXPECT_EQ(s.params.broadPhase, physics::BroadPhase::AllPairs);
     EXPECT_EQ(s.seed, 77u);
+    ASSERT_TRUE(s.cameraFits);
+    EXPECT_EQ(s.cameraFits->min, glm::dvec3(-0.5, -0.25, 1));
+    EXPECT_EQ(s.cameraFits->max, glm::dvec3(0.5, 0.25, 2));
     ASSERT_EQ(s.spheres.size(), 1u);
     EXPECT_EQ(s.spheres[0].v, glm::dvec3(1, 2, 3));
     EXPECT_EQ(s.spheres[0].m, 2.0);
@@ -361,6 +373,7 @@ TEST(SceneFile, OmittedKeysTakeTheDefaults) {
     const Scene s = scenes::parseScene(R"({"box": null, "spheres": [{"p": [0, 0, 0]}]})", "x.json");
     const Scene defaults;
     EXPECT_FALSE(s.box);
+    EXPECT_FALSE(s.cameraFits);
     EXPECT_EQ(s.seed, defaults.seed);
     EXPECT_EQ(s.params.beta, defaults.params.beta);
     EXPECT_EQ(s.params.gravity, defaults.params.gravity);
@@ -510,6 +523,16 @@ TEST(SaveLoad, RoundTripIsBitIdentical) {
             EXPECT_EQ(p.get(back), p.get(scene)) << p.name;
         }
     }
+}
+
+TEST(SaveLoad, TheRegionTheCameraFitsIsKept) {
+    const Scene scene = scenes::loadScene(scenes::presetPath("16_bernoulli"));
+    ASSERT_TRUE(scene.cameraFits);
+    Scene back;
+    reloaded(scene, scenes::buildWorld(scene), &back);
+    ASSERT_TRUE(back.cameraFits);
+    EXPECT_EQ(back.cameraFits->min, scene.cameraFits->min);
+    EXPECT_EQ(back.cameraFits->max, scene.cameraFits->max);
 }
 
 TEST(SaveLoad, RoundTripAfterStepping) {

@@ -166,6 +166,11 @@ ui::Readouts makeReadouts(const Simulation& simulation, const ui::FrameTimes& ti
 
 void sceneBounds(const Simulation& simulation, glm::vec3& lo, glm::vec3& hi) {
     const scenes::Scene& scene = simulation.scene();
+    if (scene.cameraFits) {
+        lo = glm::vec3(scene.cameraFits->min);
+        hi = glm::vec3(scene.cameraFits->max);
+        return;
+    }
     if (scene.box) {
         const glm::dvec3 size = scene.box->size;
         lo = glm::vec3(-size.x / 2, -size.y / 2, 0.0);

@@ -36,7 +36,8 @@ ui::Readouts makeReadouts(const Simulation& simulation, const ui::FrameTimes& ti
 // claimsForOtherSettings and claimsInterrupted (view A's: the views are edited together).
 void addMeasuredClaims(const Simulation& simulation, const Comparison* comparison, ui::Readouts& r);
 
-// Axis-aligned bounds of the box (or of the spheres when there is none), m, for the camera.
+// What the camera fits, axis-aligned, m: the scene's camera_fits, else the box, else the
+// spheres (and at least [-1, 1] m on every axis).
 void sceneBounds(const Simulation& simulation, glm::vec3& lo, glm::vec3& hi);
 
 }  // namespace app
