@@ -45,15 +45,22 @@ CLI::Validator wholeNumberFrom(long long least, long long most = std::numeric_li
 
 constexpr long long kMostInt = std::numeric_limits<int>::max();  // an int option's
 
+// A file to write: an empty name (`--out ""`, a shell variable left unset) was taken as
+// "not asked for", and nothing was written with no word.
+CLI::Validator aFileName() {
+    return CLI::Validator([](std::string& text) -> std::string { return text.empty() ? "needs a file name (got \"\")" : ""; },
+                          "FILE");
+}
+
 void addSimulate(CLI::App& cli, SimulateOptions& o) {
     CLI::App* sim = cli.add_subcommand("simulate", "Run a scene without any window or GL and print a summary");
     sim->add_option("--scene", o.scene, "Scene file or preset name (see `spheres presets`)")->required();
     sim->add_option("--steps", o.steps, "Time steps of h to run")->required()->check(wholeNumberFrom(0));
     sim->add_option("--set", o.settings, "Override a parameter: name=value (repeatable)");
     sim->add_option("--every", o.every, "Write diagnostics every K steps")->check(wholeNumberFrom(1));
-    sim->add_option("--out", o.out, "Diagnostics file: .csv or .jsonl");
-    sim->add_option("--state", o.state, "Final state of every sphere (id, p, v, r, m): .csv");
-    sim->add_option("--save", o.save, "Save the final state and parameters as a scene .json");
+    sim->add_option("--out", o.out, "Diagnostics file: .csv or .jsonl")->check(aFileName());
+    sim->add_option("--state", o.state, "Final state of every sphere (id, p, v, r, m): .csv")->check(aFileName());
+    sim->add_option("--save", o.save, "Save the final state and parameters as a scene .json")->check(aFileName());
 }
 
 void addCapture(CLI::App& cli, CaptureOptions& o) {
@@ -95,7 +102,7 @@ void addWindowOptions(CLI::App& cli, WindowAppOptions& o) {
     cli.add_option("--scene", o.scene, "Scene file or preset name (see `spheres presets`; default 11_pile)");
     cli.add_option("--set", o.settings, "Override a parameter: name=value (repeatable)");
     cli.add_option("--frames", o.frames, "Run this many frames, then exit")->check(wholeNumberFrom(1, kMostInt));
-    cli.add_option("--screenshot", o.screenshot, "Write the last frame to this PNG file");
+    cli.add_option("--screenshot", o.screenshot, "Write the last frame to this PNG file")->check(aFileName());
     cli.add_flag("--paused", o.paused, "Start paused");
     cli.add_option("--width", o.width, "Window width (screen coordinates)")->check(CLI::Range(320, 8192));
     cli.add_option("--height", o.height, "Window height (screen coordinates)")->check(CLI::Range(240, 8192));

@@ -286,7 +286,8 @@ TEST(CaptureCommandLine, AGlDriverThatCrashesWhileStartingIsOneLineNamingIt) {
 // written: a window option before a subcommand (it would be dropped, the subcommand
 // running without it), a scene path that names no readable file, an output path whose
 // folder is missing, a screenshot of a window that cannot open, a UI scale for a capture
-// that draws no panel and no labels (the scene's own side by side would have labels).
+// that draws no panel and no labels (the scene's own side by side would have labels), an
+// empty file name (it was taken as none asked for).
 TEST(CommandLine, RefusedInputIsOneLineNamingItAndLeavesNothing) {
     const std::string folder = capture_test::freshFolder("cli_refusals");
     std::filesystem::create_directories(folder);
@@ -313,6 +314,8 @@ TEST(CommandLine, RefusedInputIsOneLineNamingItAndLeavesNothing) {
         {"simulate --scene cradle --steps 1 --save '" + folder + "/cradle.json' --state '" + folder + "/none/s.csv'",
          "spheres: --state "},
         {"--scene cradle --select 99 --screenshot '" + folder + "/shot.png'", "spheres: "},
+        {"simulate --scene cradle --steps 1 --out ''", "spheres: --out: needs a file name (got \"\")"},
+        {"--scene cradle --frames 1 --screenshot ''", "spheres: --screenshot: needs a file name (got \"\")"},
         {"capture --scene cradle --at 0 --ui-scale 2 --out '" + folder + "/frames'",
          "spheres: --ui-scale sizes the panel and the views' labels, and this capture draws neither: give --with-ui"},
     };
