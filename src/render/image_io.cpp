@@ -1,14 +1,13 @@
 #include "render/image_io.h"
 
 #include <cassert>
-#include <filesystem>
-#include <fstream>
 #include <string>
-#include <system_error>
 
 // Debian's libstb compiles the implementations: only the declarations here.
 #include <stb_image.h>
 #include <stb_image_write.h>
+
+#include "platform/whole_file.h"
 
 namespace render {
 
@@ -26,23 +25,14 @@ bool writePng(const std::string& path, int width, int height,
         rgba.size() < static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4) {
         return false;
     }
-    // Encoded in memory, written beside the file and moved over it once whole: stb's own
-    // file writer does not check its writes, and a full disk left a truncated image that
-    // it called written.
+    // Encoded in memory, then written whole or not at all: stb's own file writer does not
+    // check its writes.
     std::string png;
     const auto append = [](void* context, void* data, int size) {
         static_cast<std::string*>(context)->append(static_cast<const char*>(data), std::size_t(size));
     };
     if (stbi_write_png_to_func(append, &png, width, height, 4, rgba.data(), width * 4) == 0) return false;
-    const std::string part = path + ".part";
-    std::ofstream file(part, std::ios::binary | std::ios::trunc);
-    file.write(png.data(), std::streamsize(png.size()));
-    file.close();
-    std::error_code error;
-    if (file) std::filesystem::rename(part, path, error);
-    const bool written = file && !error;
-    if (!written) std::filesystem::remove(part, error);
-    return written;
+    return platform::writeWholeFile(path, png);
 }
 
 bool readPng(const std::string& path, Image* image) {

@@ -12,6 +12,7 @@
 #include <tuple>
 #include <utility>
 
+#include "platform/whole_file.h"
 #include "scenes/generate.h"
 #include "scenes/json_locate.h"
 #include "scenes/overrides.h"
@@ -800,17 +801,10 @@ void saveScene(const std::string& path, const Scene& scene, const physics::World
         }
     }
     const std::string text = sceneText(scene, world);
-    // Written beside it and moved over it once whole: a full disk left a truncated scene
-    // that would not load.
-    const std::string part = path + ".part";
-    std::ofstream file(part, std::ios::binary | std::ios::trunc);
-    file << text;
-    file.close();
     std::error_code error;
-    if (file) std::filesystem::rename(part, path, error);
-    if (!file || error) {
-        std::filesystem::remove(part, error);
-        throw SceneError(path + ": cannot write the scene file (is the disk full?)");
+    if (std::filesystem::is_directory(path, error)) throw SceneError(path + ": is a folder, not a file: not saved");
+    if (!platform::writeWholeFile(path, text)) {  // a truncated scene would not load
+        throw SceneError(path + ": cannot be written whole (a missing folder, no permission, or a full disk): not saved");
     }
 }
 

@@ -535,6 +535,38 @@ TEST(SaveLoad, TheRegionTheCameraFitsIsKept) {
     EXPECT_EQ(back.cameraFits->max, scene.cameraFits->max);
 }
 
+// A scene is written whole or not at all (platform/whole_file.h, which the screenshots and
+// the window's settings use too); a folder of its name is said, kept, and nothing is left
+// beside it.
+TEST(SaveLoad, ASceneIsWrittenWholeOrNotAtAll) {
+    const std::filesystem::path folder = std::filesystem::temp_directory_path() / "spheres_whole_file";
+    std::filesystem::remove_all(folder);
+    std::filesystem::create_directories(folder / "taken.json" / "inside");
+    const Scene scene = scenes::loadScene(scenes::presetPath("03_head_on"));
+    const physics::World world = scenes::buildWorld(scene);
+    const std::string taken = (folder / "taken.json").string();
+    try {
+        scenes::saveScene(taken, scene, world);
+        ADD_FAILURE() << "saved over a folder";
+    } catch (const scenes::SceneError& error) {
+        EXPECT_STREQ(error.what(), (taken + ": is a folder, not a file: not saved").c_str());
+    }
+    EXPECT_TRUE(std::filesystem::is_directory(folder / "taken.json" / "inside"));
+    EXPECT_FALSE(std::filesystem::exists(taken + ".part"));
+    const std::string nowhere = (folder / "missing" / "s.json").string();
+    try {
+        scenes::saveScene(nowhere, scene, world);
+        ADD_FAILURE() << "saved into a missing folder";
+    } catch (const scenes::SceneError& error) {
+        EXPECT_STREQ(error.what(), (nowhere + ": cannot be written whole (a missing folder, no permission, or a full disk): not saved").c_str());
+    }
+    const std::string fine = (folder / "fine.json").string();
+    scenes::saveScene(fine, scene, world);
+    EXPECT_EQ(scenes::loadScene(fine).spheres.size(), world.size());
+    EXPECT_FALSE(std::filesystem::exists(fine + ".part"));
+    std::filesystem::remove_all(folder);
+}
+
 TEST(SaveLoad, RoundTripAfterStepping) {
     for (const char* name : {"11_pile", "07_inclined_plane", "06_gas", "13_tunnelling"}) {
         SCOPED_TRACE(name);

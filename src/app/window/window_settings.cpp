@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "platform/whole_file.h"
 #include "ui/control_panel.h"
 
 namespace app {
@@ -100,17 +101,9 @@ std::string writeWindowSettings(const fs::path& path, const WindowSettings& sett
     if (error) return path.parent_path().string() + ": " + error.message();
     Json json = {{"color_by", settings.colorBy}, {"show_box", settings.showBox}, {"show_grid", settings.showGrid}};
     if (settings.uiScale > 0.0f) json["ui_scale"] = std::round(double(settings.uiScale) * 100.0) / 100.0;
-    // Written beside it, then moved over it: a full disk leaves the last settings as they were.
-    const fs::path written = path.string() + ".new";
-    std::ofstream file(written);
-    file << json.dump(2) << '\n';
-    file.close();
-    if (!file) {
-        fs::remove(written, error);
-        return path.string() + ": cannot be written";
-    }
-    fs::rename(written, path, error);
-    return error ? path.string() + ": " + error.message() : "";
+    // Whole or not at all: a full disk leaves the last settings as they were.
+    if (!platform::writeWholeFile(path.string(), json.dump(2) + "\n")) return path.string() + ": cannot be written";
+    return "";
 }
 
 }  // namespace app
