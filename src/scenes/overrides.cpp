@@ -54,17 +54,21 @@ std::string shownValue(const Parameter& parameter, const Scene& scene, bool exac
 
 }  // namespace
 
-std::string overrideLabel(const Scene& scene, const std::vector<std::string>& overrides, bool exact) {
-    std::string label;
-    std::vector<std::string> seen;
+std::vector<ShownSetting> shownSettings(const Scene& scene, const std::vector<std::string>& overrides, bool exact) {
+    std::vector<ShownSetting> shown;
     for (const std::string& setting : overrides) {
         const std::string name = settingName(setting);
         const Parameter* parameter = findParameter(name);
-        if (!parameter || std::find(seen.begin(), seen.end(), name) != seen.end()) continue;
-        seen.push_back(name);
-        if (!label.empty()) label += ", ";
-        label += name + " = " + shownValue(*parameter, scene, exact);
+        const auto seen = [&](const ShownSetting& s) { return s.name == name; };
+        if (!parameter || std::any_of(shown.begin(), shown.end(), seen)) continue;
+        shown.push_back({name, shownValue(*parameter, scene, exact)});
     }
+    return shown;
+}
+
+std::string overrideLabel(const std::vector<ShownSetting>& settings) {
+    std::string label;
+    for (const ShownSetting& s : settings) label += (label.empty() ? "" : ", ") + s.name + " = " + s.value;
     return label;
 }
 

@@ -39,11 +39,19 @@ inline std::string checkCompare(const Scene& scene, const std::vector<std::strin
 // "" when every override applies to a copy of `scene`, else one line naming the bad one.
 std::string checkOverrides(const Scene& scene, const std::vector<std::string>& overrides);
 
-// What a view shows about its parameters: "method = velocity, order = reversed",
-// the overridden names with their values in `scene`; `exact` numbers to the last digit
-// (for comparing two scenes), else to 6 significant digits (h = 0.0166667, not
-// 0.016666666666666666).
-std::string overrideLabel(const Scene& scene, const std::vector<std::string>& overrides, bool exact = false);
+// A parameter as a view's label shows it: {"method", "velocity"}.
+struct ShownSetting {
+    std::string name, value;
+};
+// What a view shows about its parameters: each overridden name once, in the order written,
+// with its value in `scene`; `exact` numbers to the last digit (for comparing two scenes),
+// else to 6 significant digits (h = 0.0166667, not 0.016666666666666666).
+std::vector<ShownSetting> shownSettings(const Scene& scene, const std::vector<std::string>& overrides, bool exact = false);
+// The same as one line: "method = velocity, order = reversed".
+std::string overrideLabel(const std::vector<ShownSetting>& settings);
+inline std::string overrideLabel(const Scene& scene, const std::vector<std::string>& overrides, bool exact = false) {
+    return overrideLabel(shownSettings(scene, overrides, exact));
+}
 
 // The name of a "name=value" setting, trimmed.
 std::string settingName(std::string_view setting);

@@ -53,10 +53,10 @@ void Comparison::follow(const Simulation& primary) {
     }
 }
 
-std::string Comparison::primaryLabel(const scenes::Scene& primary) const {
+std::vector<scenes::ShownSetting> Comparison::primarySettings(const scenes::Scene& primary) const {
     std::vector<std::string> every;
     for (const Run& run : runs_) every.insert(every.end(), run.overrides.begin(), run.overrides.end());
-    return overrideLabel(primary, every);
+    return scenes::shownSettings(primary, every);
 }
 
 bool Comparison::changesNothing(const scenes::Scene& primary) const {
@@ -101,25 +101,18 @@ void appendProperties(const ViewReadout& view, std::vector<std::string>& lines) 
     }
 }
 
-// Presented, views that differ in one name are titled by its values alone, "B  simultaneous"
-// (the panel's slider names it): "solver = generalized-reflections" took four lines of large
-// type in a quarter of a projector, and the labels their views' room.
-void dropSharedName(std::vector<std::vector<std::string>>& views) {
-    // A title is its letter, spaces, then "name = value" ("A   solver = sequential").
-    const auto nameAt = [](const std::string& title) { return std::min(title.find_first_not_of(' ', 1), title.size()); };
-    std::string name;
-    for (const std::vector<std::string>& lines : views) {
-        const std::string& title = lines.front();
-        const std::size_t equals = title.find(" = ");
-        if (equals == std::string::npos || title.find(", ") != std::string::npos || equals < nameAt(title)) return;
-        const std::string own = title.substr(nameAt(title), equals - nameAt(title));
-        if (!name.empty() && own != name) return;
-        name = own;
+// Whether every view differs in one and the same parameter: presented, each is then titled
+// by its value alone, "B   simultaneous" (the panel's slider names it): "solver =
+// generalized-reflections" took four lines of large type in a quarter of a projector.
+bool differInOne(const std::vector<ViewReadout>& views) {
+    for (const ViewReadout& view : views) {
+        if (view.settings.size() != 1 || view.settings[0].name != views[0].settings[0].name) return false;
     }
-    for (std::vector<std::string>& lines : views) {
-        std::string& title = lines.front();
-        title = title.substr(0, nameAt(title)) + title.substr(title.find(" = ") + 3);
-    }
+    return !views.empty();
+}
+
+bool differsIn(const ViewReadout& view, const char* name) {
+    return std::any_of(view.settings.begin(), view.settings.end(), [&](const scenes::ShownSetting& s) { return s.name == name; });
 }
 
 // The marks' line as a projector shows it: what the solver breaks ("✗ symmetry, energy"),
@@ -179,7 +172,7 @@ std::vector<std::string> presentedLines(const ViewReadout& view) {
     std::snprintf(penetration, sizeof penetration, "penetration %.2f\u00a0%%\u00a0r", 100.0 * view.diagnostics.maxPenetration);
     std::vector<std::string> lines{view.title, energy, penetration};
     if (view.bouncesMeasured) lines.push_back(apexRatioLine(view, "\u00a0"));
-    if (view.title.find("solver =") != std::string::npos && !view.properties.empty()) {
+    if (differsIn(view, "solver") && !view.properties.empty()) {
         lines.push_back(brokenProperties(view.properties));
     }
     return lines;
@@ -198,13 +191,16 @@ std::string joinedOverrides(const std::vector<std::string>& lists) {
 
 std::vector<std::vector<std::string>> comparisonReadouts(const Simulation& primary, const Comparison& comparison,
                                                          LabelLines lines) {
+    std::vector<ViewReadout> readouts = viewReadouts(primary, comparison);
+    if (lines == LabelLines::Presented && differInOne(readouts)) {
+        for (ViewReadout& readout : readouts) readout.title = std::string(1, readout.letter) + "   " + readout.settings[0].value;
+    }
     std::vector<std::vector<std::string>> views;
-    for (const ViewReadout& readout : viewReadouts(primary, comparison)) {
+    for (const ViewReadout& readout : readouts) {
         views.push_back(lines == LabelLines::Presented ? presentedLines(readout)
                         : lines == LabelLines::Compact ? compactLines(readout)
                                                        : viewReadoutLines(readout));
     }
-    if (lines == LabelLines::Presented) dropSharedName(views);
     return views;
 }
 
@@ -242,11 +238,11 @@ std::vector<ViewReadout> viewReadouts(const Simulation& primary, const Compariso
     std::vector<ViewReadout> views;
     for (int k = 0; k <= comparison.count(); ++k) {
         const Simulation& run = k == 0 ? primary : comparison.simulation(k - 1);
-        const std::string title = std::string(1, char('A' + k)) + "   " +
-                                  (k == 0 ? comparison.primaryLabel(primary.scene()) : comparison.label(k - 1));
         const physics::World& world = run.world();
         ViewReadout readout;
-        readout.title = title;
+        readout.letter = char('A' + k);
+        readout.settings = k == 0 ? comparison.primarySettings(primary.scene()) : comparison.settings(k - 1);
+        readout.title = std::string(1, readout.letter) + "   " + scenes::overrideLabel(readout.settings);
         readout.diagnostics = physics::measure(world, run.params());
         readout.time = world.time;
         readout.steps = world.stepCount;

@@ -44,10 +44,14 @@ public:
     const Simulation& simulation(int k = 0) const { return *runs_[std::size_t(k)].simulation; }
     const std::vector<std::string>& overrides(int k = 0) const { return runs_[std::size_t(k)].overrides; }
 
-    // "method = position" (the primary's values of every overridden name) and
-    // "method = velocity" (run k's).
-    std::string primaryLabel(const scenes::Scene& primary) const;
-    std::string label(int k = 0) const { return overrideLabel(simulation(k).scene(), overrides(k)); }
+    // {method, position} (the primary's values of every overridden name) and {method,
+    // velocity} (run k's); as one line, "method = position" and "method = velocity".
+    std::vector<scenes::ShownSetting> primarySettings(const scenes::Scene& primary) const;
+    std::vector<scenes::ShownSetting> settings(int k = 0) const {
+        return scenes::shownSettings(simulation(k).scene(), overrides(k));
+    }
+    std::string primaryLabel(const scenes::Scene& primary) const { return overrideLabel(primarySettings(primary)); }
+    std::string label(int k = 0) const { return overrideLabel(settings(k)); }
     // Whether every run shows what the primary shows: the overrides change nothing.
     bool changesNothing(const scenes::Scene& primary) const;
     // The parameters every other run sets itself: the panel's edit of one reaches view A
@@ -66,7 +70,9 @@ private:
 
 // One view's title and numbers, for its label.
 struct ViewReadout {
-    std::string title;  // "A  method = position"
+    char letter = 'A';
+    std::vector<scenes::ShownSetting> settings;  // what differs: {method, position}
+    std::string title;  // "A   method = position"
     physics::Diagnostics diagnostics;
     double time = 0.0;  // s
     std::uint64_t steps = 0;
