@@ -93,12 +93,20 @@ struct Emitter {
     int emitted = 0;          // already emitted when the scene starts (a saved state), <= max
 };
 
-// The region the camera fits on opening and on C (key "camera_fits"), m: a small group of
-// spheres in a large box framed for a projector (slide 14's presets, four views side by
-// side). The box stays drawn; the mouse wheel zooms out to it.
-struct CameraFits {
+// A box of space, m: min below max on every axis.
+struct Region {
     glm::dvec3 min{0.0};  // m
-    glm::dvec3 max{0.0};  // m, above min on every axis
+    glm::dvec3 max{0.0};  // m
+};
+
+// How the camera opens, and where C puts it back (key "camera"): its angles, and the
+// region it fits. Slide 14's presets look straight at their mirror plane, so that a
+// symmetric answer looks symmetric, and frame their spheres, not the whole box, so that
+// four views on a projector draw them large (the box stays drawn; the wheel zooms out).
+struct SceneCamera {
+    std::optional<double> azimuthDeg;    // deg, around +z from +x; none: the three-quarter view's
+    std::optional<double> elevationDeg;  // deg, above the xy plane, |el| <= 88; none: the default
+    std::optional<Region> fits;          // none: the box (or the spheres, without one)
 };
 
 struct Scene {
@@ -113,7 +121,7 @@ struct Scene {
     // Mirror planes the scene is symmetric in (key "mirror"): the demo measures how far
     // the state drifts from its mirror image (Smith et al.'s symmetry, slide 14).
     std::vector<physics::Plane> mirrors;
-    std::optional<CameraFits> cameraFits;  // none: the camera fits the box
+    SceneCamera camera;
     physics::Params params;
     std::uint64_t seed = 1;
     std::vector<Sphere> spheres;

@@ -31,7 +31,8 @@ using Keys = std::vector<std::string_view>;
 constexpr std::size_t kLongestTitle = 200, kLongestDescription = 20000;
 const Keys kSceneKeys = {"title", "slide",   "description", "box",      "planes", "parameters",
                          "seed",  "spheres", "generate",    "emitters", "time",   "steps",
-                         "claims", "compare", "mirror", "camera_fits"};
+                         "claims", "compare", "mirror", "camera"};
+const Keys kCameraKeys = {"azimuth", "elevation", "fits"};
 const Keys kMirrorKeys = {"point", "normal"};
 const Keys kBoxKeys = {"size", "tilt"};
 const Keys kPlaneKeys = {"point", "normal", "thickness"};
@@ -45,6 +46,7 @@ const Keys kClaimKeys = {"says", "in",   "set", "measure", "sphere", "plane", "n
                          "to",   "take", "nth", "ratio_to", "near",  "within", "min", "max"};
 const Keys kKinds = {"lattice", "random"};
 constexpr double kMaxTilt = 90.0;                   // degrees
+constexpr double kMostElevation = 88.0;             // degrees, as --camera takes it
 constexpr double kMaxInteger = 9007199254740992.0;  // whole numbers beyond 2^53 are not exact
 // The largest size (m), mass (kg), density, speed (m/s), coordinate (m) or time (s) a scene
 // file may give, and 1 over it the smallest positive one: far beyond any scene, and the
@@ -118,7 +120,7 @@ class SceneReader {
         if (const Json* box = find(root, "box")) scene.box = readBox(*box, "/box");
         scene.planes = readList(root, "planes", &SceneReader::readPlane);
         scene.mirrors = readList(root, "mirror", &SceneReader::readMirror);
-        if (const Json* fits = find(root, "camera_fits")) scene.cameraFits = readCameraFits(*fits, "/camera_fits");
+        if (const Json* camera = find(root, "camera")) scene.camera = readCamera(*camera, "/camera");
         if (const Json* seed = find(root, "seed")) scene.seed = readSeed(*seed, "/seed");
         scene.spheres = readList(root, "spheres", &SceneReader::readSphere);
         scene.generators = readList(root, "generate", &SceneReader::readGenerator);
@@ -469,10 +471,19 @@ class SceneReader {
         std::tie(g.regionMin, g.regionMax) = region(v, pointer);
     }
 
-    CameraFits readCameraFits(const Json& v, const std::string& pointer) const {
-        CameraFits fits;
-        std::tie(fits.min, fits.max) = region(v, pointer);
-        return fits;
+    SceneCamera readCamera(const Json& v, const std::string& pointer) const {
+        checkKeys(v, pointer, kCameraKeys);
+        SceneCamera camera;
+        if (const Json* azimuth = find(v, "azimuth")) camera.azimuthDeg = inRange(*azimuth, pointer + "/azimuth", -360.0, 360.0);
+        if (const Json* elevation = find(v, "elevation")) {
+            camera.elevationDeg = inRange(*elevation, pointer + "/elevation", -kMostElevation, kMostElevation);
+        }
+        if (const Json* fits = find(v, "fits")) {
+            Region region;
+            std::tie(region.min, region.max) = this->region(*fits, pointer + "/fits");
+            camera.fits = region;
+        }
+        return camera;
     }
 
     // A fixed radius, or [min, max] drawn uniformly, in m.
@@ -608,8 +619,15 @@ std::string boxText(const std::optional<Box>& box) {
     return "{\"size\": " + vectorText(box->size) + ", \"tilt\": " + dump(box->tilt) + "}";
 }
 
-std::string cameraFitsText(const CameraFits& fits) {
-    return "{\"min\": " + vectorText(fits.min) + ", \"max\": " + vectorText(fits.max) + "}";
+bool cameraGiven(const SceneCamera& camera) { return camera.azimuthDeg || camera.elevationDeg || camera.fits; }
+
+std::string cameraText(const SceneCamera& camera) {
+    std::string text;
+    const auto add = [&](const std::string& item) { text += (text.empty() ? "{" : ", ") + item; };
+    if (camera.azimuthDeg) add("\"azimuth\": " + dump(*camera.azimuthDeg));
+    if (camera.elevationDeg) add("\"elevation\": " + dump(*camera.elevationDeg));
+    if (camera.fits) add("\"fits\": {\"min\": " + vectorText(camera.fits->min) + ", \"max\": " + vectorText(camera.fits->max) + "}");
+    return text + "}";
 }
 
 std::string planesText(const std::vector<physics::Plane>& planes, std::size_t first) {
@@ -777,7 +795,7 @@ std::string sceneText(const Scene& scene, const physics::World& world) {
         << "  \"box\": " << boxText(scene.box) << ",\n"
         << "  \"planes\": " << planesText(world.planes, std::size_t(world.boxPlaneCount)) << ",\n"
         << (scene.mirrors.empty() ? "" : "  \"mirror\": " + planesText(scene.mirrors, 0) + ",\n")
-        << (scene.cameraFits ? "  \"camera_fits\": " + cameraFitsText(*scene.cameraFits) + ",\n" : "")
+        << (cameraGiven(scene.camera) ? "  \"camera\": " + cameraText(scene.camera) + ",\n" : "")
         << "  \"parameters\": " << parametersText(scene) << ",\n"
         << "  \"seed\": " << scene.seed << ",\n"
         << "  \"time\": " << dump(world.time) << ",\n"

@@ -1,13 +1,14 @@
 // The classroom sizes, as images: `spheres capture --with-ui` at 1024x768 and
 // 1280x720 (projectors), 1920x1080 and a HiDPI screen at 2x, lays the frame out as the
 // window does (app/views/window_layout.h). In each, every corner of what the camera fits
-// (the preset's box, or its camera_fits) projects inside a view, no panel, label or bar was drawn over a view (ImGui's own
+// (the preset's box, or its camera's "fits") projects inside a view, no panel, label or bar was drawn over a view (ImGui's own
 // draw lists say where it drew), and the pixels at the corners show the scene: no
 // panel's dark grey there.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -74,10 +75,11 @@ TEST_P(LayoutImages, WhatTheCameraFitsIsInViewAndUncovered) {
     const render::Camera camera = capture_test::cameraOf(manifest);
     const scenes::Scene scene = scenes::loadScene(scenes::presetPath(c.scene));
     ASSERT_TRUE(scene.box.has_value());
-    // What the camera fits: the preset's camera_fits (16_bernoulli's three spheres), else the box.
+    // What the camera fits: the preset's camera "fits" (16_bernoulli's three spheres), else the box.
     const glm::vec3 size(scene.box->size);
-    const glm::vec3 lo = scene.cameraFits ? glm::vec3(scene.cameraFits->min) : glm::vec3(-0.5f * size.x, -0.5f * size.y, 0.0f);
-    const glm::vec3 hi = scene.cameraFits ? glm::vec3(scene.cameraFits->max) : glm::vec3(0.5f * size.x, 0.5f * size.y, size.z);
+    const std::optional<scenes::Region>& fits = scene.camera.fits;
+    const glm::vec3 lo = fits ? glm::vec3(fits->min) : glm::vec3(-0.5f * size.x, -0.5f * size.y, 0.0f);
+    const glm::vec3 hi = fits ? glm::vec3(fits->max) : glm::vec3(0.5f * size.x, 0.5f * size.y, size.z);
     const nlohmann::json& views = manifest.at("layout").at("views");
     ASSERT_GE(views.size(), 1u);
     std::vector<glm::vec4> drawn;
@@ -165,9 +167,10 @@ float drawnRadius(const render::Camera& camera, glm::vec3 centre, float radius, 
 }
 
 // Slide 14's small presets on a projector: four views of three spheres in a 1.2 m box drew
-// each sphere with a radius of about 8 px at 1280x720. Their camera_fits frames the
+// each sphere with a radius of about 8 px at 1280x720. Their camera frames the
 // spheres: the layout turns to two rows of wider views, and the spheres are drawn more
-// than twice as large as fitting the box would draw them in the same views.
+// than twice as large as fitting the box would draw them in the same views. And it looks
+// straight at the mirror plane, so that the answers that keep the symmetry look symmetric.
 TEST_F(LayoutImages, APresetThatFramesItsSpheresDrawsThemLarge) {
     const std::string out = capture_test::freshFolder("present_framed_1280x720");
     app::CaptureOptions options;
@@ -189,11 +192,18 @@ TEST_F(LayoutImages, APresetThatFramesItsSpheresDrawsThemLarge) {
     const float framed = drawnRadius(camera, centre, float(scene.spheres[0].r), viewSize);
     render::Camera boxCamera = camera;
     const glm::vec3 size(scene.box->size);
-    boxCamera.reset({-0.5f * size.x, -0.5f * size.y, 0.0f}, {0.5f * size.x, 0.5f * size.y, size.z}, viewSize.x / viewSize.y);
+    boxCamera.fitBox({-0.5f * size.x, -0.5f * size.y, 0.0f}, {0.5f * size.x, 0.5f * size.y, size.z}, viewSize.x / viewSize.y);
     const float boxed = drawnRadius(boxCamera, centre, float(scene.spheres[0].r), viewSize);
     std::printf("sphere 0 drawn with a radius of %.1f px (%.1f with the box fitted in the same view)\n", framed, boxed);
     EXPECT_GT(framed, 16.0f);
     EXPECT_GT(framed, 2.0f * boxed);
+    // Seen straight at its mirror plane (x = 0), the symmetric start looks symmetric: the two
+    // lower spheres on one row, as far left of the view's middle as right of it (a three-
+    // quarter view put them 0.3 of their distance apart off the middle).
+    const glm::vec3 left = camera.project(glm::vec3(scene.spheres[1].p), viewSize);
+    const glm::vec3 right = camera.project(glm::vec3(scene.spheres[2].p), viewSize);
+    EXPECT_NEAR(left.y, right.y, 0.5f);
+    EXPECT_NEAR(0.5f * viewSize.x - left.x, right.x - 0.5f * viewSize.x, 0.5f);
 }
 
 }  // namespace

@@ -261,10 +261,12 @@ TEST(SceneFile, RefusesGeneratorRegionsOutsideTheBox) {
                 "1:64", {"generate[0].region max must exceed min"});
 }
 
-TEST(SceneFile, RefusesACameraRegionWithoutDepth) {
-    expectError(R"({"camera_fits": {"min": [0, 0, 0], "max": [1, 1, 0]}})", "1:43",
-                {"camera_fits max must exceed min in x, y and z"});
-    expectError(R"({"camera_fits": {"min": [0, 0, 0], "high": [1, 1, 1]}})", "1:36", {"unknown key 'high'", "valid: min, max"});
+TEST(SceneFile, RefusesACameraThatCannotLook) {
+    expectError(R"({"camera": {"fits": {"min": [0, 0, 0], "max": [1, 1, 0]}}})", "1:47",
+                {"camera.fits max must exceed min in x, y and z"});
+    expectError(R"({"camera": {"fits": {"min": [0, 0, 0], "high": [1, 1, 1]}}})", "1:40", {"unknown key 'high'", "valid: min, max"});
+    expectError(R"({"camera": {"elevation": 90}})", "1:26", {"camera.elevation = 90 is out of range [-88, 88]"});
+    expectError(R"({"camera": {"azimut": 90}})", "1:13", {"unknown key 'azimut'", "did you mean 'azimuth'?"});
 }
 
 TEST(SceneFile, RefusesANegativeCount) {
@@ -318,7 +320,7 @@ TEST(SceneFile, ReadsEveryKey) {
                  "response": "momentum", "split": "mass", "order": "reversed",
                  "broadphase": "allpairs", "count": 12, "radius": 0.04},
   "seed": 77,
-  "camera_fits": {"min": [-0.5, -0.25, 1], "max": [0.5, 0.25, 2]},
+  "camera": {"azimuth": -90, "elevation": 10, "fits": {"min": [-0.5, -0.25, 1], "max": [0.5, 0.25, 2]}},
   "spheres": [{"p": [0, 0, 1.5], "v": [1, 2, 3], "r": 0.1, "m": 2}],
   "generate": [{"kind": "lattice", "count": 5, "region": {"min": [-0.5, -0.5, 1], "max": [0.5, 0.5, 1.4]},
                 "radius": [0.03, 0.05], "mass": 0.2, "velocity": [0, 0, -1], "velocitySpread": 0.1,
@@ -347,9 +349,11 @@ TEST(SceneFile, ReadsEveryKey) {
     EXPECT_EQ(s.params.order, physics::PairOrder::Reversed);
     EXPECT_EQ(s.params.broadPhase, physics::BroadPhase::AllPairs);
     EXPECT_EQ(s.seed, 77u);
-    ASSERT_TRUE(s.cameraFits);
-    EXPECT_EQ(s.cameraFits->min, glm::dvec3(-0.5, -0.25, 1));
-    EXPECT_EQ(s.cameraFits->max, glm::dvec3(0.5, 0.25, 2));
+    EXPECT_EQ(s.camera.azimuthDeg, -90.0);
+    EXPECT_EQ(s.camera.elevationDeg, 10.0);
+    ASSERT_TRUE(s.camera.fits);
+    EXPECT_EQ(s.camera.fits->min, glm::dvec3(-0.5, -0.25, 1));
+    EXPECT_EQ(s.camera.fits->max, glm::dvec3(0.5, 0.25, 2));
     ASSERT_EQ(s.spheres.size(), 1u);
     EXPECT_EQ(s.spheres[0].v, glm::dvec3(1, 2, 3));
     EXPECT_EQ(s.spheres[0].m, 2.0);
@@ -373,7 +377,7 @@ TEST(SceneFile, OmittedKeysTakeTheDefaults) {
     const Scene s = scenes::parseScene(R"({"box": null, "spheres": [{"p": [0, 0, 0]}]})", "x.json");
     const Scene defaults;
     EXPECT_FALSE(s.box);
-    EXPECT_FALSE(s.cameraFits);
+    EXPECT_FALSE(s.camera.azimuthDeg || s.camera.elevationDeg || s.camera.fits);
     EXPECT_EQ(s.seed, defaults.seed);
     EXPECT_EQ(s.params.beta, defaults.params.beta);
     EXPECT_EQ(s.params.gravity, defaults.params.gravity);
@@ -525,14 +529,16 @@ TEST(SaveLoad, RoundTripIsBitIdentical) {
     }
 }
 
-TEST(SaveLoad, TheRegionTheCameraFitsIsKept) {
+TEST(SaveLoad, TheCameraIsKept) {
     const Scene scene = scenes::loadScene(scenes::presetPath("16_bernoulli"));
-    ASSERT_TRUE(scene.cameraFits);
+    ASSERT_TRUE(scene.camera.fits);
     Scene back;
     reloaded(scene, scenes::buildWorld(scene), &back);
-    ASSERT_TRUE(back.cameraFits);
-    EXPECT_EQ(back.cameraFits->min, scene.cameraFits->min);
-    EXPECT_EQ(back.cameraFits->max, scene.cameraFits->max);
+    EXPECT_EQ(back.camera.azimuthDeg, scene.camera.azimuthDeg);
+    EXPECT_EQ(back.camera.elevationDeg, scene.camera.elevationDeg);
+    ASSERT_TRUE(back.camera.fits);
+    EXPECT_EQ(back.camera.fits->min, scene.camera.fits->min);
+    EXPECT_EQ(back.camera.fits->max, scene.camera.fits->max);
 }
 
 // A scene is written whole or not at all (platform/whole_file.h, which the screenshots and

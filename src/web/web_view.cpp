@@ -83,10 +83,8 @@ std::string openContext() {
 
 void fitCamera(int width, int height) {
     LiveView& v = live();
-    glm::vec3 lo, hi;
-    app::sceneBounds(*v.simulation, lo, hi);
     v.aspect = height > 0 ? float(width) / float(height) : 1.0f;
-    v.camera.reset(lo, hi, v.aspect);
+    v.camera = app::openingCamera(*v.simulation, v.aspect);
 }
 
 // The canvas changed shape (the page was resized, a phone turned): the camera keeps its

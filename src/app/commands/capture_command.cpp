@@ -508,6 +508,7 @@ Capturer::Capturer(const CaptureOptions& options, const CapturePlan& plan,
         request.views = compare_->views();
         compare_->sizeLabels(simulation_, request);
     }
+    camera_ = sceneCameraAngles(simulation_.scene());
     if (plan.camera) {
         camera_.azimuth = float(glm::radians(plan.camera->azimuthDeg));
         camera_.elevation = float(glm::radians(plan.camera->elevationDeg));
@@ -525,15 +526,9 @@ Capturer::Capturer(const CaptureOptions& options, const CapturePlan& plan,
         // whichever frames came before it.
         for (int frame = 0; frame < kUiWarmUpFrames; ++frame) ui_->layout(simulation_, comparedRuns());
     }
-    const float aspect = float(view_.z) / float(view_.w);
-    const render::Camera angles = camera_;
-    camera_.reset(lo, hi, aspect);
-    if (plan.camera) {
-        camera_.azimuth = angles.azimuth;
-        camera_.elevation = angles.elevation;
-        camera_.fitBox(lo, hi, aspect);
-        if (plan.camera->distance) camera_.distance = float(*plan.camera->distance);
-    }
+    // The scene's angles or --camera's, the scene's region fitted (or --camera's distance).
+    camera_.fitBox(lo, hi, float(view_.z) / float(view_.w));
+    if (plan.camera && plan.camera->distance) camera_.distance = float(*plan.camera->distance);
 }
 
 render::Image Capturer::drawFrame() {

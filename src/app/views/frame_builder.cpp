@@ -6,6 +6,7 @@
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 
 #include "scenes/scene.h"
 
@@ -166,9 +167,9 @@ ui::Readouts makeReadouts(const Simulation& simulation, const ui::FrameTimes& ti
 
 void sceneBounds(const Simulation& simulation, glm::vec3& lo, glm::vec3& hi) {
     const scenes::Scene& scene = simulation.scene();
-    if (scene.cameraFits) {
-        lo = glm::vec3(scene.cameraFits->min);
-        hi = glm::vec3(scene.cameraFits->max);
+    if (scene.camera.fits) {
+        lo = glm::vec3(scene.camera.fits->min);
+        hi = glm::vec3(scene.camera.fits->max);
         return;
     }
     if (scene.box) {
@@ -184,6 +185,21 @@ void sceneBounds(const Simulation& simulation, glm::vec3& lo, glm::vec3& hi) {
         lo = glm::min(lo, glm::vec3(world.position[i]) - float(world.radius[i]));
         hi = glm::max(hi, glm::vec3(world.position[i]) + float(world.radius[i]));
     }
+}
+
+render::Camera sceneCameraAngles(const scenes::Scene& scene) {
+    render::Camera camera;
+    if (scene.camera.azimuthDeg) camera.azimuth = float(glm::radians(*scene.camera.azimuthDeg));
+    if (scene.camera.elevationDeg) camera.elevation = float(glm::radians(*scene.camera.elevationDeg));
+    return camera;
+}
+
+render::Camera openingCamera(const Simulation& simulation, float aspect) {
+    render::Camera camera = sceneCameraAngles(simulation.scene());
+    glm::vec3 lo, hi;
+    sceneBounds(simulation, lo, hi);
+    camera.fitBox(lo, hi, aspect);
+    return camera;
 }
 
 }  // namespace app

@@ -4,6 +4,7 @@
 // capture mode so both show the same thing.
 #include "app/run/comparison.h"
 #include "app/run/simulation.h"
+#include "render/camera.h"
 #include "render/frame_snapshot.h"
 #include "ui/control_panel.h"
 
@@ -36,8 +37,13 @@ ui::Readouts makeReadouts(const Simulation& simulation, const ui::FrameTimes& ti
 // claimsForOtherSettings and claimsInterrupted (view A's: the views are edited together).
 void addMeasuredClaims(const Simulation& simulation, const Comparison* comparison, ui::Readouts& r);
 
-// What the camera fits, axis-aligned, m: the scene's camera_fits, else the box, else the
+// What the camera fits, axis-aligned, m: the scene's camera "fits", else the box, else the
 // spheres (and at least [-1, 1] m on every axis).
 void sceneBounds(const Simulation& simulation, glm::vec3& lo, glm::vec3& hi);
+// The scene's camera angles (the three-quarter view's where it gives none), not yet fitted.
+render::Camera sceneCameraAngles(const scenes::Scene& scene);
+// The camera a scene opens with, and C puts back: its angles, sceneBounds fitted in a view
+// of `aspect` (width / height).
+render::Camera openingCamera(const Simulation& simulation, float aspect);
 
 }  // namespace app

@@ -206,7 +206,7 @@ WindowLayout WindowApp::layout() const {
     q.gap = kViewGap;
     glm::vec3 lo, hi;
     sceneBounds(simulation_, lo, hi);
-    q.boxAspect = boxAspectOnScreen(render::Camera{}, lo, hi);  // at the default angles: orbiting moves nothing
+    q.boxAspect = boxAspectOnScreen(sceneCameraAngles(simulation_.scene()), lo, hi);  // at the opening angles: orbiting moves nothing
     if (!ImGui::GetCurrentContext()) return layoutWindow(q);
     const bool present = panel_.present;
     const ToolWindowsState& tools = input_.tools();
@@ -226,10 +226,8 @@ WindowLayout WindowApp::layout() const {
 }
 
 void WindowApp::resetCamera() {
-    glm::vec3 lo, hi;
-    sceneBounds(simulation_, lo, hi);
     viewAspect_ = layout().views.aspect();
-    camera_.reset(lo, hi, viewAspect_);
+    camera_ = openingCamera(simulation_, viewAspect_);
 }
 
 // The same angles, the box fitted again (the views changed shape).
