@@ -278,6 +278,8 @@ TEST(ContactExplanation, SaysALcpContactWasSolvedWithTheOthers) {
         expectVector(event.velocityAfter[0], {0.0, 0.0, 0.2}, 1e-9);
         const auto lines = app::explanationLines(app::explainContact(event, params), params, 0);
         EXPECT_TRUE(hasLine(lines, "lcp (slide 14): solved together with every touching contact"));
+        EXPECT_NE(app::contactTitle(event, 0, 0, params.passes).find("solved together in pass 1 of 4"), std::string::npos)
+            << app::contactTitle(event, 0, 0, params.passes);
         // The global problem first, with the numbers of complementarity: c = -sqrt3/2 before,
         // c+ = +sqrt3/2 after, so c+ + beta c = 0 where lambda > 0.
         EXPECT_TRUE(hasLine(lines, "Slide 14, the global approach (lcp): every touching contact in one problem"));

@@ -394,7 +394,9 @@ ContactExplanation explainContact(const physics::ContactEvent& event, const phys
 
 std::string passName(int pass, int passes, bool solvedTogether, double timeOfImpact) {
     if (timeOfImpact >= 0.0) return format("at its instant, %.3f ms into the step", 1e3 * timeOfImpact);
-    if (pass < passes) return format("pass %d of %d", pass + 1, passes);
+    // A global solver's answer in a pass: one problem for the touching contacts, not one of
+    // the pairwise passes (a student read "pass 1 of 4" on lcp as a sequential pass).
+    if (pass < passes) return format(solvedTogether ? "solved together in pass %d of %d" : "pass %d of %d", pass + 1, passes);
     // After the K passes: a global solver's last answer (the position and reflection methods
     // answer the velocities once more after the last projection), or the shock sweep.
     return solvedTogether ? "after the last pass, velocities only" : "the shock propagation sweep";

@@ -21,7 +21,9 @@ std::string format(const char* pattern, double a, double b = 0.0) {
 PropertyVerdict momentum(const ImpactRecord& r) {
     PropertyVerdict v{"momentum", "", Verdict::Untested,
                       "Total momentum of the colliding spheres is kept: |change| / sum m|v| of the clusters that "
-                      "touch no wall (a wall takes momentum)."};
+                      "touch no wall (a wall takes momentum). The lecture's response (slide 12) and its static "
+                      "contact (slide 13, v <- mu v) act on each sphere's own velocity and do not keep it in "
+                      "general: a touching pair falling together is braked. response = momentum keeps it."};
     if (r.total.momentumScale <= 0.0) {
         v.value = "no free cluster struck";
         return v;
