@@ -1,5 +1,7 @@
 #include "platform/window.h"
 
+#include <algorithm>
+
 #include <glad/gl.h>
 // After glad, so that GLFW does not pull in the system GL header.
 #include <GLFW/glfw3.h>
@@ -40,6 +42,21 @@ void setContextHints(const WindowOptions& options) {
     glfwWindowHint(GLFW_COCOA_RETINA_FRAMEBUFFER, GLFW_TRUE);
 }
 
+// The size asked for, no larger than the primary monitor's work area (the screen less its
+// panels): the default 1280 x 800 on a 1366 x 768 laptop put the timeline bar and the
+// side-by-side field below the screen's edge. Screen coordinates, before the monitor's
+// content scale, which GLFW_SCALE_TO_MONITOR applies.
+glm::ivec2 sizeThatFits(int width, int height) {
+    GLFWmonitor* monitor = glfwGetPrimaryMonitor();
+    if (!monitor) return {width, height};
+    int x = 0, y = 0, w = 0, h = 0;
+    glfwGetMonitorWorkarea(monitor, &x, &y, &w, &h);
+    float xscale = 1.0f, yscale = 1.0f;
+    glfwGetMonitorContentScale(monitor, &xscale, &yscale);
+    if (w <= 0 || h <= 0 || xscale <= 0.0f || yscale <= 0.0f) return {width, height};
+    return {std::min(width, int(float(w) / xscale)), std::min(height, int(float(h) / yscale))};
+}
+
 }  // namespace
 
 std::unique_ptr<Window> Window::create(const WindowOptions& options, std::string* error) {
@@ -50,8 +67,8 @@ std::unique_ptr<Window> Window::create(const WindowOptions& options, std::string
     }
     setContextHints(options);
     const DriverCrashGuard guard("GLFW opened the window");
-    GLFWwindow* window =
-        glfwCreateWindow(options.width, options.height, options.title.c_str(), nullptr, nullptr);
+    const glm::ivec2 size = sizeThatFits(options.width, options.height);
+    GLFWwindow* window = glfwCreateWindow(size.x, size.y, options.title.c_str(), nullptr, nullptr);
     if (!window) {
         setError(error, takeGlfwError("could not create an OpenGL 3.3 core window"));
         glfwTerminate();

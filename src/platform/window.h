@@ -10,7 +10,7 @@ struct GLFWwindow;
 namespace platform {
 
 struct WindowOptions {
-    int width = 1280;  // screen coordinates (scaled by the monitor's content scale)
+    int width = 1280;  // screen coordinates (scaled by the monitor's content scale); at most the screen's work area
     int height = 720;  // screen coordinates
     std::string title = "Rigid Spheres";
     bool vsync = true;

@@ -18,11 +18,12 @@ namespace fs = std::filesystem;
 
 bool haveXvfb() { return std::system("command -v xvfb-run >/dev/null 2>&1") == 0; }
 
-// Runs the window for `frames` frames and returns the screenshot; "" on failure.
-std::string screenshot(const std::string& name, const std::string& arguments) {
+// Runs the window for `frames` frames on a screen of `screen` pixels and returns the
+// screenshot; "" on failure.
+std::string screenshot(const std::string& name, const std::string& arguments, const std::string& screen = "1280x800") {
     const fs::path out = fs::path(SPHERES_TEST_OUTPUT_DIR) / (name + ".png");
     fs::remove(out);
-    const std::string command = "xvfb-run -a -s '-screen 0 1280x800x24' '" SPHERES_EXECUTABLE "' " +
+    const std::string command = "xvfb-run -a -s '-screen 0 " + screen + "x24' '" SPHERES_EXECUTABLE "' " +
                                 arguments + " --screenshot '" + out.string() + "' >/dev/null 2>&1";
     return std::system(command.c_str()) == 0 && fs::exists(out) ? out.string() : "";
 }
@@ -86,6 +87,19 @@ TEST(Window, ShowsThePanelAndTheSpheresInTheBox) {
     // in its top rows (the sky above the box).
     EXPECT_GT(fraction(image, kSceneX0, 450, kSceneX1, 780, saturated), 0.15);
     EXPECT_LT(fraction(image, kSceneX0, 0, kSceneX1, 60, saturated), 0.01);
+}
+
+// The window opens no larger than the screen: the default 1280 x 800 on a 1366 x 768 laptop
+// put the timeline bar and the side-by-side field below its edge (a student's review).
+TEST(Window, OpensNoLargerThanTheScreen) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run not found: install the xvfb package to run the window tests";
+    const std::string path = screenshot("window_small_screen", "--scene 03_head_on --frames 5", "1366x768");
+    ASSERT_FALSE(path.empty()) << "spheres did not run or wrote no screenshot under Xvfb";
+    const render::Image image = load(path);
+    EXPECT_EQ(image.width, 1280);
+    EXPECT_EQ(image.height, 768);
+    // The timeline bar along the bottom, in sight: dark right of the panel.
+    EXPECT_GT(fraction(image, 700, 740, 1270, 766, dark), 0.25);
 }
 
 // Slide 7's preset opens side by side in three views (its "compare" key), each with
