@@ -45,12 +45,13 @@ CLI::Validator wholeNumberFrom(long long least, long long most = std::numeric_li
 
 constexpr long long kMostInt = std::numeric_limits<int>::max();  // an int option's
 
-// A file to write: an empty name (`--out ""`, a shell variable left unset) was taken as
-// "not asked for", and nothing was written with no word.
-CLI::Validator aFileName() {
-    return CLI::Validator([](std::string& text) -> std::string { return text.empty() ? "needs a file name (got \"\")" : ""; },
-                          "FILE");
+// An empty value (`--out ""`, a shell variable left unset) was taken as "not asked for":
+// nothing written, no overlay drawn, with no word.
+CLI::Validator notEmpty(const std::string& what) {
+    return CLI::Validator(
+        [what](std::string& text) -> std::string { return text.empty() ? "needs " + what + " (got \"\")" : ""; }, "TEXT");
 }
+CLI::Validator aFileName() { return notEmpty("a file name"); }
 
 void addSimulate(CLI::App& cli, SimulateOptions& o) {
     CLI::App* sim = cli.add_subcommand("simulate", "Run a scene without any window or GL and print a summary");
@@ -87,9 +88,12 @@ void addCapture(CLI::App& cli, CaptureOptions& o) {
     cap->add_option("--compare", o.compare,
                     "Side by side: more views with these overrides, name=value[,name=value] (e.g. method=velocity; several values of one name make a view each, at most 4 views)");
     cap->add_option("--overlay", o.overlay,
-                    "Overlays, comma-separated: velocity, contacts, impulses, penetration, trails, graph (or all)");
+                    "Overlays, comma-separated: velocity, contacts, impulses, penetration, trails, graph (or all)")
+        ->check(notEmpty("a list of overlays"));
     cap->add_option("--gl", o.gl, "Headless GL: osmesa, egl or auto (OSMesa first, then EGL)")->capture_default_str();
-    cap->add_option("--samples", o.samples, "Multisampling: samples per pixel, 0 to 16")->capture_default_str();
+    cap->add_option("--samples", o.samples, "Multisampling: samples per pixel, 0 to 16")
+        ->capture_default_str()
+        ->check(wholeNumberFrom(0, 16));
 }
 
 void addClaims(CLI::App& cli, ClaimsOptions& o) {
@@ -104,8 +108,8 @@ void addWindowOptions(CLI::App& cli, WindowAppOptions& o) {
     cli.add_option("--frames", o.frames, "Run this many frames, then exit")->check(wholeNumberFrom(1, kMostInt));
     cli.add_option("--screenshot", o.screenshot, "Write the last frame to this PNG file")->check(aFileName());
     cli.add_flag("--paused", o.paused, "Start paused");
-    cli.add_option("--width", o.width, "Window width (screen coordinates)")->check(CLI::Range(320, 8192));
-    cli.add_option("--height", o.height, "Window height (screen coordinates)")->check(CLI::Range(240, 8192));
+    cli.add_option("--width", o.width, "Window width (screen coordinates)")->check(wholeNumberFrom(320, 8192));
+    cli.add_option("--height", o.height, "Window height (screen coordinates)")->check(wholeNumberFrom(240, 8192));
     cli.add_option("--compare", o.compare,
                    "Side by side: more views with these overrides, name=value[,name=value] (e.g. method=velocity; several values of one name make a view each, at most 4 views)");
     cli.add_option("--select", o.select, "Start with this sphere selected (the inspector open)")
@@ -126,6 +130,13 @@ int listPresets() {
 int fail(const std::string& message, int code) {
     std::fprintf(stderr, "spheres: %s\n", message.c_str());
     return code;
+}
+
+// A report that could not be written is said, and the run fails: `spheres claims >
+// report.txt` on a full disk exited 0 with an empty report.
+int reportLost(int code) {
+    if (std::fflush(stdout) == 0 && !std::ferror(stdout)) return code;
+    return fail("the standard output could not be written (is the disk full?)", code == 0 ? 2 : code);
 }
 
 // The window's options are the command line's own, so one written before a subcommand
@@ -171,11 +182,15 @@ int runCommandLine(int argc, char** argv) {
         return fail(misplaced, kBadInput);
     }
     try {
-        if (cli.got_subcommand("simulate")) return runSimulate(simulate);
-        if (cli.got_subcommand("capture")) return runCapture(capture);
-        if (cli.got_subcommand("claims")) return runClaims(claims);
-        if (presets->parsed()) return listPresets();
-        return runWindowApp(window);
+        const auto run = [&] {
+            if (cli.got_subcommand("simulate")) return runSimulate(simulate);
+            if (cli.got_subcommand("capture")) return runCapture(capture);
+            if (cli.got_subcommand("claims")) return runClaims(claims);
+            if (presets->parsed()) return listPresets();
+            return runWindowApp(window);
+        };
+        const int code = run();
+        return reportLost(code);
     } catch (const UsageError& e) {
         return fail(e.what(), kBadInput);
     } catch (const scenes::SceneError& e) {

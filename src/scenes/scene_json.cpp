@@ -196,7 +196,8 @@ class SceneReader {
 
     // A number; with `whole`, one without a fractional part.
     double integerOrNumber(const Json& v, const std::string& pointer, bool whole) const {
-        if (whole && v.is_number_unsigned() && v.get<std::uint64_t>() > kMaxInteger) {
+        // Compared as whole numbers: as a double, 2^53 + 1 rounds to 2^53 and passed, rounded.
+        if (whole && v.is_number_unsigned() && v.get<std::uint64_t>() > static_cast<std::uint64_t>(kMaxInteger)) {
             fail(pointer, where(pointer) + " = " + std::to_string(v.get<std::uint64_t>()) + " is out of range [0, " +
                               formatNumber(kMaxInteger) + "]");  // as written, not rounded to a double
         }
@@ -780,7 +781,13 @@ std::string savedDescription(const Scene& scene, const physics::World& world) {
     char head[96];
     std::snprintf(head, sizeof head, "%.3f s (solver step %llu).", world.time,
                   static_cast<unsigned long long>(world.stepCount));
-    return kSaved + head + (original.empty() ? "" : kFromStart + original);
+    std::string text = kSaved + head + (original.empty() ? "" : kFromStart + original);
+    if (text.size() > kLongestDescription) {  // a text near the limit would not load again: its end is cut
+        std::size_t cut = kLongestDescription - 3;  // bytes, the ellipsis' 3 after it
+        while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;  // not inside a character
+        text = text.substr(0, cut) + "\u2026";
+    }
+    return text;
 }
 
 }  // namespace

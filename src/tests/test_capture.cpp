@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <glm/geometric.hpp>
 #include <string>
 #include <vector>
@@ -246,7 +247,8 @@ TEST(CaptureCommandLine, AFileThatCannotBeWrittenWholeIsSaidAndNotLeft) {
     const std::filesystem::path folder = std::filesystem::path(SPHERES_TEST_OUTPUT_DIR) / "full_disk";
     std::filesystem::remove_all(folder);
     std::filesystem::create_directories(folder);
-    for (const char* name : {"state.csv", "log.csv", "log.jsonl"}) std::filesystem::create_symlink("/dev/full", folder / name);
+    // The logs are written beside their name first (a killed run leaves the .part): that is /dev/full.
+    for (const char* name : {"state.csv", "log.csv.part", "log.jsonl.part"}) std::filesystem::create_symlink("/dev/full", folder / name);
     const Outcome state = runSpheres("simulate --scene 11_pile --steps 1 --state '" + (folder / "state.csv").string() + "'");
     EXPECT_EQ(state.code, 2) << state.output;
     EXPECT_NE(state.output.find("state.csv: cannot be written whole (is the disk full?)"), std::string::npos) << state.output;
@@ -256,6 +258,25 @@ TEST(CaptureCommandLine, AFileThatCannotBeWrittenWholeIsSaidAndNotLeft) {
         EXPECT_NE(out.output.find(std::string(log) + ": cannot be written whole"), std::string::npos) << out.output;
     }
     EXPECT_FALSE(std::filesystem::exists(std::filesystem::symlink_status(folder / "state.csv"))) << "the truncated state is left";
+    // A capture stops at the first frame it cannot write, in one line, and leaves no manifest
+    // (it went on rendering, with a line for each frame left, and exited 1). Frame 1 is
+    // written beside its name first: that file is /dev/full.
+    const std::filesystem::path frames = folder / "frames";
+    std::filesystem::create_directories(frames);
+    std::filesystem::create_symlink("/dev/full", frames / "frame_000001.png.part");
+    const Outcome capture = runSpheres("capture --scene 03_head_on --frames 40 --out '" + frames.string() + "'");
+    EXPECT_EQ(capture.code, 2) << capture.output;
+    EXPECT_NE(capture.output.find("frame_000001.png: cannot be written whole (is the disk full?); the capture stopped\n"),
+              std::string::npos)
+        << capture.output;
+    EXPECT_EQ(std::count(capture.output.begin(), capture.output.end(), '\n'), 2) << "the GL line and this one: " << capture.output;
+    EXPECT_FALSE(std::filesystem::exists(frames / "manifest.json"));
+    EXPECT_FALSE(std::filesystem::exists(frames / "frame_000039.png")) << "it went on";
+    // A report on a full disk fails the run (`spheres claims > report.txt` exited 0, the report
+    // empty). Its line goes to the same /dev/full here: the code says it.
+    for (const char* command : {"presets", "claims --scene 03_head_on", "simulate --scene 03_head_on --steps 1"}) {
+        EXPECT_EQ(runSpheres(std::string(command) + " >/dev/full").code, 2) << command;
+    }
 }
 
 // A GL driver that crashes while it starts (Debian 12's OSMesa, given a GALLIUM_DRIVER it
@@ -316,6 +337,16 @@ TEST(CommandLine, RefusedInputIsOneLineNamingItAndLeavesNothing) {
         {"--scene cradle --select 99 --screenshot '" + folder + "/shot.png'", "spheres: "},
         {"simulate --scene cradle --steps 1 --out ''", "spheres: --out: needs a file name (got \"\")"},
         {"--scene cradle --frames 1 --screenshot ''", "spheres: --screenshot: needs a file name (got \"\")"},
+        {"capture --scene cradle --at 0 --overlay '' --out '" + folder + "/frames'",
+         "spheres: --overlay: needs a list of overlays (got \"\")"},
+        {"capture --scene cradle --at 0 --camera 30,10,1e-9 --out '" + folder + "/frames'",
+         "spheres: --camera 30,10,1e-9: the distance must be 0.1 to 1000 m"},
+        // One grammar for whole numbers: hex and exponents were taken by some options, and
+        // 1e3 was called out of range.
+        {"--width 0x400", "spheres: --width: must be a whole number, 320 to 8192 (got 0x400)"},
+        {"--width 1e3", "spheres: --width: must be a whole number, 320 to 8192 (got 1e3)"},
+        {"capture --scene cradle --at 0 --samples 2.5 --out '" + folder + "/frames'",
+         "spheres: --samples: must be a whole number, 0 to 16 (got 2.5)"},
         {"capture --scene cradle --at 0 --ui-scale 2 --out '" + folder + "/frames'",
          "spheres: --ui-scale sizes the panel and the views' labels, and this capture draws neither: give --with-ui"},
     };
@@ -365,6 +396,21 @@ TEST(SimulateCommandLine, PrintsTheFivePropertiesOnceThereWereContacts) {
     const std::string none = outputOf("simulate --scene 03_head_on --steps 1");
     EXPECT_EQ(none.find("properties:"), std::string::npos) << none;
     EXPECT_NE(none.find("03_head_on"), std::string::npos) << none;
+}
+
+// The diagnostics log holds step 0, every K steps and the last (--steps 7 --every 3 left
+// the final state out), and is there only once whole: no .part beside it.
+TEST(SimulateCommandLine, TheLogEndsWithTheLastStep) {
+    const std::string folder = capture_test::freshFolder("simulate_log");
+    std::filesystem::create_directories(folder);
+    const std::string log = folder + "/log.csv";
+    ASSERT_EQ(runSpheres("simulate --scene 03_head_on --steps 7 --every 3 --out '" + log + "'").code, 0);
+    std::ifstream file(log);
+    std::string line, steps;
+    std::getline(file, line);  // the header
+    while (std::getline(file, line)) steps += line.substr(0, line.find(',')) + " ";
+    EXPECT_EQ(steps, "0 3 6 7 ");
+    EXPECT_FALSE(std::filesystem::exists(log + ".part"));
 }
 
 // ---------------------------------------------------------------- frames, per backend

@@ -123,6 +123,8 @@ TEST(SceneFile, RefusesSettingsThatActOnNothing) {
 // A seed past 2^53 in a file is named as written (it was "seed is out of range" alone).
 TEST(SceneFile, RefusesASeedPastTwoToThe53AsWritten) {
     expectError(R"({"seed": 9223372036854775808})", "1:10", {"seed = 9223372036854775808 is out of range [0, 9007199254740992]"});
+    // One past 2^53 (as a double it rounded to 2^53, and the scene ran with that seed).
+    expectError(R"({"seed": 9007199254740993})", "1:10", {"seed = 9007199254740993 is out of range [0, 9007199254740992]"});
 }
 
 TEST(SceneFile, RefusesRepeatedKeys) {
@@ -527,6 +529,21 @@ TEST(SaveLoad, RoundTripIsBitIdentical) {
             EXPECT_EQ(p.get(back), p.get(scene)) << p.name;
         }
     }
+}
+
+// A state saved mid-run puts a line before its text: a text near the longest a file may
+// hold is cut at its end (a character whole), so that the saved file loads again.
+TEST(SaveLoad, ALongTextSavedMidRunStillLoads) {
+    Scene scene = scenes::loadScene(scenes::presetPath("03_head_on"));
+    for (int k = 0; k < 9995; ++k) scene.description += "\u00e9";  // 2 bytes each: a cut may fall inside one
+    scene.description = "x" + scene.description;
+    physics::World world = scenes::buildWorld(scene);
+    physics::step(world, scene.params);
+    Scene back;
+    reloaded(scene, world, &back);
+    EXPECT_LE(back.description.size(), 20000u);
+    EXPECT_EQ(back.description.rfind("Saved at t = ", 0), 0u);
+    EXPECT_EQ(back.description.substr(back.description.size() - 5), "\u00e9\u2026");
 }
 
 TEST(SaveLoad, TheCameraIsKept) {

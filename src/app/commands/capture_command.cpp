@@ -28,6 +28,7 @@
 #include "app/run/simulation.h"
 #include "physics/diagnostics.h"
 #include "platform/headless_context.h"
+#include "platform/whole_file.h"
 #include "render/camera.h"
 #include "render/image_io.h"
 #include "render/offscreen_target.h"
@@ -50,6 +51,7 @@ constexpr int kMaxSide = 8192;                           // px
 constexpr int kMaxFrameIndex = kMostCapturedFrames - 1;
 constexpr int kMaxSamples = 16;                          // per pixel
 constexpr double kMaxElevationDeg = 88.0;                // the orbit camera must stay off the pole
+constexpr double kLeastDistance = 0.1;                   // m: nearer, a box of metres lies past the far plane
 constexpr double kMaxDistance = 1000.0;                  // m, render::Camera's zoom limit
 constexpr int kUiWarmUpFrames = 3;                       // ImGui frames laid out before frame 0
 constexpr int kViewGap = 4;                              // px between views side by side, as the window
@@ -126,8 +128,9 @@ std::optional<CameraChoice> parseCamera(const std::string& text) {
         throw UsageError(why + "the elevation must be within +-88 degrees");
     CameraChoice camera{values[0], values[1], std::nullopt};
     if (values.size() == 3) {
-        if (values[2] <= 0.0 || values[2] > kMaxDistance)
-            throw UsageError(why + "the distance must be in (0, 1000] m");
+        // Its far plane is 50 distances away: at 1e-9 m it drew nothing but the sky.
+        if (!(values[2] >= kLeastDistance) || values[2] > kMaxDistance)
+            throw UsageError(why + "the distance must be 0.1 to 1000 m");
         camera.distance = values[2];
     }
     return camera;
@@ -400,15 +403,18 @@ class PngWriter {
     PngWriter& operator=(const PngWriter&) = delete;
 
     void write(std::string path, render::Image image);
-    // Waits for every file; false when one could not be written (said on stderr).
-    bool finish();
+    // Waits for every file; returns the first that could not be written whole, or "".
+    std::string finish();
+    // Whether a file waited for so far could not be written (the capture then stops: a full
+    // disk had a line said for each of the frames left).
+    bool failed() const { return !failed_.empty(); }
 
   private:
     void waitOldest();
 
     std::deque<std::pair<std::string, std::future<bool>>> pending_;  // path, written
     std::size_t maxPending_ = 1;
-    bool allWritten_ = true;
+    std::string failed_;  // the first file not written
 };
 
 PngWriter::PngWriter(std::size_t imageBytes) {
@@ -429,14 +435,12 @@ void PngWriter::write(std::string path, render::Image image) {
 void PngWriter::waitOldest() {
     auto [path, written] = std::move(pending_.front());
     pending_.pop_front();
-    if (written.get()) return;
-    std::fprintf(stderr, "spheres: %s: cannot write the file\n", path.c_str());
-    allWritten_ = false;
+    if (!written.get() && failed_.empty()) failed_ = path;
 }
 
-bool PngWriter::finish() {
+std::string PngWriter::finish() {
     while (!pending_.empty()) waitOldest();
-    return allWritten_;
+    return failed_;
 }
 
 class Capturer {
@@ -658,22 +662,24 @@ int Capturer::run() {
             }
             writeFrame(index);
             progress.update(static_cast<std::uint64_t>(index) + 1);
+            if (writer_->failed()) break;
         }
     }
-    if (!writer_->finish()) return 1;
+    // A frame or the manifest that cannot be written ends the capture in one line, without
+    // a manifest: its absence marks the frames as incomplete.
+    const auto notWritten = [](const std::string& path) {
+        std::fprintf(stderr, "spheres: %s: cannot be written whole (is the disk full?); the capture stopped\n", path.c_str());
+        return 2;
+    };
+    if (const std::string failed = writer_->finish(); !failed.empty()) return notWritten(failed);
     const std::string path = (fs::path(options_.out) / "manifest.json").string();
     // A file name that is not UTF-8 is written with U+FFFD in its place, not thrown.
-    const std::string text = manifest().dump(2, ' ', false, Json::error_handler_t::replace) + '\n';
-    std::ofstream file(path);
-    file << text;
-    file.close();
-    if (!file) {
-        std::fprintf(stderr, "spheres: %s: cannot write the file\n", path.c_str());
-        return 1;
+    if (!platform::writeWholeFile(path, manifest().dump(2, ' ', false, Json::error_handler_t::replace) + '\n')) {
+        return notWritten(path);
     }
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::printf("wrote %zu frames to %s in %.2f s (%.1f frames/s)\n", plan_.frames.size(),
+    std::printf("wrote %zu frame%s to %s in %.2f s (%.1f frames/s)\n", plan_.frames.size(), plan_.frames.size() == 1 ? "" : "s",
                 options_.out.c_str(), seconds,
                 double(plan_.frames.size()) / std::max(seconds, 1e-9));
     return 0;

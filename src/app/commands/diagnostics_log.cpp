@@ -27,7 +27,9 @@ DiagnosticsLog::DiagnosticsLog(const std::string& path) : path_(path) {
     } else if (!endsWith(path, ".csv")) {
         throw UsageError("--out " + path + ": the file must end in .csv or .jsonl");
     }
-    file_.open(path);
+    // Written beside it and moved over it once whole: a run killed half way (timeout, Ctrl-C)
+    // leaves the .part, not a log cut in mid-line that reads as the whole run.
+    file_.open(path + ".part");
     if (!file_) throw UsageError("--out " + path + ": cannot open the file for writing");
     file_.precision(17);
     if (csv_) {
@@ -38,8 +40,9 @@ DiagnosticsLog::DiagnosticsLog(const std::string& path) : path_(path) {
 
 void DiagnosticsLog::finish() {
     file_.close();
-    if (!file_) {
-        std::remove(path_.c_str());  // not a truncated log that reads as the whole run
+    const std::string part = path_ + ".part";
+    if (!file_ || std::rename(part.c_str(), path_.c_str()) != 0) {
+        std::remove(part.c_str());  // not a truncated log that reads as the whole run
         throw UsageError("--out " + path_ + ": cannot be written whole (is the disk full?)");
     }
 }

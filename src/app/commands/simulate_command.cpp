@@ -55,7 +55,10 @@ int runSimulate(const SimulateOptions& options) {
         impacts.add(physics::step(world, params).impacts);
         scenes::emitDue(scene, world);  // the course's emitter, as the window and capture do
         seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        if (log && k % every == 0) log->write(static_cast<std::uint64_t>(k), world.time, physics::measure(world, params));
+        // Every K steps, and the last (--steps 7 --every 3 left the final state out).
+        if (log && (k % every == 0 || k == options.steps)) {
+            log->write(static_cast<std::uint64_t>(k), world.time, physics::measure(world, params));
+        }
         progress->update(static_cast<std::uint64_t>(k));
     }
     progress.reset();  // the line goes before the result is printed
