@@ -325,12 +325,13 @@ TEST_F(CaptureCompare, WritesThreeViewsForSlideSevensAnswers) {
     EXPECT_EQ(manifest["compare"]["labels"],
               nlohmann::json::array({"method = position", "method = reflection", "method = continuous"}));
     ASSERT_EQ(manifest["compare"]["viewports"].size(), 3u);
-    // In a 960 x 300 image three views in a row would leave each box 140 px under its
-    // label; two rows with each label left of its view leave it 148 px: C under A.
+    // In a 960 x 300 image two rows with each label left of its view left each box 148 px,
+    // but cut the labels' last lines (the properties' marks): three views in a row, each
+    // under its whole label.
     const auto& views = manifest["compare"]["viewports"];
-    EXPECT_EQ(views[2][0], views[0][0]);
-    EXPECT_LT(views[2][1], views[0][1]);
-    EXPECT_GT(int(views[0][0]), 200);  // the label's column, left of the view
+    EXPECT_EQ(views[2][1], views[0][1]);
+    EXPECT_GT(views[2][0], views[1][0]);
+    EXPECT_LT(int(views[0][1]) + int(views[0][3]), 300 - 7 * 17) << "under seven lines of label";
     const auto& last = manifest["frames"][1];
     ASSERT_EQ(last["compare_hashes"].size(), 2u);
     EXPECT_NE(last["compare_hashes"][0], last["compare_hashes"][1]);

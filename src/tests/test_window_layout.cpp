@@ -179,6 +179,14 @@ TEST(WindowLayout, LabelsTakeTheRoomTheBoxDoesNotUse) {
     EXPECT_EQ(views[0], glm::ivec4(300, 402, 980, 398));
     EXPECT_EQ(views[1], glm::ivec4(300, 0, 980, 398));
     EXPECT_FLOAT_EQ(wide, 398.0f);
+    // Beside its view a label needs its lines' height: two rows of 148 px would have left
+    // each box 148 px high and cut 200 px of label (18's "✗ break-away" at 1280 x 768);
+    // one row of four keeps the labels whole beside boxes of 147.
+    const app::LabelHeight lines = [](int) { return 200; };
+    const float whole = app::arrangeViews({0, 0, 1200, 300}, 4, 4, 150, lines, 1.0f, views, labels);
+    EXPECT_EQ(views[3].y, views[0].y) << "one row";
+    EXPECT_EQ(labels[0].w, 300);
+    EXPECT_FLOAT_EQ(whole, 147.0f);
 }
 
 // The box's aspect on screen: a cube seen from the default angles (from above: its

@@ -122,7 +122,10 @@ float arrangeViews(glm::ivec4 area, int count, int gap, int labelWidth, const La
         const float w = float(area.z - (columns - 1) * gap) / float(columns);
         const float h = float(area.w - (rows - 1) * gap) / float(rows);
         const float top = labelled ? boxHeightIn(w, h - float(above(int(w))), boxAspect) : boxHeightIn(w, h, boxAspect);
-        const float left = labelled ? boxHeightIn(w - float(labelWidth), h, boxAspect) : -1.0f;
+        // Beside its view a label is as tall as its lines at its own width: where they need
+        // more than the row, they were cut (18's "✗ break-away" in half at 1280 x 768).
+        const bool fitsBeside = labelled && labelHeight(labelWidth) <= int(h);
+        const float left = fitsBeside ? boxHeightIn(w - float(labelWidth), h, boxAspect) : -1.0f;
         if (std::max(top, left) > best) {  // ties: fewer columns, labels above
             best = std::max(top, left);
             bestColumns = columns;
