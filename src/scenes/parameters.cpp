@@ -310,7 +310,10 @@ std::vector<Parameter> makeTable() {
                             "waiting, runs of sphere numbers, or from 40 960 spheres places of the world, then "
                             "the pairs between blocks by wavefronts and strips). Otherwise each thread takes the pairs of its "
                             "slab of the box, and waits where a sphere met another thread's pair last. "
-                            "Scenes under 4096 spheres use one thread whatever the count.",
+                            "Scenes under 4096 spheres use one thread whatever the count. "
+                            "A count set by hand is kept when other programs take the cores: then each stage "
+                            "waits for a thread that has no core (10k spheres beside a busy program: 2 threads "
+                            "4.5 times one's time); auto falls back to one.",
                             param<&Params::threads>())),
         choice("broadphase", "broad phase", {"grid", "allpairs"},
                static_cast<double>(kDefaults.broadPhase),
