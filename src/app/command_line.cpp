@@ -100,6 +100,7 @@ void addClaims(CLI::App& cli, ClaimsOptions& o) {
     CLI::App* claims = cli.add_subcommand(
         "claims", "Measure what each scene's text claims, as the lab sheet's test does; exit 1 if a claim fails");
     claims->add_option("--scene", o.scenes, "Scene file or preset name (repeatable; default: every preset)");
+    claims->add_flag("--measures", o.measures, "List what a claim may measure (name, unit, meaning) instead");
 }
 
 void addWindowOptions(CLI::App& cli, WindowAppOptions& o) {

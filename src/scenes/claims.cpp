@@ -10,6 +10,7 @@
 #include "scenes/claim_meters.h"
 #include "scenes/parameters.h"
 #include "scenes/scene.h"
+#include "scenes/suggest.h"
 
 namespace scenes {
 
@@ -213,7 +214,11 @@ std::string quantityShown(const Claim& c) {
     name += spheresShown(c.spheres, c.measure == "moving") + planeShown(c);
     std::ostringstream when;  // an instant, "at t = 0.25 s", or a stretch, "over t = 1.2–10 s"
     when.precision(4);
-    if (c.from == c.to && c.to > 0.0) when << " at t = " << c.to << " s";
+    // At t = 0 too ("stays under" measured at the start only passed unsaid), but for what a
+    // run never changes.
+    static const std::vector<std::string> kFixed = {"mass", "plane_tilt", "plane_thickness", "gravity_per_step"};
+    const bool fixed = std::find(kFixed.begin(), kFixed.end(), c.measure) != kFixed.end();
+    if (c.from == c.to && (c.to > 0.0 || !fixed)) when << " at t = " << c.to << " s";
     if (c.from < c.to) when << " over t = " << c.from << "\u2013" << c.to << " s";
     name += when.str();
     if (c.ratioTo) {
@@ -221,6 +226,13 @@ std::string quantityShown(const Claim& c) {
         for (const std::string& s : *c.ratioTo) name += " " + s;
     }
     return name;
+}
+
+// No sample: an event (an apex, a bounce) that did not happen in the stretch, which at one
+// instant (a claim without "to") is almost sure.
+std::string nothingMeasured(const Claim& c) {
+    return c.from == c.to ? "nothing measured (at one instant: an event needs a stretch, \"from\" and \"to\")"
+                          : "nothing measured";
 }
 
 void judge(ClaimCheck& check, const std::vector<double>* ratioSamples, std::size_t spheresInRun) {
@@ -243,14 +255,14 @@ void judge(ClaimCheck& check, const std::vector<double>* ratioSamples, std::size
     if (c.take == "each" && c.nth == 0 && !ratioSamples) {
         check.holds = !check.samples.empty() &&
                       std::all_of(check.samples.begin(), check.samples.end(), [&](double x) { return meets(c, x); });
-        out << (check.samples.empty() ? std::string("nothing measured") : range(check.samples, unit));
+        out << (check.samples.empty() ? nothingMeasured(c) : range(check.samples, unit));
     } else {
         check.holds = check.value && meets(c, *check.value);
         if (check.value) out << valueShown(*check.value, *check.value, unit);
-        else out << "nothing measured";
+        else out << nothingMeasured(c);
     }
     if (!check.holds) out << ", expected " << expected(c, unit, true);
-    else if (!c.near) out << " (" << expected(c, unit, false) << ")";  // a bound: what was checked
+    else if (!c.near) out << " (" << expected(c, unit, unit == " r") << ")";  // a bound: what was checked (in % of r, its unit: 4 meant 400 %)
     check.measured = c.measure == "setting" ? settingShown(c, check) : quantityShown(c) + " = " + out.str();
 }
 
@@ -263,13 +275,24 @@ std::string checkClaimForm(const Claim& c, const Scene& preset) {
         Scene other = preset;
         if (std::string e = applyAll(other, *c.ratioTo); !e.empty()) return "ratio_to: " + e;
     }
+    // A quote the description does not hold would be shown to the class as the text's.
+    if (c.in == ClaimSource::Description && preset.description.find(c.says) == std::string::npos) {
+        return "says \"" + c.says + "\", which the description does not (a claim quotes it word for word)";
+    }
     const auto& meters = claimMeters();
     if (std::none_of(meters.begin(), meters.end(), [&](const ClaimMeter& m) { return m.name == c.measure; })) {
-        std::string names;
-        for (const ClaimMeter& m : meters) names += (names.empty() ? "" : ", ") + std::string(m.name);
-        return "unknown measure '" + c.measure + "' (one of " + names + ")";
+        std::vector<std::string_view> names;
+        for (const ClaimMeter& m : meters) names.push_back(m.name);
+        return detail::unknownName("measure", c.measure, names) + " (`spheres claims --measures` says what each is)";
     }
-    if (c.measure == "setting" && !findParameter(c.parameter)) return "setting needs \"name\": a parameter's name";
+    if (c.measure == "setting") {
+        if (c.parameter.empty()) return "setting needs \"name\": a parameter's name";
+        if (!findParameter(c.parameter)) {
+            std::vector<std::string_view> names;
+            for (const Parameter& p : parameterTable()) names.push_back(p.name);
+            return detail::unknownName("parameter", c.parameter, names);
+        }
+    }
     if (std::find(kTakes.begin(), kTakes.end(), c.take) == kTakes.end()) {
         return "unknown take '" + c.take + "' (each, min, max, mean, first, last or count)";
     }

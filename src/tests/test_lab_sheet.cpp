@@ -228,7 +228,14 @@ TEST(ClaimsCommandLine, AClaimThatFailsIsMarkedAndTheExitCodeSaysSo) {
     EXPECT_EQ(code, 1) << output;
     EXPECT_NE(output.find("  \u2717 \"the other leaves at 1 m/s\": vx of sphere #1 over t = 0.9\u20131.2 s = 1 m/s (19 samples), expected 2"), std::string::npos) << output;
     EXPECT_NE(output.find(" 1 \u2717 of "), std::string::npos) << output;
+    // Repeated after the count with its scene: in a long log the ✗ line is far above.
+    EXPECT_NE(output.find("Failed:\n  \u2717 " + file.string() + ": \"the other leaves at 1 m/s\"\n"), std::string::npos) << output;
     std::filesystem::remove(file);
+    // What a claim may measure, for a teacher writing one.
+    const auto [measures, listed] = runSpheres("claims --measures");
+    EXPECT_EQ(listed, 0) << measures;
+    EXPECT_NE(measures.find("\npenetration (r): the penetration readout: deepest overlap / smaller radius\n"), std::string::npos)
+        << measures;
     const auto [missing, refused] = runSpheres("claims --scene no_such_scene");
     EXPECT_EQ(refused, 2) << missing;
     EXPECT_EQ(missing.rfind("spheres: ", 0), 0u) << missing;
@@ -271,7 +278,9 @@ TEST(ClaimsCommandLine, AMeasuredValueNamesItsQuantity) {
                              "\"Two equal spheres meet head-on\": mass of spheres #0, #1 = 1 kg (2 samples)",
                              "\"so it squashes (overlaps up to 19 % of r)\": max penetration over t = 0\u201310 s = 19.27 % of r",
                              "\"the contact graph's 20 levels\" (with shock=on): shock levels over t = 1\u201310 s = 20 (",
-                             "\"Twenty stacked spheres, position based\": method = position"}) {
+                             "\"Twenty stacked spheres, position based\": method = position",
+                             // At t = 0, said (a claim without "to" measures the start only)
+                             "\"Two equal spheres meet head-on\": y of spheres #0, #1 at t = 0 s = 0 m (2 samples)"}) {
         EXPECT_NE(output.find(line), std::string::npos) << line << "\n" << output;
     }
 }

@@ -665,9 +665,14 @@ namespace {
 // A preset's claims (the lab sheet) are checked when the file loads: a meter that does
 // not exist, a setting that does not apply, a claim without a value, each one line.
 TEST(SceneFile, RefusesAClaimThatCannotBeChecked) {
-    const std::string head = "{\n  \"claims\": [\n    ";
+    const std::string head = "{\"description\": \"x\",\n  \"claims\": [\n    ";
     expectError(head + "{\"says\": \"x\", \"measure\": \"apexx\", \"near\": 1, \"within\": 0}]}", "3:5",
-                {"claims[0]", "unknown measure 'apexx'", "apex"});
+                {"claims[0]", "unknown measure 'apexx' (did you mean 'apex'?)", "spheres claims --measures"});
+    // A quote the description does not hold (a teacher's edited text) was shown to the class as its claim.
+    expectError(head + "{\"says\": \"y\", \"measure\": \"apex\", \"max\": 1}]}", "3:5",
+                {"claims[0]: says \"y\", which the description does not (a claim quotes it word for word)"});
+    expectError(head + "{\"says\": \"x\", \"measure\": \"setting\", \"name\": \"betta\", \"near\": 1, \"within\": 0}]}", "3:5",
+                {"unknown parameter 'betta' (did you mean 'beta'?)"});
     expectError(head + "{\"says\": \"x\", \"set\": [\"beta=7\"], \"measure\": \"apex\", \"max\": 1}]}", "3:5",
                 {"claims[0]", "set: beta = 7 is out of range"});
     expectError(head + "{\"says\": \"x\", \"measure\": \"apex\"}]}", "3:5", {"needs near and within, min or max"});

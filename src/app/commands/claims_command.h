@@ -10,6 +10,7 @@ namespace app {
 
 struct ClaimsOptions {
     std::vector<std::string> scenes;  // files or preset names; empty: every preset
+    bool measures = false;            // instead: list what a claim may measure
 };
 
 // 0 when every claim holds, 1 when one does not. Throws UsageError / scenes::SceneError on
