@@ -297,7 +297,8 @@ std::string checkClaimForm(const Claim& c, const Scene& preset) {
         return "unknown take '" + c.take + "' (each, min, max, mean, first, last or count)";
     }
     if (!(c.from >= 0.0 && c.to >= c.from && c.to <= kMaxClaimTime)) {
-        return "from and to must satisfy 0 <= from <= to <= " + formatNumber(kMaxClaimTime) + " s";
+        return "from " + formatNumber(c.from) + " s and to " + formatNumber(c.to) + " s: they must satisfy 0 <= from <= to <= " +
+               formatNumber(kMaxClaimTime) + " s";
     }
     if (c.near.has_value() != c.within.has_value()) return "near and within go together";
     if (!c.near && !c.min && !c.max) return "a claim needs near and within, min or max";
@@ -309,6 +310,14 @@ std::string checkClaimForm(const Claim& c, const Scene& preset) {
                " planes (the box's first, numbered from 0)";
     }
     if (c.ratioTo && c.take == "each" && c.nth == 0) return "ratio_to needs one value: a take other than each, or nth";
+    // Without an emitter the spheres are known before the run (with one, the run says it).
+    if (!c.spheres.empty() && variant.emitters.empty()) {
+        const int highest = *std::max_element(c.spheres.begin(), c.spheres.end());
+        const std::size_t count = builtSphereCount(variant);
+        if (std::size_t(highest) >= count) {
+            return "no sphere #" + std::to_string(highest) + " in the scene (it has " + std::to_string(count) + ", numbered from 0)";
+        }
+    }
     return "";
 }
 

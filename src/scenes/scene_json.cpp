@@ -463,7 +463,10 @@ class SceneReader {
         const glm::dvec3 min = vector3(required(v, pointer, "min"), pointer + "/min");
         const glm::dvec3 max = vector3(required(v, pointer, "max"), pointer + "/max");
         for (int i = 0; i < 3; ++i) {
-            if (min[i] >= max[i]) fail(pointer + "/max", where(pointer) + " max must exceed min in x, y and z");
+            if (min[i] >= max[i]) {
+                fail(pointer + "/max", where(pointer) + " max must exceed min in x, y and z (" + "xyz"[i] + ": min " +
+                                           formatNumber(min[i]) + ", max " + formatNumber(max[i]) + ")");
+            }
         }
         return {min, max};
     }
@@ -591,11 +594,30 @@ class SceneReader {
     std::string file_;
 };
 
-// nlohmann's message without its "[json.exception...] parse error at line 3, column 6: ".
+// nlohmann's message without its "[json.exception...] parse error at line 3, column 6: ",
+// what it last read cut to its end (an unquoted key repeated the whole description), and
+// the likely slip where its words do not name it: a comma missing or one too many.
 std::string syntaxMessage(const Json::parse_error& e) {
     const std::string what = e.what();
     const auto start = what.find(": ", what.find("parse error"));
-    return "invalid JSON: " + (start == std::string::npos ? what : what.substr(start + 2));
+    std::string message = start == std::string::npos ? what : what.substr(start + 2);
+    constexpr std::size_t kShownRead = 40;  // characters
+    const std::string read = "last read: '";
+    if (const std::size_t from = message.find(read); from != std::string::npos) {
+        const std::size_t begin = from + read.size(), end = message.find("'; ", begin);
+        if (end != std::string::npos && end - begin > kShownRead) {
+            std::size_t cut = end - kShownRead;
+            while (cut < end && (static_cast<unsigned char>(message[cut]) & 0xC0) == 0x80) ++cut;  // a character whole
+            message.replace(begin, cut - begin, "...");
+        }
+    }
+    if (message.find("unexpected string literal; expected '}'") != std::string::npos ||
+        message.find("; expected ']'") != std::string::npos) {
+        message += " (a comma missing before it?)";
+    } else if (message.find("unexpected ']'") != std::string::npos || message.find("unexpected '}'") != std::string::npos) {
+        message += " (a comma after the last item?)";
+    }
+    return "invalid JSON: " + message;
 }
 
 Json parseJson(std::string_view text, const SceneReader& reader) {

@@ -35,6 +35,14 @@ TEST(SceneFile, RefusesJsonSyntaxErrorsAtTheirLine) {
     expectError("{\n  \"spheres\": [\n", "3:1", {"syntax error", "unexpected end of input"});
     expectError("", "1:1", {"syntax error", "unexpected end of input"});
     expectError("{\n  \"title\": \"a\nb\"\n}", "2:14", {"syntax error", "control character"});
+    // The slips a teacher makes, named where the parser's words do not (a teacher's review).
+    expectError("{\"seed\": 3 \"title\": \"x\"}", "1:18", {"unexpected string literal", "(a comma missing before it?)"});
+    expectError("{\"planes\": [{\"point\": [0, 0, 0], \"normal\": [0, 0, 1]},]}", "1:55",
+                {"unexpected ']'", "(a comma after the last item?)"});
+    // An unquoted key after a long text: what was last read is cut to its end (it repeated the whole text).
+    const std::string message = errorOf("{\"description\": \"" + std::string(500, 'a') + "\", box: 1}");
+    EXPECT_LT(message.size(), 300u) << message;
+    EXPECT_NE(message.find("last read: '..."), std::string::npos) << message;
 }
 
 // What is no file at all is refused before it is read: /dev/zero, typed into the window's
@@ -103,12 +111,18 @@ TEST(SceneFile, RefusesClaimsThatNoValueOrNoPlaneCanMeet) {
                 {"plane 9 is not one of the scene's 6 planes"});
     expectError(head + R"({"says": "two meet", "measure": "vx", "sphere": [], "min": 0}]})", "1:197",
                 {"sphere lists no sphere: leave it out to watch every sphere"});
-    const Scene scene = scenes::parseScene(head + R"({"says": "two meet", "measure": "vx", "sphere": [0, 9], "min": -1}]})",
+    // A sphere the scene does not have: refused where written, as its spheres are known
+    // (with an emitter, the run says so: "no sphere #9 in the run").
+    expectError(head + R"({"says": "two meet", "measure": "vx", "sphere": [0, 9], "min": -1}]})", "1:149",
+                {"claims[0]: no sphere #9 in the scene (it has 2, numbered from 0)"});
+    const std::string rain = std::string("{\"description\": \"two meet\", ") + kBox +
+                             R"("emitters": [{"period": 0.5, "position": [0, 0, 1.5], "max": 3}], "claims": [)";
+    const Scene scene = scenes::parseScene(rain + R"({"says": "two meet", "measure": "vx", "sphere": [9], "to": 0.1, "min": -1}]})",
                                            "claims.json");
     const std::vector<scenes::ClaimCheck> checks = scenes::checkClaims(scene);
     ASSERT_EQ(checks.size(), 1u);
     EXPECT_FALSE(checks[0].holds);
-    EXPECT_NE(checks[0].measured.find("no sphere #9 in the run (it had 2, numbered from 0)"), std::string::npos)
+    EXPECT_NE(checks[0].measured.find("no sphere #9 in the run (it had 0, numbered from 0)"), std::string::npos)
         << checks[0].measured;
 }
 
@@ -685,7 +699,9 @@ TEST(SceneFile, RefusesAClaimThatCannotBeChecked) {
     expectError(head + "{\"says\": \"x\", \"mesure\": \"apex\", \"max\": 1}]}", "3:19", {"mesure", "measure"});
     expectError(head + "{\"says\": \"x\", \"measure\": \"apex\", \"sphere\": 1.5, \"max\": 1}]}", "3:48",
                 {"whole number"});
-    EXPECT_EQ(errorOf(head + "{\"says\": \"x\", \"measure\": \"apex\", \"sphere\": [0], \"max\": 1}]}"), "");
+    EXPECT_EQ(errorOf("{\"description\": \"x\", \"spheres\": [{\"p\": [0, 0, 1]}],\n  \"claims\": [\n    "
+                      "{\"says\": \"x\", \"measure\": \"apex\", \"sphere\": [0], \"max\": 1}]}"),
+              "");
 }
 
 TEST(SceneFile, RefusesACompareItCannotShow) {

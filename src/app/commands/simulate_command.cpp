@@ -7,6 +7,7 @@
 
 #include "app/commands/diagnostics_log.h"
 #include "app/commands/progress_line.h"
+#include "app/run/comparison.h"
 #include "app/run/scene_source.h"
 #include "app/teaching/impact_report.h"
 #include "physics/step.h"
@@ -66,16 +67,21 @@ int runSimulate(const SimulateOptions& options) {
 
     const double sphereSteps = static_cast<double>(options.steps) * params.substeps *
                                static_cast<double>(std::max<std::size_t>(world.size(), 1));
-    std::printf("%s: %lld steps, t = %.4f s, %zu spheres, wall %.3f s, %.1f ns/sphere-step | %s | "
+    std::printf("%s: %lld steps, t = %.4f s, %zu sphere%s, wall %.3f s, %.1f ns/sphere-step | %s | "
                 "outside the box %zu\n",
                 options.scene.c_str(), static_cast<long long>(options.steps), world.time,
-                world.size(), seconds, options.steps > 0 ? 1e9 * seconds / sphereSteps : 0.0,
+                world.size(), world.size() == 1 ? "" : "s", seconds,
+                options.steps > 0 && world.size() > 0 ? 1e9 * seconds / sphereSteps : 0.0,
                 summarize(physics::measure(world, params)).c_str(),
                 physics::spheresOutsideBox(world, 0.0));
     if (impacts.total.contacts > 0 || params.method == physics::Method::Continuous) {  // slide 14: what the contacts kept
         std::vector<physics::MirrorAsymmetry> mirrors;
         for (const physics::Plane& m : scene.mirrors) mirrors.push_back(physics::mirrorAsymmetry(world, m));
         std::printf("properties: %s\n", propertiesLine(judgeProperties(impacts, mirrors, params)).c_str());
+    }
+    if (!scene.compare.empty()) {  // the window opens it side by side: say which view this is
+        std::printf("(the scene as given, view A: its side-by-side views, %s, run with --set)\n",
+                    joinedOverrides(scene.compare).c_str());
     }
     if (!options.state.empty()) writeState(options.state, world);
     if (!options.save.empty()) scenes::saveScene(options.save, scene, world);
