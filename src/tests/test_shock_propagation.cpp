@@ -259,7 +259,8 @@ TEST(ShockPropagation, ASphereOnTwoStacksOfDifferentHeights) {
 // wall, then its planes come last, so the position method's promise holds: walls are
 // never crossed. The overlap is what gives: the pass and each round of the sweep split it
 // in half and the wall takes back its sphere's half, 0.2 r -> 0.1 -> 0.05 -> ..., for
-// the sweep's four rounds: 0.1 / 2^4.
+// the sweep's four rounds: 0.1 / 2^4; then, deeper than 0.5 % of r, once more after the
+// levels (what is left, split as a pass splits it): 0.1 / 2^5.
 TEST(ShockPropagation, ASphereOnTwoWallsIsNeverLeftInsideEither) {
     physics::World world;
     fixtures::addBox(world, {1.0, 1.0, 1.0});
@@ -274,7 +275,7 @@ TEST(ShockPropagation, ASphereOnTwoWallsIsNeverLeftInsideEither) {
             EXPECT_GE(glm::dot(world.position[i] - plane.point, plane.normal), kR - 1e-12) << "sphere " << i;
         }
     }
-    EXPECT_NEAR(deepest(world, params), 0.1 / 16, 1e-9);
+    EXPECT_NEAR(deepest(world, params), 0.1 / 32, 1e-9);
 }
 
 // In a tilted box the levels start from the tilted floor: a column along its normal
@@ -413,13 +414,14 @@ TEST(ShockPropagation, NoPresetCreatesEnergyWithTheSweep) {
 
 // The pile: 10 000 spheres of the pile preset (r = 5 cm x (1000/N)^(1/3), as the
 // peer benchmark scales it), position based, K = 4, h = 1/240 s, 5 s from the lattice:
-// the deepest overlap then, with the sweep under 1 % of r (0.91 % measured; 0.70 and
-// 0.96 % with seeds 2 and 3, but 1.53 and 1.02 % with seeds 4 and 5: the 1 % is
-// not met in every seed), without it 4.6 % (4.5 and 5.0 %). And at every step from 3
-// to 6 s, while the last spheres land, under 2 % with the sweep (1.48 % measured; 1.71,
-// 1.96, 1.91 and 1.83 % with seeds 2 to 5): when its graph was found from the pairs before the
-// passes, a landing impact's lift pushed a sphere into one it had no pair with, the sweep
-// lifted it deeper, and one step reached 16.5 % (3.7 to 7.4 % without the sweep). About 12 s.
+// the deepest overlap then, with the sweep under 1 % of r (0.64 % measured; 0.50, 0.74,
+// 0.55 and 0.84 % with seeds 2 to 5, since what the levels leave deeper than 0.5 % of r is
+// split once after them: before, seeds 4 and 5 had 1.53 and 1.02 %, cages), without it
+// 4.6 % (4.5 and 5.0 %). And at every step from 3 to 6 s, while the last spheres land,
+// under 2 % with the sweep (1.25 % measured; 0.96, 2.24, 0.78 and 0.84 % with seeds 2 to
+// 5): when its graph was found from the pairs before the passes, a landing impact's lift
+// pushed a sphere into one it had no pair with, the sweep lifted it deeper, and one step
+// reached 16.5 % (3.7 to 7.4 % without the sweep). About 12 s.
 TEST(ShockPropagation, APileOfTenThousandSettlesWithOverlapsUnderOnePercent) {
     struct Run {
         double atFiveSeconds = 0.0, mostFromThreeToSix = 0.0;  // deepest overlap / r
@@ -447,13 +449,15 @@ TEST(ShockPropagation, APileOfTenThousandSettlesWithOverlapsUnderOnePercent) {
 }
 
 // The 1k pile at rest (15 s, four seeds): the sweep leaves the typical sphere slower (the
-// median speed 0.50-0.67 of the passes' alone), but not the kinetic energy per sphere, a
+// median speed 0.49-0.54 of the passes' alone), but not the kinetic energy per sphere, a
 // mean set by the few fastest. The fastest rests on one sphere (a perch: 19-40 of them in
 // either pile), and a perch slides off at 0.3-2.4 mm/s, as slide 13's v <- mu v lets
 // gravity's pull along its slope. The sweep's piles have more spheres faster than 0.1 mm/s
-// (5, 15, 4, 16 against 0, 13, 1, 13): seeds 1 and 3 end with 11 and 6.9 times the
-// passes' kinetic energy per sphere, seeds 2 and 4 with 1.0 and 0.8. The aim (no
-// more kinetic energy per sphere with the sweep) is not reached.
+// (5, 15, 4, 16 against 0, 13, 1, 13, measured before the split below). Which seeds end with a perch sliding is as good as
+// random: seeds 1, 3 and 4 end with 30, 36 and 186 times the passes' kinetic energy per
+// sphere, seed 2 with 1.0 (11, 6.9, 0.8 and 1.0 before the overlaps the levels leave were
+// split after them). The aim (no more kinetic energy per sphere with the sweep)
+// is not reached.
 TEST(ShockPropagation, ARestingPileMovesLessWithTheSweepButItsPerchesSlide) {
     struct Rest {
         double medianSpeed = 0.0;  // m/s
@@ -488,10 +492,10 @@ TEST(ShockPropagation, ARestingPileMovesLessWithTheSweepButItsPerchesSlide) {
         EXPECT_LT(on.medianSpeed, 0.75 * off.medianSpeed) << seed;
         EXPECT_GT(on.medianSpeed, 0.4 * off.medianSpeed) << seed;
         EXPECT_EQ(on.touchedByFastest, 1) << seed;
-        if (seed == "1" || seed == "3") {
-            EXPECT_GT(kineticRatio, 5.0) << seed;
-        } else {
+        if (seed == "2") {
             EXPECT_LT(kineticRatio, 1.1) << seed;
+        } else {
+            EXPECT_GT(kineticRatio, 5.0) << seed;
         }
     }
 }
