@@ -45,14 +45,17 @@ void setContextHints(const WindowOptions& options) {
 // The size asked for, no larger than the primary monitor's work area (the screen less its
 // panels): the default 1280 x 800 on a 1366 x 768 laptop put the timeline bar and the
 // side-by-side field below the screen's edge. Screen coordinates, before the monitor's
-// content scale, which GLFW_SCALE_TO_MONITOR applies.
+// content scale, which GLFW_SCALE_TO_MONITOR applies on Windows and X11 (on macOS screen
+// coordinates are points already, and the hint does nothing).
 glm::ivec2 sizeThatFits(int width, int height) {
     GLFWmonitor* monitor = glfwGetPrimaryMonitor();
     if (!monitor) return {width, height};
     int x = 0, y = 0, w = 0, h = 0;
     glfwGetMonitorWorkarea(monitor, &x, &y, &w, &h);
     float xscale = 1.0f, yscale = 1.0f;
+#ifndef __APPLE__
     glfwGetMonitorContentScale(monitor, &xscale, &yscale);
+#endif
     if (w <= 0 || h <= 0 || xscale <= 0.0f || yscale <= 0.0f) return {width, height};
     return {std::min(width, int(float(w) / xscale)), std::min(height, int(float(h) / yscale))};
 }
