@@ -250,9 +250,10 @@ std::vector<Parameter> makeTable() {
                "one sweep: with the position and reflection methods a column stands as built at any "
                "K, a pyramid without overlap at K = 1. The sweep answers overlaps (position, "
                "reflection) and static contacts only: impacts stay with the passes, so a struck "
-               "stack still moves. Last, a contact the levels leave deeper than 0.5 % of r (a sphere "
-               "caged between frozen spheres below and beside it) is split between both spheres once, "
-               "as a pass splits it. With the velocity method it projects no sphere, so an existing "
+               "stack still moves. Last, each contact still deeper than 0.5 % of r (a sphere caged "
+               "between frozen spheres below and beside it, which no round clears) is split between "
+               "both spheres once more, as a pass splits it. With the velocity method it projects no "
+               "sphere, so an existing "
                "overlap stays (21: 3.0 % of r at K = 1), but its answers to the static contacts "
                "still hold the column up (200 % of r without it). Spheres that reach no plane keep the "
                "passes' answer.",

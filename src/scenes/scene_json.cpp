@@ -611,11 +611,13 @@ std::string syntaxMessage(const Json::parse_error& e) {
             message.replace(begin, cut - begin, "...");
         }
     }
-    if (message.find("unexpected string literal; expected '}'") != std::string::npos ||
-        message.find("; expected ']'") != std::string::npos) {
+    const bool closedEarly = message.find("unexpected ']'") != std::string::npos || message.find("unexpected '}'") != std::string::npos;
+    if (closedEarly) {
+        // "unexpected '}'; expected ']'" is a bracket closed by the wrong one, not a comma
+        if (message.find("; expected '[', '{', or a literal") != std::string::npos) message += " (a comma after the last item?)";
+    } else if (message.find("unexpected string literal; expected '}'") != std::string::npos ||
+               message.find("; expected ']'") != std::string::npos) {
         message += " (a comma missing before it?)";
-    } else if (message.find("unexpected ']'") != std::string::npos || message.find("unexpected '}'") != std::string::npos) {
-        message += " (a comma after the last item?)";
     }
     return "invalid JSON: " + message;
 }

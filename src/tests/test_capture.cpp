@@ -247,8 +247,8 @@ TEST(CaptureCommandLine, AFileThatCannotBeWrittenWholeIsSaidAndNotLeft) {
     const std::filesystem::path folder = std::filesystem::path(SPHERES_TEST_OUTPUT_DIR) / "full_disk";
     std::filesystem::remove_all(folder);
     std::filesystem::create_directories(folder);
-    // The logs are written beside their name first (a killed run leaves the .part): that is /dev/full.
-    for (const char* name : {"state.csv", "log.csv.part", "log.jsonl.part"}) std::filesystem::create_symlink("/dev/full", folder / name);
+    // The files are written beside their name first (a killed run leaves the .part): that is /dev/full.
+    for (const char* name : {"state.csv.part", "log.csv.part", "log.jsonl.part"}) std::filesystem::create_symlink("/dev/full", folder / name);
     const Outcome state = runSpheres("simulate --scene 11_pile --steps 1 --state '" + (folder / "state.csv").string() + "'");
     EXPECT_EQ(state.code, 2) << state.output;
     EXPECT_NE(state.output.find("state.csv: cannot be written whole (is the disk full?)"), std::string::npos) << state.output;
@@ -257,7 +257,8 @@ TEST(CaptureCommandLine, AFileThatCannotBeWrittenWholeIsSaidAndNotLeft) {
         EXPECT_EQ(out.code, 2) << out.output;
         EXPECT_NE(out.output.find(std::string(log) + ": cannot be written whole"), std::string::npos) << out.output;
     }
-    EXPECT_FALSE(std::filesystem::exists(std::filesystem::symlink_status(folder / "state.csv"))) << "the truncated state is left";
+    EXPECT_FALSE(std::filesystem::exists(std::filesystem::symlink_status(folder / "state.csv"))) << "a truncated state is there";
+    EXPECT_FALSE(std::filesystem::exists(std::filesystem::symlink_status(folder / "state.csv.part"))) << "the part is left";
     // A capture stops at the first frame it cannot write, in one line, and leaves no manifest
     // (it went on rendering, with a line for each frame left, and exited 1). Frame 1 is
     // written beside its name first: that file is /dev/full.

@@ -415,13 +415,13 @@ TEST(ShockPropagation, NoPresetCreatesEnergyWithTheSweep) {
 // The issue's pile: 10 000 spheres of the pile preset (r = 5 cm x (1000/N)^(1/3), as the
 // peer benchmark scales it), position based, K = 4, h = 1/240 s, 5 s from the lattice:
 // the deepest overlap then, with the sweep under 1 % of r (0.64 % measured; 0.50, 0.74,
-// 0.55 and 0.84 % with seeds 2 to 5, since what the levels leave deeper than 0.5 % of r is
-// split once after them: before, seeds 4 and 5 had 1.53 and 1.02 %, cages), without it
-// 4.6 % (4.5 and 5.0 %). And at every step from 3 to 6 s, while the last spheres land,
-// under 2 % with the sweep (1.25 % measured; 0.96, 2.24, 0.78 and 0.84 % with seeds 2 to
-// 5): when its graph was found from the pairs before the passes, a landing impact's lift
-// pushed a sphere into one it had no pair with, the sweep lifted it deeper, and one step
-// reached 16.5 % (3.7 to 7.4 % without the sweep). About 12 s.
+// 0.58 and 0.69 % with seeds 2 to 5, since the contacts still deeper than 0.5 % of r are
+// split after the levels: before, seeds 4 and 5 had 1.53 and 1.02 %, cages), without it
+// 4.6 % (4.5 and 5.0 %). And, asserted for seed 1, at every step from 3 to 6 s while the
+// last spheres land, under 2 % with the sweep (1.25 % measured; 1.24, 2.24, 0.72 and 0.89 %
+// with seeds 2 to 5): when its graph was found from the pairs before the passes, a landing
+// impact's lift pushed a sphere into one it had no pair with, the sweep lifted it deeper,
+// and one step reached 16.5 % (3.7 to 7.4 % without the sweep). About 12 s.
 TEST(ShockPropagation, APileOfTenThousandSettlesWithOverlapsUnderOnePercent) {
     struct Run {
         double atFiveSeconds = 0.0, mostFromThreeToSix = 0.0;  // deepest overlap / r
@@ -452,12 +452,13 @@ TEST(ShockPropagation, APileOfTenThousandSettlesWithOverlapsUnderOnePercent) {
 // median speed 0.49-0.54 of the passes' alone), but not the kinetic energy per sphere, a
 // mean set by the few fastest. The fastest rests on one sphere (a perch: 19-40 of them in
 // either pile), and a perch slides off at 0.3-2.4 mm/s, as slide 13's v <- mu v lets
-// gravity's pull along its slope. The sweep's piles have more spheres faster than 0.1 mm/s
-// (5, 15, 4, 16 against 0, 13, 1, 13, measured before the split below). Which seeds end with a perch sliding is as good as
-// random: seeds 1, 3 and 4 end with 30, 36 and 186 times the passes' kinetic energy per
-// sphere, seed 2 with 1.0 (11, 6.9, 0.8 and 1.0 before the overlaps the levels leave were
-// split after them). The issue's aim (no more kinetic energy per sphere with the sweep)
-// is not reached.
+// gravity's pull along its slope (seed 4's, about 5 cm/s at 15 s). Which seeds end with a
+// perch sliding is as good as random: seeds 1 to 4 end with 30, 1.0, 36 and 186 times the
+// passes' kinetic energy per sphere (11, 1.0, 6.9 and 0.8 before the contacts still deeper
+// than 0.5 % of r were split after the levels; 3.3, 1.3, 6.3 and 0.74 with that split kept
+// to the spheres with a level). The issue's aim (no more kinetic energy per sphere with the
+// sweep) is not reached: the test asserts the flaw's size, under 300 times in every seed
+// and more than twice in some, not which seeds.
 TEST(ShockPropagation, ARestingPileMovesLessWithTheSweepButItsPerchesSlide) {
     struct Rest {
         double medianSpeed = 0.0;  // m/s
@@ -483,21 +484,20 @@ TEST(ShockPropagation, ARestingPileMovesLessWithTheSweepButItsPerchesSlide) {
         result.kineticPerSphere = physics::measure(world, scene.params).kinetic / double(world.size());
         return result;
     };
+    double mostKineticRatio = 0.0;
     for (const std::string seed : {"1", "2", "3", "4"}) {
         const Rest on = rest(seed, "shock=on"), off = rest(seed, "shock=off");
         const double kineticRatio = on.kineticPerSphere / off.kineticPerSphere;
+        mostKineticRatio = std::max(mostKineticRatio, kineticRatio);
         std::printf("seed %s: median speed %.2e / %.2e m/s, kinetic energy per sphere %.2e / %.2e J (x %.2f), the fastest touches %d\n",
                     seed.c_str(), on.medianSpeed, off.medianSpeed, on.kineticPerSphere, off.kineticPerSphere, kineticRatio,
                     on.touchedByFastest);
         EXPECT_LT(on.medianSpeed, 0.75 * off.medianSpeed) << seed;
         EXPECT_GT(on.medianSpeed, 0.4 * off.medianSpeed) << seed;
         EXPECT_EQ(on.touchedByFastest, 1) << seed;
-        if (seed == "2") {
-            EXPECT_LT(kineticRatio, 1.1) << seed;
-        } else {
-            EXPECT_GT(kineticRatio, 5.0) << seed;
-        }
+        EXPECT_LT(kineticRatio, 300.0) << seed;
     }
+    EXPECT_GT(mostKineticRatio, 2.0) << "the aim is met: resolve it in issue 19";
 }
 
 // The graph is found from the last step's candidate pairs: a world that lost spheres since

@@ -38,7 +38,14 @@ DiagnosticsLog::DiagnosticsLog(const std::string& path) : path_(path) {
     }
 }
 
+DiagnosticsLog::~DiagnosticsLog() {
+    if (finished_) return;
+    file_.close();
+    std::remove((path_ + ".part").c_str());
+}
+
 void DiagnosticsLog::finish() {
+    finished_ = true;
     file_.close();
     const std::string part = path_ + ".part";
     if (!file_ || std::rename(part.c_str(), path_.c_str()) != 0) {

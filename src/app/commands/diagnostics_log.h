@@ -12,6 +12,10 @@ public:
     // Throws UsageError when the extension is neither .csv nor .jsonl, or the file
     // cannot be opened for writing.
     explicit DiagnosticsLog(const std::string& path);
+    // Unfinished (an error ended the run): its .part is removed. A killed run leaves it.
+    ~DiagnosticsLog();
+    DiagnosticsLog(const DiagnosticsLog&) = delete;
+    DiagnosticsLog& operator=(const DiagnosticsLog&) = delete;
     void write(std::uint64_t step, double time, const physics::Diagnostics& d);
     // Closes the file; throws UsageError when it could not be written whole (a full disk).
     void finish();
@@ -20,6 +24,7 @@ private:
     std::string path_;
     std::ofstream file_;
     bool csv_ = true;
+    bool finished_ = false;
 };
 
 // One line for a terminal: energies (J), momentum (kg m/s), contacts, penetration, hash.

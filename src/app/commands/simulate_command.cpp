@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <fstream>
 #include <optional>
+#include <sstream>
 
 #include "app/commands/diagnostics_log.h"
 #include "app/commands/progress_line.h"
@@ -11,24 +12,22 @@
 #include "app/run/scene_source.h"
 #include "app/teaching/impact_report.h"
 #include "physics/step.h"
+#include "platform/whole_file.h"
 #include "scenes/scene_json.h"
 
 namespace app {
 namespace {
 
 void writeState(const std::string& path, const physics::World& world) {
-    std::ofstream file(path);
-    if (!file) throw UsageError("--state " + path + ": cannot open the file for writing");
-    file.precision(17);
-    file << "id,px_m,py_m,pz_m,vx_m_s,vy_m_s,vz_m_s,r_m,m_kg\n";
+    std::ostringstream text;
+    text.precision(17);
+    text << "id,px_m,py_m,pz_m,vx_m_s,vy_m_s,vz_m_s,r_m,m_kg\n";
     for (std::size_t i = 0; i < world.size(); ++i) {
         const glm::dvec3 &p = world.position[i], &v = world.velocity[i];
-        file << i << ',' << p.x << ',' << p.y << ',' << p.z << ',' << v.x << ',' << v.y << ','
-             << v.z << ',' << world.radius[i] << ',' << world.mass[i] << '\n';
+        text << i << ',' << p.x << ',' << p.y << ',' << p.z << ',' << v.x << ',' << v.y << ',' << v.z << ','
+             << world.radius[i] << ',' << world.mass[i] << '\n';
     }
-    file.close();
-    if (!file) {
-        std::remove(path.c_str());  // not a truncated state that reads as the whole
+    if (!platform::writeWholeFile(path, text.str())) {  // not a truncated state that reads as the whole
         throw UsageError("--state " + path + ": cannot be written whole (is the disk full?)");
     }
 }
@@ -40,11 +39,11 @@ int runSimulate(const SimulateOptions& options) {
     if (options.every > 0 && options.out.empty()) throw UsageError("--every needs --out FILE");
     checkWritable("--state", options.state, ".csv");
     checkWritable("--save", options.save, ".json");
+    physics::World world = scenes::buildWorld(scene);  // before the log opens: a scene it refuses leaves no .part
     std::optional<DiagnosticsLog> log;
     if (!options.out.empty()) log.emplace(options.out);
     const std::int64_t every = options.every > 0 ? options.every : options.steps;
 
-    physics::World world = scenes::buildWorld(scene);
     world.measureImpacts = world.size() <= physics::kMostMirroredSpheres;
     ImpactRecord impacts;
     const physics::Params& params = scene.params;

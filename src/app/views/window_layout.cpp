@@ -114,6 +114,7 @@ float arrangeViews(glm::ivec4 area, int count, int gap, int labelWidth, const La
     const bool labelled = count > 1 && labelWidth > 0 && labelHeight;
     // Above a view the label is as wide as the view (a longer line wraps); beside it, its own width.
     const auto above = [&](int width) { return std::min(labelHeight(std::min(width, labelWidth)), area.w); };
+    const int besideHeight = labelled ? labelHeight(labelWidth) : 0;  // px, a label at its own width
     int bestColumns = 1;
     bool bestAbove = true;  // each label above its view, else left of it
     float best = -1.0f;
@@ -124,7 +125,7 @@ float arrangeViews(glm::ivec4 area, int count, int gap, int labelWidth, const La
         const float top = labelled ? boxHeightIn(w, h - float(above(int(w))), boxAspect) : boxHeightIn(w, h, boxAspect);
         // Beside its view a label is as tall as its lines at its own width: where they need
         // more than the row, they were cut (18's "✗ break-away" in half at 1280 x 768).
-        const bool fitsBeside = labelled && labelHeight(labelWidth) <= int(h);
+        const bool fitsBeside = labelled && besideHeight <= int(h);
         const float left = fitsBeside ? boxHeightIn(w - float(labelWidth), h, boxAspect) : -1.0f;
         if (std::max(top, left) > best) {  // ties: fewer columns, labels above
             best = std::max(top, left);
