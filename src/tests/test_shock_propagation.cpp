@@ -448,40 +448,65 @@ TEST(ShockPropagation, APileOfTenThousandSettlesWithOverlapsUnderOnePercent) {
     EXPECT_LT(on.mostFromThreeToSix, 0.02);
 }
 
-// The 1k pile at rest (15 s, four seeds): the sweep leaves the typical sphere slower (the
-// median speed 0.49-0.54 of the passes' alone), but not the kinetic energy per sphere, a
-// mean set by the few fastest. The fastest rests on one sphere (a perch: 19-40 of them in
-// either pile), and a perch slides off at 0.3-2.4 mm/s, as slide 13's v <- mu v lets
-// gravity's pull along its slope (seed 4's, about 5 cm/s at 15 s). Which seeds end with a
-// perch sliding is as good as random: seeds 1 to 4 end with 30, 1.0, 36 and 186 times the
-// passes' kinetic energy per sphere (11, 1.0, 6.9 and 0.8 before the contacts still deeper
-// than 0.5 % of r were split after the levels; 3.3, 1.3, 6.3 and 0.74 with that split kept
-// to the spheres with a level). The aim (no more kinetic energy per sphere with the
-// sweep) is not reached: the test asserts the flaw's size, under 300 times in every seed
-// and more than twice in some, not which seeds.
-TEST(ShockPropagation, ARestingPileMovesLessWithTheSweepButItsPerchesSlide) {
+// The 1k pile at rest (its last second, 14 to 15 s, four seeds). What the sweep changes is
+// the velocities, not the motion:
+// - the typical sphere's velocity is lower with the sweep (the median speed at 15 s 0.49-0.54
+//   of the passes' alone: 0.16-0.21 against 0.30-0.40 micrometres per second);
+// - but the typical sphere moves as far: 1.2-1.5 mm in the second with or without the sweep
+//   (0.93-1.33 times; seeds 5 to 8 as well), thousands of times what its velocity shows. The
+//   position stage moves what the velocity does not: each step gravity moves a resting
+//   sphere g h^2 (0.17 mm) into the spheres below,
+//   and the passes' projection splits that overlap between both, spreading the levels below
+//   sideways. The sweep comes after them, and the pile creeps as much (its mean height sinks
+//   1.8 mm from 15 to 30 s in seed 1, against 2.1 mm without);
+// - and the kinetic energy per sphere, a mean set by the few fastest, is higher in most
+//   seeds: 19, 1.0, 0.23 and 55 times the passes' (the mean over the second; seeds 5 to 8:
+//   121, 2.3, 55 and 0.67). The fastest rest on one sphere. Seed 4's (716, r = 5.5 cm) sits
+//   on a sphere (520) held only by a contact at its side, slide 13's v <- mu v, which sinks
+//   both at 4.4 cm/s with or without the sweep; with the sweep, 520 is answered as a frozen
+//   level first, ends some steps 1e-6 m below 716, and 716 then ends the step with
+//   gravity's g h (4.1 cm/s) unanswered. Which seeds hold such a sphere is as good as random.
+// The aim (no more kinetic energy per sphere with the sweep) is not reached: the test
+// asserts the flaw's size, under 300 times in every seed and more than twice in some, and
+// that the sweep's pile moves as the passes' does.
+TEST(ShockPropagation, ARestingPileMovesAsMuchWithTheSweepThoughItsVelocitiesAreLower) {
     struct Rest {
-        double medianSpeed = 0.0;  // m/s
-        double kineticPerSphere = 0.0;  // J
-        int touchedByFastest = 0;  // spheres the fastest touches (to 10^-4 r)
+        double medianSpeed = 0.0;       // m/s, at 15 s
+        double medianMotion = 0.0;      // m, from 14 to 15 s
+        double kineticPerSphere = 0.0;  // J, the mean over the time steps of the last second
+        int touchedByFastest = 0;       // spheres the fastest touches at 15 s (to 10^-4 r)
     };
     const auto rest = [](const std::string& seed, const char* shock) {
         scenes::Scene scene = scenes::loadScene(scenes::presetPath("11_pile"));
         EXPECT_EQ(scenes::applySetting(scene, "seed=" + seed), "");
         EXPECT_EQ(scenes::applySetting(scene, shock), "");
         physics::World world = scenes::buildWorld(scene);
-        while (world.time < 15.0 - 1e-9) physics::step(world, scene.params);
-        std::vector<double> speeds;
-        for (const dvec3& v : world.velocity) speeds.push_back(glm::length(v));
-        const std::size_t fastest = std::max_element(speeds.begin(), speeds.end()) - speeds.begin();
+        while (world.time < 14.0 - 1e-9) physics::step(world, scene.params);
+        const std::vector<dvec3> before = world.position;
         Rest result;
+        int steps = 0;
+        while (world.time < 15.0 - 1e-9) {
+            physics::step(world, scene.params);
+            result.kineticPerSphere += physics::measure(world, scene.params).kinetic / double(world.size());
+            ++steps;
+        }
+        result.kineticPerSphere /= steps;
+        std::vector<double> speeds, motions;
+        for (std::size_t i = 0; i < world.size(); ++i) {
+            speeds.push_back(glm::length(world.velocity[i]));
+            motions.push_back(glm::length(world.position[i] - before[i]));
+        }
+        const std::size_t fastest = std::max_element(speeds.begin(), speeds.end()) - speeds.begin();
         for (std::size_t j = 0; j < world.size(); ++j) {
             const double gap = glm::length(world.position[fastest] - world.position[j]) - world.radius[fastest] - world.radius[j];
             result.touchedByFastest += j != fastest && gap < 1e-4 * world.radius[fastest];
         }
-        std::nth_element(speeds.begin(), speeds.begin() + speeds.size() / 2, speeds.end());
-        result.medianSpeed = speeds[speeds.size() / 2];
-        result.kineticPerSphere = physics::measure(world, scene.params).kinetic / double(world.size());
+        const auto median = [](std::vector<double>& values) {
+            std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+            return values[values.size() / 2];
+        };
+        result.medianSpeed = median(speeds);
+        result.medianMotion = median(motions);
         return result;
     };
     double mostKineticRatio = 0.0;
@@ -489,11 +514,14 @@ TEST(ShockPropagation, ARestingPileMovesLessWithTheSweepButItsPerchesSlide) {
         const Rest on = rest(seed, "shock=on"), off = rest(seed, "shock=off");
         const double kineticRatio = on.kineticPerSphere / off.kineticPerSphere;
         mostKineticRatio = std::max(mostKineticRatio, kineticRatio);
-        std::printf("seed %s: median speed %.2e / %.2e m/s, kinetic energy per sphere %.2e / %.2e J (x %.2f), the fastest touches %d\n",
-                    seed.c_str(), on.medianSpeed, off.medianSpeed, on.kineticPerSphere, off.kineticPerSphere, kineticRatio,
-                    on.touchedByFastest);
+        std::printf("seed %s, on / off: median speed %.2e / %.2e m/s, median motion %.2e / %.2e m, kinetic energy per sphere "
+                    "%.2e / %.2e J (x %.2f), the fastest touches %d\n",
+                    seed.c_str(), on.medianSpeed, off.medianSpeed, on.medianMotion, off.medianMotion, on.kineticPerSphere,
+                    off.kineticPerSphere, kineticRatio, on.touchedByFastest);
         EXPECT_LT(on.medianSpeed, 0.75 * off.medianSpeed) << seed;
         EXPECT_GT(on.medianSpeed, 0.4 * off.medianSpeed) << seed;
+        EXPECT_GT(on.medianMotion, 0.8 * off.medianMotion) << seed;
+        EXPECT_LT(on.medianMotion, 1.5 * off.medianMotion) << seed;
         EXPECT_EQ(on.touchedByFastest, 1) << seed;
         EXPECT_LT(kineticRatio, 300.0) << seed;
     }
