@@ -96,6 +96,7 @@ Window::~Window() {
 bool Window::shouldClose() const { return glfwWindowShouldClose(window_) != 0; }
 void Window::requestClose() { glfwSetWindowShouldClose(window_, GLFW_TRUE); }
 void Window::pollEvents() { glfwPollEvents(); }
+void Window::waitEvents(double timeoutSeconds) { glfwWaitEventsTimeout(timeoutSeconds); }
 void Window::swapBuffers() { glfwSwapBuffers(window_); }
 void Window::setTitle(const std::string& title) { glfwSetWindowTitle(window_, title.c_str()); }
 

@@ -31,6 +31,7 @@ class Window {
     bool shouldClose() const;
     void requestClose();
     void pollEvents();
+    void waitEvents(double timeoutSeconds);  // until an event comes, or the timeout (s)
     void swapBuffers();
     void setTitle(const std::string& title);
     void setVsync(bool on);

@@ -22,6 +22,8 @@ public:
     // After the events were polled, before ImGui::NewFrame: the keys pressed and already
     // released since the last frame are down for this one; those held so last frame let go.
     void beforeNewFrame(ImGuiIO& io);
+    // Whether a press is still to be let go (the next frame must come soon).
+    bool holding() const { return !pressed_.empty() || !held_.empty(); }
 
 private:
     std::vector<int> pressed_;  // since the last frame

@@ -19,6 +19,7 @@
 #include "app/window/interaction_input.h"
 #include "app/window/multisampled_views.h"
 #include "app/window/short_key_presses.h"
+#include "app/window/still_frames.h"
 #include "app/window/window_settings.h"
 #include "app/views/interaction_windows.h"
 #include "app/run/output_files.h"
@@ -82,6 +83,8 @@ private:
     void followViewShape(const ViewLayout& views);
     WindowLayout layout() const;  // everything's place: the panel, the dock, the bars and the views
     bool saveScreenshot(const std::string& path);
+    void noteWhatWasDrawn();
+    void waitForInput();
 
     std::unique_ptr<platform::Window> window_;
     Simulation simulation_;
@@ -96,6 +99,7 @@ private:
     ui::PanelState panel_;
     InteractionInput input_;
     ShortKeyPresses shortPresses_;  // a key pressed and let go between two frames still reaches ImGui
+    StillFrames stillFrames_;       // paused and unchanged: wait for input
     std::vector<std::string> presets_;
     ui::FrameTimes timing_;
     double frameSeconds_ = 0.0;  // s, a running average of the real frame time
@@ -553,6 +557,25 @@ void WindowApp::frame(double dt) {
     }
 }
 
+// Paused, with nothing held: the frame is compared with the last (StillFrames); a scripted
+// run (--frames) draws every frame.
+void WindowApp::noteWhatWasDrawn() {
+    const ImGuiIO& io = ImGui::GetIO();
+    bool held = shortPresses_.holding();
+    for (const bool down : io.MouseDown) held = held || down;
+    for (const bool down : io.KeysDown) held = held || down;
+    const bool quiet = simulation_.paused && timing_.stepsThisFrame == 0 && !held && options_.frames == 0;
+    const std::uint64_t scene = simulation_.world().stepCount * 1000003u + std::uint64_t(session_.selected() + 1);
+    stillFrames_.after(quiet, *ImGui::GetDrawData(), camera_, scene);
+}
+
+// Until input comes or StillFrames::kWaitSeconds pass; input draws a few frames again.
+void WindowApp::waitForInput() {
+    const double start = window_->time();
+    window_->waitEvents(StillFrames::kWaitSeconds);
+    if (window_->time() - start < 0.9 * StillFrames::kWaitSeconds) stillFrames_.woken();
+}
+
 bool WindowApp::saveScreenshot(const std::string& path) {
     const glm::ivec2 size = window_->framebufferSize();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -570,11 +593,14 @@ int WindowApp::run() {
     int drawn = 0;
     for (int frames = 0; !window_->shouldClose(); ++frames) {
         if (frames == 1) timedFrom = std::chrono::steady_clock::now();
+        const bool waits = stillFrames_.waits();
+        if (waits) waitForInput();
         profile_.begin();
         const double now = window_->time();
-        const double dt = std::min(now - last, 0.25);  // s; a stall (dragging the window) is not simulated
+        // s; a stall (dragging the window) is not simulated, nor a wait (paused)
+        const double dt = waits ? 0.0 : std::min(now - last, 0.25);
         // Averaged in time, not in rate, so one near-instant first frame cannot inflate it.
-        frameSeconds_ = frames == 0 ? 0.0 : (frames == 1 ? now - last : 0.9 * frameSeconds_ + 0.1 * (now - last));
+        if (!waits) frameSeconds_ = frames == 0 ? 0.0 : (frames == 1 ? now - last : 0.9 * frameSeconds_ + 0.1 * (now - last));
         timing_.fps = frameSeconds_ > 0.0 ? 1.0 / frameSeconds_ : 0.0;
         last = now;
         const bool lastFrame = options_.frames > 0 && frames + 1 >= options_.frames;
@@ -584,6 +610,7 @@ int WindowApp::run() {
             return 1;
         }
         profile_.lap(FrameProfile::Other);
+        noteWhatWasDrawn();
         window_->swapBuffers();
         profile_.lap(FrameProfile::Present);
         profile_.endFrame(options_.frames > 0 && frames > 0);
