@@ -103,6 +103,9 @@ struct Region {
 // region it fits. Slide 14's presets look straight at their mirror plane, so that a
 // symmetric answer looks symmetric, and frame their spheres, not the whole box, so that
 // four views on a projector draw them large (the box stays drawn; the wheel zooms out).
+// The time scale's range (the window's slider, a scene's "time_scale").
+constexpr double kTimeScaleRange[2] = {0.01, 4.0};
+
 struct SceneCamera {
     std::optional<double> azimuthDeg;    // deg, around +z from +x; none: the three-quarter view's
     std::optional<double> elevationDeg;  // deg, above the xy plane, |el| <= 88; none: the default
@@ -122,6 +125,10 @@ struct Scene {
     // the state drifts from its mirror image (Smith et al.'s symmetry, slide 14).
     std::vector<physics::Plane> mirrors;
     SceneCamera camera;
+    // "time_scale": the simulated seconds per real second the window and the page open the
+    // scene at (below 1: slow motion, for an impact over in a fraction of a second); capture
+    // and simulate count simulated time and ignore it.
+    double timeScale = 1.0;
     physics::Params params;
     std::uint64_t seed = 1;
     std::vector<Sphere> spheres;

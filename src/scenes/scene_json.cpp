@@ -31,7 +31,7 @@ using Keys = std::vector<std::string_view>;
 constexpr std::size_t kLongestTitle = 200, kLongestDescription = 20000;
 const Keys kSceneKeys = {"title", "slide",   "description", "box",      "planes", "parameters",
                          "seed",  "spheres", "generate",    "emitters", "time",   "steps",
-                         "claims", "compare", "mirror", "camera"};
+                         "claims", "compare", "mirror", "camera", "time_scale"};
 const Keys kCameraKeys = {"azimuth", "elevation", "fits"};
 const Keys kMirrorKeys = {"point", "normal"};
 const Keys kBoxKeys = {"size", "tilt"};
@@ -121,6 +121,9 @@ class SceneReader {
         scene.planes = readList(root, "planes", &SceneReader::readPlane);
         scene.mirrors = readList(root, "mirror", &SceneReader::readMirror);
         if (const Json* camera = find(root, "camera")) scene.camera = readCamera(*camera, "/camera");
+        if (const Json* scale = find(root, "time_scale")) {
+            scene.timeScale = inRange(*scale, "/time_scale", kTimeScaleRange[0], kTimeScaleRange[1]);
+        }
         if (const Json* seed = find(root, "seed")) scene.seed = readSeed(*seed, "/seed");
         scene.spheres = readList(root, "spheres", &SceneReader::readSphere);
         scene.generators = readList(root, "generate", &SceneReader::readGenerator);
@@ -827,6 +830,7 @@ std::string sceneText(const Scene& scene, const physics::World& world) {
         << "  \"planes\": " << planesText(world.planes, std::size_t(world.boxPlaneCount)) << ",\n"
         << (scene.mirrors.empty() ? "" : "  \"mirror\": " + planesText(scene.mirrors, 0) + ",\n")
         << (cameraGiven(scene.camera) ? "  \"camera\": " + cameraText(scene.camera) + ",\n" : "")
+        << (scene.timeScale != 1.0 ? "  \"time_scale\": " + dump(scene.timeScale) + ",\n" : "")
         << "  \"parameters\": " << parametersText(scene) << ",\n"
         << "  \"seed\": " << scene.seed << ",\n"
         << "  \"time\": " << dump(world.time) << ",\n"

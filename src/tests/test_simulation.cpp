@@ -33,6 +33,27 @@ TEST(Simulation, TooMuchTimeIsClampedAndSaidSo) {
     EXPECT_EQ(sim.advance(h), 1);  // the lag was dropped, not carried over
 }
 
+// 16-19 open in slow motion (their impacts are over in a fraction of a second): the pace
+// follows the scenes opened one after another, unless the user chose one.
+TEST(Simulation, TheTimeScaleFollowsTheScenesOpenedUnlessTheUserChoseOne) {
+    const auto preset = [](const char* name) { return scenes::loadScene(scenes::presetPath(name)); };
+    EXPECT_EQ(preset("16_bernoulli").timeScale, 0.25);
+    app::Simulation sim = pile();
+    sim.timeScale = sim.scene().timeScale;  // as the window opens it
+    EXPECT_EQ(sim.timeScale, 1.0);
+    sim.openScene(preset("16_bernoulli"));
+    EXPECT_EQ(sim.timeScale, 0.25);
+    const double h = sim.params().timeStep;
+    EXPECT_EQ(sim.advance(4 * h), 1) << "four real steps of h are one simulated";
+    sim.openScene(preset("11_pile"));
+    EXPECT_EQ(sim.timeScale, 1.0);
+    sim.timeScale = 0.5;  // the user's
+    sim.openScene(preset("17_squeeze"));
+    EXPECT_EQ(sim.timeScale, 0.5);
+    sim.openScene(preset("11_pile"));
+    EXPECT_EQ(sim.timeScale, 0.5);
+}
+
 TEST(Simulation, AWallBudgetStopsAfterTheFirstStepItExceeds) {
     app::Simulation sim = pile();
     sim.wallBudget = 0.0;  // s: any step exceeds it

@@ -594,9 +594,13 @@ UnderText underPresentedText(const std::vector<const scenes::Parameter*>& slider
     std::snprintf(numbers, sizeof numbers, "kinetic\u00a0%.4g\u00a0J   E~\u00a0%.5g\u00a0J   |p|\u00a0%.4g\u00a0kg\u00a0m/s",
                   r.diagnostics.kinetic, r.diagnostics.modified, glm::length(r.diagnostics.momentum));
     under.notes.push_back(numbers);
-    char status[96];
+    char status[128];
     std::snprintf(status, sizeof status, "t = %.3f s, %s", r.time, r.paused ? "paused (P runs, O steps)" : "running");
     under.status = status;
+    if (r.timeScale != 1.0) {  // the class should know that what it sees is slowed down (or sped up)
+        std::snprintf(status, sizeof status, r.timeScale < 1.0 ? ", slow motion %.3g\u00d7" : ", %.3g\u00d7 real time", r.timeScale);
+        under.status += status;
+    }
     for (const Readouts::Alarm& alarm : alarms) {
         if (alarm.lit) under.alarms.push_back(alarm.text);
     }

@@ -28,7 +28,7 @@ inline float presentedScale(float screenScale, float heightInScreenUnits) {
     return kPresentScale * screenScale * std::max(1.0f, heightInScreenUnits / kPresentHeight);
 }
 // The time scale's range (simulated seconds per real second): slow motion to 4x.
-constexpr double kTimeScaleRange[2] = {0.01, 4.0};
+using scenes::kTimeScaleRange;
 // The UI scale's slider (the panel's font multiplier), which capture's --ui-scale and the
 // window's kept settings hold to.
 constexpr float kUiScaleRange[2] = {0.75f, 3.0f};
@@ -117,6 +117,7 @@ struct Readouts {
     bool paused = false;
     bool behindRealTime = false;
     double time = 0.0;      // s, simulated
+    double timeScale = 1.0;  // simulated seconds per real second
     std::uint64_t steps = 0;
     std::size_t sphereCount = 0;
     physics::StepStats stats;

@@ -257,7 +257,8 @@ extern "C" {
 
 // Opens the scene (as --scene names it) with `settings` ("name=value" lines) in the
 // canvas of width x height px: {"title", "preset" (its name in the preset list), "sliders"
-// (those its text names: the presentation layout's), "time_scale" (its range), "slide",
+// (those its text names: the presentation layout's), "time_scale" (its range),
+// "opening_time_scale" (the scene's own, which the run starts at), "slide",
 // "description", "compare" (the overrides the scene opens side by side with, as the
 // desktop does; "" none)} or {"error"}.
 EMSCRIPTEN_KEEPALIVE const char* spheres_open(const char* name, const char* settings, int width, int height) {
@@ -271,6 +272,7 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_open(const char* name, const char* sett
         // Made aside, then swapped in: a scene that cannot be built leaves the open one as it was.
         auto simulation = std::make_unique<app::Simulation>(web::sceneWithSettings(name, settings));
         simulation->wallBudget = kStepBudgetSeconds;
+        simulation->timeScale = simulation->scene().timeScale;  // a scene may open in slow motion
         auto session = std::make_unique<app::Session>(*simulation, kTimelineBytes);
         const scenes::Scene& s = simulation->scene();
         if (!s.compare.empty()) {
@@ -286,6 +288,7 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_open(const char* name, const char* sett
                        {"preset", web::presetName(name)},
                        {"sliders", scenes::slidersToMove(s)},
                        {"time_scale", {ui::kTimeScaleRange[0], ui::kTimeScaleRange[1]}},
+                       {"opening_time_scale", s.timeScale},
                        {"slide", s.slide},
                        {"description", scenes::describedText(s)},
                        {"compare", app::joinedOverrides(s.compare)}});

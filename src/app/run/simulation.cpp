@@ -18,6 +18,12 @@ void Simulation::setScene(scenes::Scene scene) {
     startFrom(std::move(world));
 }
 
+void Simulation::openScene(scenes::Scene scene) {
+    const bool chosen = timeScale != scene_.timeScale;
+    setScene(std::move(scene));
+    if (!chosen) timeScale = scene_.timeScale;
+}
+
 void Simulation::restart() { startFrom(scenes::buildWorld(scene_)); }
 
 void Simulation::startFrom(physics::World world) {

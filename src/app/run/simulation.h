@@ -28,6 +28,10 @@ public:
     // Builds the world from `scene`, then takes both; throws (scenes::SceneError) when
     // the scene cannot be built, with the scene and the world unchanged.
     void setScene(scenes::Scene scene);
+    // Another scene in its place (a file or a preset loaded), as setScene. The time scale a
+    // user chose is kept; one left where the last scene opened it follows the new scene's own
+    // (16-19 open in slow motion, the pile after them at 1x).
+    void openScene(scenes::Scene scene);
 
     // Real seconds since the last frame: scaled by timeScale, accumulated, and spent
     // in whole steps of h. At most kMaxStepsPerFrame run per call, and after the first

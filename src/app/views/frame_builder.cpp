@@ -115,6 +115,7 @@ ui::Readouts makeReadouts(const Simulation& simulation, const ui::FrameTimes& ti
     r.paused = simulation.paused;
     r.behindRealTime = simulation.behindRealTime();
     r.time = simulation.world().time;
+    r.timeScale = simulation.timeScale;
     r.steps = simulation.world().stepCount;
     r.sphereCount = simulation.world().size();
     r.stats = simulation.lastStepStats();

@@ -121,6 +121,7 @@ WindowApp::WindowApp(std::unique_ptr<platform::Window> window, scenes::Scene sce
       input_(session_),
       presets_(scenes::listPresets()) {
     simulation_.paused = options.paused;
+    simulation_.timeScale = simulation_.scene().timeScale;  // a scene may open in slow motion
     simulation_.wallBudget = kSlowestFrameSeconds;
     panel_.scenePath = resolveScenePath(options.scene);
     panel_.outputFolder = outputFolder();
@@ -376,9 +377,7 @@ int WindowApp::presetIndexOf(const std::string& path) const {
 
 void WindowApp::loadFile(const std::string& path) {
     try {
-        const double timeScale = simulation_.timeScale;
-        simulation_.setScene(scenes::loadScene(path));
-        simulation_.timeScale = timeScale;
+        simulation_.openScene(scenes::loadScene(path));
         showSceneTitle();
         panel_.scenePath = path;
         panel_.presetIndex = presetIndexOf(path);  // a preset's file by any path: [ and ] go on from it
