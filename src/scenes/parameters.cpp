@@ -178,7 +178,7 @@ std::vector<Parameter> makeTable() {
              "ball may also settle into hops faster than \u03b5: 02 at \u03b2 = 0.8 rests only "
              "from \u03b5 = 0.16).",
              param<&Params::epsilon>()),
-        real("mu", "\u03bc  static-contact friction", "", 0.0, 1.0, kDefaults.mu,
+        real("mu", "\u03bc  static friction, v \u2190 \u03bc v", "", 0.0, 1.0, kDefaults.mu,
              "Slide 13: friction v \u2190 \u03bc v on both spheres of a static contact. A damping "
              "factor applied each time a static contact is handled (once per pass, and once more in "
              "the shock sweep), not Coulomb's "

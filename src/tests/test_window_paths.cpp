@@ -238,6 +238,29 @@ TEST(WindowPaths, TheOverridesOfferedFollowTheSceneUntilTheUserWritesThere) {
     EXPECT_EQ(open("11_pile"), "order=reversed");
 }
 
+// Side by side with the offer, the next scene's offer replaces it ([ and ]): the cradle's
+// "method=position" kept on the pile had compared the velocity method with itself, one run in
+// two views (a student read that the setting changed nothing). Overrides the user wrote stay.
+TEST(WindowPaths, SideBySideWithTheOfferFollowsTheNextScenesOffer) {
+    app::Simulation simulation(scenes::loadScene(scenes::presetPath("08_newtons_cradle")));
+    app::Session session(simulation);
+    app::InteractionInput input(session);
+    const auto open = [&](const char* preset) {
+        simulation.setScene(scenes::loadScene(scenes::presetPath(preset)));
+        input.sceneChanged();
+        return session.comparison() ? session.comparison()->label() : std::string("one view");
+    };
+    ASSERT_TRUE(input.applyCompare(0.0));  // V: the offer, method=position
+    EXPECT_EQ(open("11_pile"), "method = velocity");
+    EXPECT_FALSE(session.comparison()->changesNothing(session.run(0).scene()));
+    open("21_shock_column");
+    EXPECT_EQ(session.comparison()->count(), 3) << "the scene's own four views";
+    EXPECT_EQ(open("11_pile"), "one view") << "a scene's own views close with it";
+    input.tools().compareText = "passes=1";  // written
+    ASSERT_TRUE(input.applyCompare(1.0));
+    EXPECT_EQ(open("09_column"), "passes = 1");
+}
+
 // Esc backs out one level at a time (the window leaves the presentation layout first):
 // the explainer, then the selection, then nothing, which it reports so the window can say
 // how to quit instead of quitting.

@@ -85,16 +85,27 @@ std::string InteractionInput::startComparison(const std::vector<std::string>& li
     tools_.compareText = joinedOverrides(lists);
     const std::string error = session_.startComparison(lists);
     foldReadouts_ = error.empty();
+    comparingSuggestion_ = false;
     return error;
 }
 
+// Side by side with the last scene's offer, the next scene's offer replaces it: its overrides
+// could change nothing there (the cradle's order=index,reversed on 13's one sphere: two views
+// of one run). Overrides the user wrote stay, and a scene's own "compare" comes first.
 void InteractionInput::sceneChanged() {
+    const bool followOffer = session_.comparison() && comparingSuggestion_;
+    if (followOffer) session_.stopComparison();
     session_.sceneChanged();
     suggestOverrides();
     const std::vector<std::string>& asked = session_.run(0).scene().compare;
-    if (asked.empty() || !session_.comparison()) return;
-    tools_.compareText = joinedOverrides(asked);
-    foldReadouts_ = true;
+    if (!asked.empty() && session_.comparison()) {
+        tools_.compareText = joinedOverrides(asked);
+        foldReadouts_ = true;
+        comparingSuggestion_ = false;
+        return;
+    }
+    comparingSuggestion_ = followOffer && !suggested_.empty() && session_.startComparison({suggested_}).empty();
+    if (comparingSuggestion_) foldReadouts_ = true;
 }
 
 void InteractionInput::suggestOverrides() {
@@ -117,6 +128,7 @@ bool InteractionInput::applyCompare(double now) {
         say(now, "cannot compare: %s", error.c_str());
         return false;
     }
+    comparingSuggestion_ = tools_.compareText == suggested_;
     const Comparison& comparison = *session_.comparison();
     const std::string primary = comparison.primaryLabel(session_.run(0).scene());
     if (comparison.changesNothing(session_.run(0).scene())) {

@@ -64,6 +64,7 @@ private:
     Session& session_;
     ToolWindowsState tools_;
     std::string suggested_;       // the bar's last offer: while it shows it, the next scene's replaces it
+    bool comparingSuggestion_ = false;  // side by side with the bar's offer: the next scene's replaces it
     double messageTime_ = 0.0;    // s, window time of tools_.message
     bool pressInScene_ = false;   // the left button went down over the scene, not over a window
     int dragView_ = 0;
