@@ -3,6 +3,7 @@
 // current one; the buffer's memory stays within its caps.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -85,6 +86,46 @@ TEST(Rewind, TheSessionScrubsBackAndResumesWithTheOriginalHashes) {
     }
     EXPECT_EQ(session.timeline().size(), hashes.size());
     EXPECT_TRUE(session.timeline().atNewest());
+}
+
+// What the panel measured is shown as it was at the frame the timeline shows: stepped back
+// before 02's first bounce, the beta^2 readout had kept the later bounces, and stepping on
+// counted the same bounce twice; the cradle's slide 14 marks had kept a later step's verdict.
+TEST(Rewind, TheMeasuredBouncesAndTheSlideFourteenMarksFollowTheTimeline) {
+    app::Simulation simulation(preset("02_bounce_projection"));
+    app::Session session(simulation);
+    std::vector<std::uint64_t> measured{simulation.restitution().measuredCount()};
+    while (simulation.restitution().measuredCount() < 3) {
+        session.singleStep();
+        measured.push_back(simulation.restitution().measuredCount());
+    }
+    const std::vector<app::BounceMeasurement> kept(simulation.restitution().last().begin(),
+                                                   simulation.restitution().last().end());
+    const std::size_t newest = session.timeline().cursor();
+    const std::size_t firstBounce = std::size_t(std::find(measured.begin(), measured.end(), 1u) - measured.begin());
+    session.scrubTo(firstBounce - 1);
+    EXPECT_EQ(simulation.restitution().measuredCount(), 0u);
+    EXPECT_TRUE(simulation.restitution().last().empty());
+    EXPECT_FALSE(simulation.restitution().latest());
+    session.scrubTo(newest);  // forward again through the kept frames
+    ASSERT_EQ(simulation.restitution().last().size(), kept.size());
+    EXPECT_EQ(simulation.restitution().last().back().time, kept.back().time);
+    session.scrubTo(1);  // in the first fall (a bounce under way when the timeline restores is not measured)
+    for (std::size_t s = 2; s <= newest; ++s) session.singleStep();  // run on: the same bounces again
+    EXPECT_EQ(simulation.restitution().measuredCount(), 3u);
+    ASSERT_EQ(simulation.restitution().last().size(), kept.size());
+    for (std::size_t k = 0; k < kept.size(); ++k) EXPECT_EQ(simulation.restitution().last()[k].ratio(), kept[k].ratio());
+
+    app::Simulation cradle(preset("08_newtons_cradle"));
+    app::Session cradleSession(cradle);
+    for (int s = 0; s < 20; ++s) cradleSession.singleStep();
+    const std::uint64_t struck = cradle.impacts().total.struck;
+    ASSERT_GT(struck, 0u);
+    cradleSession.scrubTo(0);
+    EXPECT_EQ(cradle.impacts().total.struck, 0u) << "nothing was struck before the first step";
+    EXPECT_EQ(cradle.impacts().worstEnergyRatio, -1.0);
+    cradleSession.scrubTo(20);
+    EXPECT_EQ(cradle.impacts().total.struck, struck);
 }
 
 TEST(Rewind, SteppingFromAnEarlierFrameDropsTheFramesAfterIt) {

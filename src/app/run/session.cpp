@@ -340,6 +340,7 @@ void Session::scrubTo(std::size_t index) {
     for (int k = 0; k < runCount(); ++k) {
         run(k).paused = true;
         rewind_[std::size_t(k)].restore(index, run(k).editableWorld());
+        run(k).restoredFromTimeline();
     }
     touched();
     if (selected_ >= 0 && static_cast<std::size_t>(selected_) >= primary_.world().size()) selected_ = -1;

@@ -32,6 +32,7 @@ void Simulation::startFrom(physics::World world) {
     lastStats_ = {};
     mostWork_ = {};
     impacts_ = {};
+    impactsBefore_.clear();
     behindFor_ = 0.0;
     history_.clear();
     overlays_.reset();
@@ -90,6 +91,18 @@ const physics::ContactGraph& Simulation::contactGraph() const {
         graphFound_ = true;
     }
     return graph_;
+}
+
+void Simulation::restoredFromTimeline() {
+    resetOverlays();
+    restitution_.showAt(world_.time);
+    impacts_ = impactsAt(world_.time);
+}
+
+ImpactRecord Simulation::impactsAt(double time) const {
+    const auto after = std::upper_bound(impactsBefore_.begin(), impactsBefore_.end(), time,
+                                        [](double t, const std::pair<double, ImpactRecord>& kept) { return t < kept.first; });
+    return after == impactsBefore_.begin() ? ImpactRecord{} : std::prev(after)->second;
 }
 
 void Simulation::resetOverlays() {
@@ -190,8 +203,10 @@ bool Simulation::beforeStep() {
     // drawn from the later state would no longer match it.
     if (world_.time < lastStepTime_) {
         overlays_.reset();
-    ghosts_.reset();
-        restitution_.forgetFlights();
+        ghosts_.reset();
+        restitution_.forgetAfter(world_.time);
+        impacts_ = impactsAt(world_.time);
+        while (!impactsBefore_.empty() && impactsBefore_.back().first > world_.time) impactsBefore_.pop_back();
     }
     energyBefore_ = physics::modifiedEnergy(world_, scene_.params);
     sizeBefore_ = world_.size();
@@ -220,7 +235,15 @@ void Simulation::afterStep() {
         claimsState_ = physics::stateHash(world_);
     }
     bounces_ += lastStats_.collisions;
-    impacts_.add(lastStats_.impacts);
+    if (lastStats_.impacts.contacts > 0) {
+        impacts_.add(lastStats_.impacts);
+        if (impactsBefore_.size() == kMostImpactRecordsKept) {
+            constexpr std::size_t kQuarter = kMostImpactRecordsKept / 4;
+            for (std::size_t k = 0; k < kQuarter; ++k) impactsBefore_[k] = impactsBefore_[2 * k];
+            impactsBefore_.erase(impactsBefore_.begin() + kQuarter, impactsBefore_.begin() + 2 * kQuarter);
+        }
+        impactsBefore_.emplace_back(world_.time, impacts_);
+    }
     keepMostWork();
     const double energyAfter = physics::modifiedEnergy(world_, scene_.params);
     // A sphere added or removed, or energy the app put in, is not the solver's doing.

@@ -114,6 +114,11 @@ public:
     // start afresh and a bounce in progress is not measured. Measured ratios, the
     // bounce counter and the alarms stay until restart.
     void resetOverlays();
+    // The timeline restored one of its states: the overlays start afresh, and the slide 14
+    // marks and the measured bounces are shown as they were then (those measured later were
+    // news from a future the student had stepped back from; the next step forgets them, and
+    // running on measures them again).
+    void restoredFromTimeline();
 
     static constexpr int kMaxStepsPerFrame = 32;
     static constexpr double kBehindHoldSeconds = 1.0;
@@ -137,6 +142,10 @@ private:
     physics::StepStats lastStats_;
     physics::StepStats mostWork_;
     ImpactRecord impacts_;
+    // impacts_ after each step that measured contacts, with its world time (s), oldest first:
+    // what restoredFromTimeline() puts back. Past the cap every other of the older half goes.
+    std::vector<std::pair<double, ImpactRecord>> impactsBefore_;
+    static constexpr std::size_t kMostImpactRecordsKept = std::size_t(1) << 13;
     double behindFor_ = 0.0;  // s of real time behindRealTime() still says so
     History history_;
     physics::Diagnostics diagnostics_;
@@ -163,6 +172,7 @@ private:
     std::vector<double> settingsAtLastStep_;
     SettingsChange settingsChange_;
     void keepMostWork();  // after a step: mostWork_ from lastStats_
+    ImpactRecord impactsAt(double time) const;  // s: the last kept at or before it
     void watchClaims();  // before a step: stop the claims if the run was changed by hand
     mutable physics::ContactGraph graph_;  // contactGraph(), for the state whose hash is graphOf_
     mutable std::uint64_t graphOf_ = 0;

@@ -54,6 +54,8 @@ std::vector<std::uint32_t> measuredSpheres(const physics::World& world, int sele
 
 void RestitutionMeter::reset() {
     tracks_.clear();
+    judged_.clear();
+    droppedMeasured_ = droppedTooSlow_ = 0;
     last_.clear();
     latest_.reset();
     measured_ = 0;
@@ -110,21 +112,53 @@ void RestitutionMeter::afterStep(const physics::World& world, const physics::Par
         const double energy = normalEnergy(world, params, i, floor);  // J/kg
         if (t.inContact && t.floorBounce && !t.otherContact && t.beforeKnown && t.energyBefore > 0.0 &&
             std::isfinite(energy)) {
-            const BounceMeasurement bounce{i, world.time, t.energyBefore / gn, energy / gn};
             const double impactSpeed = std::sqrt(2.0 * t.energyBefore);  // m/s
-            if (impactSpeed >= kMinLabelledImpactSpeedInGH * gn * params.solverStep()) latest_ = bounce;
-            if (impactSpeed < minImpactSpeed) {
-                ++tooSlow_;
-            } else {
-                last_.push_back(bounce);
-                ++measured_;
-                while (last_.size() > kMeasurementsKept) last_.pop_front();
-            }
+            judge({{i, world.time, t.energyBefore / gn, energy / gn},
+                   impactSpeed >= kMinLabelledImpactSpeedInGH * gn * params.solverStep(),
+                   impactSpeed < minImpactSpeed});
         }
         t.inContact = false;
         t.flightKnown = std::isfinite(energy);
         t.energyInFlight = energy;
     }
+}
+
+void RestitutionMeter::judge(const Judged& judged) {
+    show(judged);
+    if (judged_.size() == kMostJudgedKept) {  // the oldest half goes: no frame of the timeline is that old
+        for (auto k = judged_.begin(); k != judged_.begin() + kMostJudgedKept / 2; ++k) {
+            ++(k->tooSlow ? droppedTooSlow_ : droppedMeasured_);
+        }
+        judged_.erase(judged_.begin(), judged_.begin() + kMostJudgedKept / 2);
+    }
+    judged_.push_back(judged);
+}
+
+void RestitutionMeter::show(const Judged& judged) {
+    if (judged.labelled) latest_ = judged.bounce;
+    if (judged.tooSlow) {
+        ++tooSlow_;
+        return;
+    }
+    last_.push_back(judged.bounce);
+    ++measured_;
+    while (last_.size() > kMeasurementsKept) last_.pop_front();
+}
+
+void RestitutionMeter::showAt(double time) {
+    tracks_.clear();
+    last_.clear();
+    latest_.reset();
+    measured_ = droppedMeasured_;
+    tooSlow_ = droppedTooSlow_;
+    for (const Judged& judged : judged_) {
+        if (judged.bounce.time <= time) show(judged);
+    }
+}
+
+void RestitutionMeter::forgetAfter(double time) {
+    while (!judged_.empty() && judged_.back().bounce.time > time) judged_.pop_back();
+    showAt(time);
 }
 
 }  // namespace app

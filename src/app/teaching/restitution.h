@@ -53,6 +53,11 @@ public:
     // Forgets the flights and contacts being followed (the world was edited by hand),
     // keeps the measurements.
     void forgetFlights() { tracks_.clear(); }
+    // The timeline shows the state at `time` (s): the measurements are shown as they were
+    // then, and the flights forgotten. Those after it are kept for a later frame of the
+    // timeline until forgetAfter(time): running on from there measures them again.
+    void showAt(double time);
+    void forgetAfter(double time);
     // After every step, with world.contacts of that step.
     void afterStep(const physics::World& world, const physics::Params& params, int selected);
 
@@ -76,7 +81,19 @@ private:
         bool floorBounce = false;  // a bounce on the floor during this contact
         bool otherContact = false;  // anything else touched it: not a clean floor bounce
     };
+    // Every bounce judged since reset, oldest first: what a rewind takes back.
+    struct Judged {
+        BounceMeasurement bounce;
+        bool labelled = false;  // at least kMinLabelledImpactSpeedInGH g h fast
+        bool tooSlow = false;   // under kMinImpactSpeedInGH g h: counted, not measured
+    };
+    static constexpr std::size_t kMostJudgedKept = std::size_t(1) << 14;
+    void judge(const Judged& judged);
+    void show(const Judged& judged);  // as the newest: last_, latest_ and the counts
+
+    std::uint64_t droppedMeasured_ = 0, droppedTooSlow_ = 0;  // of the judged_ the cap dropped
     std::vector<Track> tracks_;  // by sphere index
+    std::vector<Judged> judged_;
     std::deque<BounceMeasurement> last_;
     std::optional<BounceMeasurement> latest_;
     std::uint64_t measured_ = 0;
