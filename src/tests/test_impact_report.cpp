@@ -85,6 +85,14 @@ TEST(ImpactReport, EachPropertySaysWhatItMeasuredAndWhetherItHolds) {
     EXPECT_EQ(verdictOf(lcp, elastic(), "positivity"), Verdict::Kept);
     const std::string marks = app::propertiesMarks(app::judgeProperties(cradle, {}, elastic()));
     EXPECT_EQ(marks, "\u2713\u00a0momentum  \u2713\u00a0energy  \u2013\u00a0symmetry\n\u2713\u00a0break-away  \u2717\u00a0positivity");
+    // A view's label explains its marks when the pointer rests on it (a student met
+    // "positivity" and "break-away" nowhere else): each mark, its number and what it asks.
+    const std::vector<app::PropertyVerdict> verdicts = app::judgeProperties(cradle, {}, elastic());
+    const std::string tip = app::propertiesTooltip(verdicts);
+    for (const app::PropertyVerdict& v : verdicts) {
+        EXPECT_NE(tip.find(v.name + (v.value.empty() ? "" : ": " + v.value) + "\n" + v.meaning), std::string::npos) << v.name;
+    }
+    EXPECT_NE(tip.find("\u2717 positivity: fastest approach left 0.5 m/s"), std::string::npos) << tip;
 }
 
 // "Elastic" needs mu = 1 too: at epsilon = 0 a contact with no normal speed is static, and

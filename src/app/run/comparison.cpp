@@ -232,7 +232,21 @@ std::string workOf(const Simulation& run) {
     return work.empty() ? work : "most in one step: " + work;
 }
 
+std::vector<PropertyVerdict> judgedProperties(const Simulation& run) {
+    std::vector<physics::MirrorAsymmetry> mirrors;
+    for (const physics::Plane& m : run.scene().mirrors) mirrors.push_back(physics::mirrorAsymmetry(run.world(), m));
+    return judgeProperties(run.impacts(), mirrors, run.params());
+}
+
 }  // namespace
+
+std::vector<std::string> propertiesTooltips(const Simulation& primary, const Comparison& comparison) {
+    std::vector<std::string> tips;
+    for (int k = 0; k <= comparison.count(); ++k) {
+        tips.push_back(propertiesTooltip(judgedProperties(k == 0 ? primary : comparison.simulation(k - 1))));
+    }
+    return tips;
+}
 
 std::vector<ViewReadout> viewReadouts(const Simulation& primary, const Comparison& comparison) {
     std::vector<ViewReadout> views;
@@ -247,9 +261,7 @@ std::vector<ViewReadout> viewReadouts(const Simulation& primary, const Compariso
         readout.time = world.time;
         readout.steps = world.stepCount;
         // From the first frame on (dashes until measured): the label keeps its size.
-        std::vector<physics::MirrorAsymmetry> mirrors;
-        for (const physics::Plane& m : run.scene().mirrors) mirrors.push_back(physics::mirrorAsymmetry(world, m));
-        readout.properties = propertiesMarks(judgeProperties(run.impacts(), mirrors, run.params()));
+        readout.properties = propertiesMarks(judgedProperties(run));
         // Scenes the meter follows whole (not the selected sphere alone: a column's would read
         // "–" for ever, and the label would change size with the selection).
         readout.bouncesMeasured = world.recordContacts && floorPlane(world, run.params()) >= 0 &&

@@ -117,5 +117,7 @@ std::vector<std::vector<std::string>> comparisonReadouts(const Simulation& prima
                                                          LabelLines lines = LabelLines::Full);
 // What those lines are made from, each view measured once: A first.
 std::vector<ViewReadout> viewReadouts(const Simulation& primary, const Comparison& comparison);
+// Each view's tooltip, A first: what its properties' marks mean, and their numbers.
+std::vector<std::string> propertiesTooltips(const Simulation& primary, const Comparison& comparison);
 
 }  // namespace app

@@ -166,4 +166,12 @@ std::string propertiesMarks(const std::vector<PropertyVerdict>& verdicts) {
     return line;
 }
 
+std::string propertiesTooltip(const std::vector<PropertyVerdict>& verdicts) {
+    std::string tip = "Smith et al.'s five properties of the contacts since the restart (slide 14):";
+    for (const PropertyVerdict& v : verdicts) {
+        tip += std::string("\n\n") + markOf(v.verdict) + " " + v.name + (v.value.empty() ? "" : ": " + v.value) + "\n" + v.meaning;
+    }
+    return tip;
+}
+
 }  // namespace app

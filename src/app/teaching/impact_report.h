@@ -41,5 +41,8 @@ std::string propertiesLine(const std::vector<PropertyVerdict>& verdicts);
 // The marks alone, for a view's label, on two lines: "✓ momentum  ✓ energy  ✗ symmetry",
 // then "✓ break-away  ✓ positivity".
 std::string propertiesMarks(const std::vector<PropertyVerdict>& verdicts);
+// What the marks mean, for a tooltip: a paragraph per property, its mark, name and number,
+// then what it asks.
+std::string propertiesTooltip(const std::vector<PropertyVerdict>& verdicts);
 
 }  // namespace app

@@ -116,6 +116,7 @@ struct ViewLabel {
     glm::vec2 room{1e6f};     // ImGui units: the place kept for it; longer lines wrap
     std::vector<std::string> lines;  // the first is the title
     glm::u8vec4 color{255, 255, 255, 255};  // of the title
+    std::string tooltip;  // shown while the pointer rests on it ("": none)
 };
 // A label's size with the current font (ImGui units).
 glm::vec2 viewLabelSize(const ViewLabel& label);

@@ -12,8 +12,9 @@ namespace app {
 std::vector<ViewLabel> comparisonLabels(const Simulation& primary, const Comparison& comparison, LabelLines lines) {
     std::vector<ViewLabel> labels;
     std::vector<std::vector<std::string>> readouts = comparisonReadouts(primary, comparison, lines);
+    std::vector<std::string> tips = propertiesTooltips(primary, comparison);
     for (std::size_t k = 0; k < readouts.size(); ++k) {
-        labels.push_back({glm::vec2(0.0f), glm::vec2(1e6f), std::move(readouts[k]), kViewColors[k]});
+        labels.push_back({glm::vec2(0.0f), glm::vec2(1e6f), std::move(readouts[k]), kViewColors[k], std::move(tips[k])});
     }
     return labels;
 }
