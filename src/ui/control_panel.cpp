@@ -486,7 +486,7 @@ std::string claimsElsewhereLine(const Readouts& r) {
 
 // Under the text: its claims as this run measured them (scenes/claims.h), folded under a
 // line that counts them, so that the sliders stay where they are.
-void measuredClaims(const Readouts& r) {
+void measuredClaims(const Readouts& r, PanelState& state) {
     if (r.claimsWatched == 0 && !r.claimsInterrupted) {
         if (!r.claimsForOtherSettings) return;
         ImGui::TextDisabled("The text, measured: not at these settings");
@@ -510,14 +510,18 @@ void measuredClaims(const Readouts& r) {
             "timeline) stops the measurement until the next restart (R); a setting changed before the first step "
             "measures the text's claims for that setting.");
     if (!open) return;
-    for (const Readouts::ClaimLine& c : r.claims) {
-        const std::string view = c.view ? std::string(1, c.view) + "  " : "";
-        wrappedColored(c.holds ? ImVec4(0.45f, 0.9f, 0.45f, 1.0f) : kAlarmLit,
-                       view + (c.holds ? "\u2713 " : "\u2717 ") + "\u201c" + c.says + "\u201d: " + c.measured);
+    if (!state.pointerOverPanel) {  // else the lines stay as they were when the pointer came
+        std::vector<std::pair<std::string, int>>& lines = state.claimLinesShown;
+        lines.clear();
+        for (const Readouts::ClaimLine& c : r.claims) {
+            const std::string view = c.view ? std::string(1, c.view) + "  " : "";
+            lines.emplace_back(view + (c.holds ? "\u2713 " : "\u2717 ") + "\u201c" + c.says + "\u201d: " + c.measured, int(c.holds));
+        }
+        if (r.claimsWatched > r.claims.size() && !r.claimsInterrupted) lines.emplace_back(claimsPendingLine(r), 2);
+        if (r.claimsElsewhere > 0) lines.emplace_back(claimsElsewhereLine(r), 2);
     }
-    const ImVec4 grey = ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled);
-    if (r.claimsWatched > r.claims.size() && !r.claimsInterrupted) wrappedColored(grey, claimsPendingLine(r));
-    if (r.claimsElsewhere > 0) wrappedColored(grey, claimsElsewhereLine(r));
+    const ImVec4 colours[] = {kAlarmLit, ImVec4(0.45f, 0.9f, 0.45f, 1.0f), ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled)};
+    for (const auto& [text, kind] : state.claimLinesShown) wrappedColored(colours[kind], text);
 }
 
 // A new scene: its title and text are what the class reads first.
@@ -641,7 +645,7 @@ void presentedPanel(const scenes::Scene& scene, const Readouts& readouts, const 
     ImGui::BeginChild("presented", ImVec2(0.0f, -below));
     scrollToTopIfAsked(state);
     sceneText(scene);
-    measuredClaims(readouts);
+    measuredClaims(readouts, state);
     if (slidersScroll) {
         ImGui::Separator();
         drawSliders();
@@ -707,7 +711,7 @@ PanelActions drawControlPanel(const scenes::Scene& scene, double& timeScale, con
     scrollToTopIfAsked(state);
     pushItemWidth();
     sceneText(scene);
-    measuredClaims(readouts);
+    measuredClaims(readouts, state);
     ImGui::Separator();
     runSection(timeScale, readouts, actions);
     alarmsSection(alarms);

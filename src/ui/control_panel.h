@@ -84,6 +84,10 @@ struct PanelState {
     // then: they stay while the pointer is there (drawControlPanel).
     bool pointerOverPanel = false;
     std::vector<Alarm> alarmsShown;
+    // The unfolded claims' lines shown, kept the same way (a claim measured under the pointer
+    // had pushed every slider below down a line or two): the text and whether it holds
+    // (0 no, 1 yes, 2 a grey note).
+    std::vector<std::pair<std::string, int>> claimLinesShown;
     // Side by side: the parameters every other view sets itself, whose sliders move view A
     // alone (said under them).
     std::vector<std::string> onlyViewA;
