@@ -1,6 +1,7 @@
 #include "ui/control_panel.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include <glm/geometric.hpp>
@@ -594,9 +595,13 @@ UnderText underPresentedText(const std::vector<const scenes::Parameter*>& slider
     }
     // The numbers the texts point at ("the momentum readout", "kinetic energy falls to 18 %"),
     // which the full layout's readouts show (view A's, side by side).
+    // On two lines whatever their width: one line that wrapped as its digits changed moved the
+    // sliders above it up and down.
     char numbers[160];
-    std::snprintf(numbers, sizeof numbers, "kinetic\u00a0%.4g\u00a0J   E~\u00a0%.5g\u00a0J   |p|\u00a0%.4g\u00a0kg\u00a0m/s",
-                  r.diagnostics.kinetic, r.diagnostics.modified, glm::length(r.diagnostics.momentum));
+    std::snprintf(numbers, sizeof numbers, "kinetic\u00a0%.4g\u00a0J   E~\u00a0%.5g\u00a0J", r.diagnostics.kinetic,
+                  r.diagnostics.modified);
+    under.notes.push_back(numbers);
+    std::snprintf(numbers, sizeof numbers, "|p|\u00a0%.4g\u00a0kg\u00a0m/s", glm::length(r.diagnostics.momentum));
     under.notes.push_back(numbers);
     char status[128];
     std::snprintf(status, sizeof status, "t = %.3f s, %s", r.time, r.paused ? "paused (P runs, O steps)" : "running");
@@ -645,7 +650,13 @@ void presentedPanel(const scenes::Scene& scene, const Readouts& readouts, const 
         }
         ImGui::PopItemWidth();
     };
-    ImGui::BeginChild("presented", ImVec2(0.0f, -below));
+    // The fold between two of the text's lines, never through one (a class saw the last line
+    // cut in half): its lines lie a whole number of font sizes below the title's and the
+    // slide's item spacings.
+    const float room = ImGui::GetContentRegionAvail().y - below;  // px
+    const float font = ImGui::GetFontSize(), spacings = (scene.slide.empty() ? 1.0f : 2.0f) * ImGui::GetStyle().ItemSpacing.y;
+    const float cut = room > spacings + font ? std::fmod(room - spacings, font) : 0.0f;  // px, left under the fold
+    ImGui::BeginChild("presented", ImVec2(0.0f, room - cut));
     scrollToTopIfAsked(state);
     sceneText(scene);
     measuredClaims(readouts, state);
@@ -654,6 +665,7 @@ void presentedPanel(const scenes::Scene& scene, const Readouts& readouts, const 
         drawSliders();
     }
     ImGui::EndChild();
+    ImGui::Dummy(ImVec2(0.0f, std::max(0.0f, cut - ImGui::GetStyle().ItemSpacing.y)));  // the keys stay at the bottom
     ImGui::Separator();
     if (!slidersScroll) drawSliders();
     // The numbers the texts point at and the run's state in the body's white: grey washes out
