@@ -129,6 +129,9 @@ struct Scene {
     // scene at (below 1: slow motion, for an impact over in a fraction of a second); capture
     // and simulate count simulated time and ignore it.
     double timeScale = 1.0;
+    // "paused": the window and the page open it paused at its start, for a lesson in its first
+    // step (16-20 start touching: the impact is over before the class has looked).
+    bool opensPaused = false;
     physics::Params params;
     std::uint64_t seed = 1;
     std::vector<Sphere> spheres;

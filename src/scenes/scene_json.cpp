@@ -31,7 +31,7 @@ using Keys = std::vector<std::string_view>;
 constexpr std::size_t kLongestTitle = 200, kLongestDescription = 20000;
 const Keys kSceneKeys = {"title", "slide",   "description", "box",      "planes", "parameters",
                          "seed",  "spheres", "generate",    "emitters", "time",   "steps",
-                         "claims", "compare", "mirror", "camera", "time_scale"};
+                         "claims", "compare", "mirror", "camera", "time_scale", "paused"};
 const Keys kCameraKeys = {"azimuth", "elevation", "fits"};
 const Keys kMirrorKeys = {"point", "normal"};
 const Keys kBoxKeys = {"size", "tilt"};
@@ -124,6 +124,7 @@ class SceneReader {
         if (const Json* scale = find(root, "time_scale")) {
             scene.timeScale = inRange(*scale, "/time_scale", kTimeScaleRange[0], kTimeScaleRange[1]);
         }
+        if (const Json* paused = find(root, "paused")) scene.opensPaused = boolean(*paused, "/paused");
         if (const Json* seed = find(root, "seed")) scene.seed = readSeed(*seed, "/seed");
         scene.spheres = readList(root, "spheres", &SceneReader::readSphere);
         scene.generators = readList(root, "generate", &SceneReader::readGenerator);
@@ -186,6 +187,11 @@ class SceneReader {
     [[noreturn]] void outOfRange(const std::string& pointer, double x, double min, double max, const char* unit) const {
         fail(pointer, where(pointer) + " = " + formatNumber(x) + " is out of range [" + formatNumber(min) + ", " +
                           formatNumber(max) + "]" + (*unit ? std::string(" (") + unit + ")" : ""));
+    }
+
+    bool boolean(const Json& v, const std::string& pointer) const {
+        if (!v.is_boolean()) fail(pointer, where(pointer) + " must be true or false, got " + typeName(v));
+        return v.get<bool>();
     }
 
     double inRange(const Json& v, const std::string& pointer, double min, double max) const {
@@ -831,6 +837,7 @@ std::string sceneText(const Scene& scene, const physics::World& world) {
         << (scene.mirrors.empty() ? "" : "  \"mirror\": " + planesText(scene.mirrors, 0) + ",\n")
         << (cameraGiven(scene.camera) ? "  \"camera\": " + cameraText(scene.camera) + ",\n" : "")
         << (scene.timeScale != 1.0 ? "  \"time_scale\": " + dump(scene.timeScale) + ",\n" : "")
+        << (scene.opensPaused ? "  \"paused\": true,\n" : "")
         << "  \"parameters\": " << parametersText(scene) << ",\n"
         << "  \"seed\": " << scene.seed << ",\n"
         << "  \"time\": " << dump(world.time) << ",\n"

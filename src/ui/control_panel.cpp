@@ -574,6 +574,16 @@ float heightUnderText(const std::vector<const scenes::Parameter*>& sliders, cons
     return below;
 }
 
+bool showsBeta(const std::vector<const scenes::Parameter*>& sliders) {
+    return std::any_of(sliders.begin(), sliders.end(), [](const scenes::Parameter* p) { return p->name == "beta"; });
+}
+
+// Presented, the measured apex ratios go under β, or under the sliders where the text names
+// no β but the meter follows the bounces (01's "peaks 6 to 13 % lower each bounce").
+bool showsRestitution(const std::vector<const scenes::Parameter*>& sliders, const Readouts& r) {
+    return showsBeta(sliders) || r.bouncesMeasured;
+}
+
 // Under the presented sliders: "view A only" once (under each slider it took two lines a
 // slider), "t = 3.450 s, paused" (a paused scene looked frozen), and the lit alarms (a ball
 // that fell through the floor was simply gone).
@@ -584,7 +594,7 @@ UnderText underPresentedText(const std::vector<const scenes::Parameter*>& slider
         return std::find(state.onlyViewA.begin(), state.onlyViewA.end(), p->name) != state.onlyViewA.end();
     });
     if (viewA) under.notes.push_back(kOnlyViewA);
-    if (std::any_of(sliders.begin(), sliders.end(), [](const scenes::Parameter* p) { return p->name == "beta"; })) {
+    if (showsRestitution(sliders, r)) {
         // "β² = 0.640   measured ≈ ..." on a line, or "β² = 0.640" and its note wrapped under it
         const float wrap = ImGui::GetContentRegionAvail().x;
         under.restitutionHeight = ImGui::GetTextLineHeightWithSpacing();
@@ -648,6 +658,7 @@ void presentedPanel(const scenes::Scene& scene, const Readouts& readouts, const 
             parameterWidget(*p, scene, state, actions, labelsAbove, false);  // "view A only" once, under them
             if (p->name == "beta") measuredRestitution(readouts);  // 02's "comes back to about β²"
         }
+        if (!showsBeta(sliders) && showsRestitution(sliders, readouts)) measuredRestitution(readouts);
         ImGui::PopItemWidth();
     };
     // The fold between two of the text's lines, never through one (a class saw the last line

@@ -150,6 +150,7 @@ struct Readouts {
     // Measured restitution of floor bounces (app/restitution.h), shown by the beta slider.
     double betaSquared = 0.0;
     std::vector<double> measuredBetaSquared;  // the last few, oldest first
+    bool bouncesMeasured = false;  // the meter follows this scene's floor bounces (presented: β²'s line)
     std::string restitutionNote;              // when there is nothing to show, why
     // One line per shown overlay: its scale, in its colour (rgba 0..1).
     struct LegendLine {

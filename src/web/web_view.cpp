@@ -273,6 +273,7 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_open(const char* name, const char* sett
         auto simulation = std::make_unique<app::Simulation>(web::sceneWithSettings(name, settings));
         simulation->wallBudget = kStepBudgetSeconds;
         simulation->timeScale = simulation->scene().timeScale;  // a scene may open in slow motion
+        simulation->paused = simulation->scene().opensPaused;   // or paused at its start
         auto session = std::make_unique<app::Session>(*simulation, kTimelineBytes);
         const scenes::Scene& s = simulation->scene();
         if (!s.compare.empty()) {

@@ -120,7 +120,7 @@ WindowApp::WindowApp(std::unique_ptr<platform::Window> window, scenes::Scene sce
       options_(options),
       input_(session_),
       presets_(scenes::listPresets()) {
-    simulation_.paused = options.paused;
+    simulation_.paused = options.paused || simulation_.scene().opensPaused;
     simulation_.timeScale = simulation_.scene().timeScale;  // a scene may open in slow motion
     simulation_.wallBudget = kSlowestFrameSeconds;
     panel_.scenePath = resolveScenePath(options.scene);
@@ -378,6 +378,7 @@ int WindowApp::presetIndexOf(const std::string& path) const {
 void WindowApp::loadFile(const std::string& path) {
     try {
         simulation_.openScene(scenes::loadScene(path));
+        if (simulation_.scene().opensPaused) simulation_.paused = true;  // else it runs on or stays paused
         showSceneTitle();
         panel_.scenePath = path;
         panel_.presetIndex = presetIndexOf(path);  // a preset's file by any path: [ and ] go on from it

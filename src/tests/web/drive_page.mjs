@@ -308,7 +308,9 @@ try {
   // Four views on a narrow page (800 x 1000: four columns were 100 px wide) go in two rows
   // of two, each label over its quarter; at 1280 x 720 in one row again.
   await navigate('scene=16_bernoulli');
-  await until((s) => s.time_s > 0, 30000);
+  const opened = await until((s) => s.spheres === 3, 30000);
+  check('16 opens paused at its start, in slow motion', opened.paused === true && opened.time_s === 0 &&
+        (await text('time-scale-shown')) === '0.25 x', JSON.stringify(opened));
   const rows = async (width, height) => {
     await send('Emulation.setDeviceMetricsOverride', { width, height, deviceScaleFactor: 1, mobile: false });
     await sleep(1500);
