@@ -579,26 +579,30 @@ bool showsBeta(const std::vector<const scenes::Parameter*>& sliders) {
 }
 
 // Presented, the measured apex ratios go under β, or under the sliders where the text names
-// no β but the meter follows the bounces (01's "peaks 6 to 13 % lower each bounce").
-bool showsRestitution(const std::vector<const scenes::Parameter*>& sliders, const Readouts& r) {
-    return showsBeta(sliders) || r.bouncesMeasured;
+// no β but quotes bounce heights the meter follows (01's "peaks 6 to 13 % lower each bounce").
+bool showsRestitution(const std::vector<const scenes::Parameter*>& sliders, const scenes::Scene& scene, const Readouts& r) {
+    const auto aboutBounces = [](const scenes::Claim& c) { return c.measure == "bounce_ratio" || c.measure == "apex"; };
+    return showsBeta(sliders) || (r.bouncesMeasured && std::any_of(scene.claims.begin(), scene.claims.end(), aboutBounces));
 }
 
 // Under the presented sliders: "view A only" once (under each slider it took two lines a
 // slider), "t = 3.450 s, paused" (a paused scene looked frozen), and the lit alarms (a ball
 // that fell through the floor was simply gone).
-UnderText underPresentedText(const std::vector<const scenes::Parameter*>& sliders, const PanelState& state,
-                             const Readouts& r, const std::vector<Readouts::Alarm>& alarms) {
+UnderText underPresentedText(const std::vector<const scenes::Parameter*>& sliders, const scenes::Scene& scene,
+                             const PanelState& state, const Readouts& r, const std::vector<Readouts::Alarm>& alarms) {
     UnderText under;
     const bool viewA = std::any_of(sliders.begin(), sliders.end(), [&](const scenes::Parameter* p) {
         return std::find(state.onlyViewA.begin(), state.onlyViewA.end(), p->name) != state.onlyViewA.end();
     });
     if (viewA) under.notes.push_back(kOnlyViewA);
-    if (showsRestitution(sliders, r)) {
+    if (showsRestitution(sliders, scene, r)) {
         // "β² = 0.640   measured ≈ ..." on a line, or "β² = 0.640" and its note wrapped under it
         const float wrap = ImGui::GetContentRegionAvail().x;
         under.restitutionHeight = ImGui::GetTextLineHeightWithSpacing();
-        if (r.measuredBetaSquared.empty() && !r.restitutionNote.empty()) {
+        // The note goes beside "β² = 0.640" where it fits (measuredRestitution), else under it.
+        const float beside = wrap - ImGui::CalcTextSize("β² = 0.000").x - ImGui::GetStyle().ItemSpacing.x;
+        if (r.measuredBetaSquared.empty() && !r.restitutionNote.empty() &&
+            ImGui::CalcTextSize(r.restitutionNote.c_str()).x > beside) {
             under.restitutionHeight += ImGui::CalcTextSize(r.restitutionNote.c_str(), nullptr, false, wrap).y +
                                        ImGui::GetStyle().ItemSpacing.y;
         }
@@ -642,7 +646,7 @@ void presentedPanel(const scenes::Scene& scene, const Readouts& readouts, const 
         if (p && p->availableIn(scene)) sliders.push_back(p);
     }
     const bool labelsAbove = labelsAboveSliders(sliders);
-    UnderText under = underPresentedText(sliders, state, readouts, alarms);
+    UnderText under = underPresentedText(sliders, scene, state, readouts, alarms);
     // The sliders stay in sight under the text while they leave it at least half the panel;
     // else (five sliders with their labels above at 1024x768 left it two lines) they scroll
     // with it, under it.
@@ -658,7 +662,7 @@ void presentedPanel(const scenes::Scene& scene, const Readouts& readouts, const 
             parameterWidget(*p, scene, state, actions, labelsAbove, false);  // "view A only" once, under them
             if (p->name == "beta") measuredRestitution(readouts);  // 02's "comes back to about β²"
         }
-        if (!showsBeta(sliders) && showsRestitution(sliders, readouts)) measuredRestitution(readouts);
+        if (!showsBeta(sliders) && showsRestitution(sliders, scene, readouts)) measuredRestitution(readouts);
         ImGui::PopItemWidth();
     };
     // The fold between two of the text's lines, never through one (a class saw the last line
