@@ -26,8 +26,29 @@ const ImVec4 kHintColor{0.85f, 0.78f, 0.70f, 1.0f};
 const ImVec4 kMeasuredColor{0.55f, 0.85f, 1.0f, 1.0f};
 const ImVec4 kRefusalColor{1.0f, 0.62f, 0.30f, 1.0f};  // orange: refused, nothing changed
 
+// A tooltip comes once the pointer has rested on its item for kTooltipAfter, and goes once it
+// has rested there for kTooltipFor or clicked it, until the pointer moves again: a pointer
+// left on a header after a click had kept six lines over the views for a whole run.
+constexpr double kTooltipAfter = 0.5, kTooltipFor = 10.0;  // s
+
 void tooltip(std::string_view text) {
     if (!ImGui::IsItemHovered() || text.empty()) return;
+    static ImVec2 restingOn{-1.0f, -1.0f};  // the item's corner
+    static double since = 0.0;              // s, ImGui's clock: when the pointer came to rest there
+    static int seenIn = -2;                 // the frame it was last hovered in
+    static bool clicked = false;
+    const ImGuiIO& io = ImGui::GetIO();
+    const ImVec2 at = ImGui::GetItemRectMin();
+    const bool moved = io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f;
+    if (at.x != restingOn.x || at.y != restingOn.y || seenIn < ImGui::GetFrameCount() - 1 || moved) {
+        restingOn = at;
+        since = ImGui::GetTime();
+        clicked = false;
+    }
+    seenIn = ImGui::GetFrameCount();
+    clicked = clicked || ImGui::IsMouseDown(ImGuiMouseButton_Left) || ImGui::IsMouseDown(ImGuiMouseButton_Right);
+    const double rested = ImGui::GetTime() - since;
+    if (clicked || rested < kTooltipAfter || rested > kTooltipFor) return;
     ImGui::BeginTooltip();
     ImGui::PushTextWrapPos(ImGui::GetFontSize() * 28.0f);
     ImGui::TextUnformatted(text.data(), text.data() + text.size());
