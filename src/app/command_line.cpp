@@ -188,6 +188,7 @@ int runCommandLine(int argc, char** argv) {
             if (cli.got_subcommand("capture")) return runCapture(capture);
             if (cli.got_subcommand("claims")) return runClaims(claims);
             if (presets->parsed()) return listPresets();
+            window.sizeGiven = cli.count("--width") + cli.count("--height") > 0;
             return runWindowApp(window);
         };
         const int code = run();

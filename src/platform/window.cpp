@@ -47,17 +47,37 @@ void setContextHints(const WindowOptions& options) {
 // side-by-side field below the screen's edge. Screen coordinates, before the monitor's
 // content scale, which GLFW_SCALE_TO_MONITOR applies on Windows and X11 (on macOS screen
 // coordinates are points already, and the hint does nothing).
-glm::ivec2 sizeThatFits(int width, int height) {
+// With `grow`, at least kScreenShare of the work area.
+constexpr float kScreenShare = 0.8f;
+
+// The primary monitor's work area: its corner and size in screen coordinates, and the content
+// scale GLFW multiplies a window's size by (1 on macOS); a size of 0 where it is unknown.
+struct WorkArea {
+    glm::ivec2 corner{0}, size{0};
+    glm::vec2 scale{1.0f};
+    glm::ivec2 room() const { return glm::ivec2(glm::vec2(size) / scale); }  // a window's size that fills it
+};
+WorkArea primaryWorkArea() {
     GLFWmonitor* monitor = glfwGetPrimaryMonitor();
-    if (!monitor) return {width, height};
+    if (!monitor) return {};
     int x = 0, y = 0, w = 0, h = 0;
     glfwGetMonitorWorkarea(monitor, &x, &y, &w, &h);
     float xscale = 1.0f, yscale = 1.0f;
 #ifndef __APPLE__
     glfwGetMonitorContentScale(monitor, &xscale, &yscale);
 #endif
-    if (w <= 0 || h <= 0 || xscale <= 0.0f || yscale <= 0.0f) return {width, height};
-    return {std::min(width, int(float(w) / xscale)), std::min(height, int(float(h) / yscale))};
+    if (w <= 0 || h <= 0 || xscale <= 0.0f || yscale <= 0.0f) return {};
+    return {{x, y}, {w, h}, {xscale, yscale}};
+}
+
+glm::ivec2 sizeThatFits(int width, int height, bool grow, const WorkArea& area) {
+    if (area.size.x <= 0) return {width, height};
+    const glm::ivec2 room = area.room();
+    if (grow) {
+        width = std::max(width, int(kScreenShare * float(room.x)));
+        height = std::max(height, int(kScreenShare * float(room.y)));
+    }
+    return {std::min(width, room.x), std::min(height, room.y)};
 }
 
 }  // namespace
@@ -70,12 +90,17 @@ std::unique_ptr<Window> Window::create(const WindowOptions& options, std::string
     }
     setContextHints(options);
     const DriverCrashGuard guard("GLFW opened the window");
-    const glm::ivec2 size = sizeThatFits(options.width, options.height);
+    const WorkArea area = primaryWorkArea();
+    const glm::ivec2 size = sizeThatFits(options.width, options.height, options.growToScreen, area);
     GLFWwindow* window = glfwCreateWindow(size.x, size.y, options.title.c_str(), nullptr, nullptr);
     if (!window) {
         setError(error, takeGlfwError("could not create an OpenGL 3.3 core window"));
         glfwTerminate();
         return nullptr;
+    }
+    if (options.growToScreen && area.room().x > size.x) {  // in the middle of a screen it does not fill
+        const glm::ivec2 margin = (area.size - glm::ivec2(glm::vec2(size) * area.scale)) / 2;
+        glfwSetWindowPos(window, area.corner.x + margin.x, area.corner.y + margin.y);
     }
     glfwMakeContextCurrent(window);
     if (!gladLoadGL(glfwGetProcAddress)) {

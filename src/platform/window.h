@@ -12,6 +12,9 @@ namespace platform {
 struct WindowOptions {
     int width = 1280;  // screen coordinates (scaled by the monitor's content scale); at most the screen's work area
     int height = 720;  // screen coordinates
+    // The size above is the least: on a larger screen the window opens at kScreenShare of its
+    // work area, in its middle (a teacher's 1920x1080 projector had it small in a corner).
+    bool growToScreen = false;
     std::string title = "Rigid Spheres";
     bool vsync = true;
     // MSAA samples of the default framebuffer, 0 for none: the app draws its views

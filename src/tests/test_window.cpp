@@ -91,7 +91,7 @@ TEST(Window, ShowsThePanelAndTheSpheresInTheBox) {
 
 // The window opens no larger than the screen: the default 1280 x 800 on a 1366 x 768 laptop
 // put the timeline bar and the side-by-side field below its edge (a student's review).
-TEST(Window, OpensNoLargerThanTheScreen) {
+TEST(Window, OpensNoLargerThanTheScreenAndLargerOnALargeOne) {
     if (!haveXvfb()) GTEST_SKIP() << "xvfb-run not found: install the xvfb package to run the window tests";
     const std::string path = screenshot("window_small_screen", "--scene 03_head_on --frames 5", "1366x768");
     ASSERT_FALSE(path.empty()) << "spheres did not run or wrote no screenshot under Xvfb";
@@ -100,6 +100,14 @@ TEST(Window, OpensNoLargerThanTheScreen) {
     EXPECT_EQ(image.height, 768);
     // The timeline bar along the bottom, in sight: dark right of the panel.
     EXPECT_GT(fraction(image, 700, 740, 1270, 766, dark), 0.25);
+    // A projector's 1920x1080 screen: 80 % of it, not 1280x800 in a corner; a size asked for
+    // is kept.
+    const render::Image projector = load(screenshot("window_projector", "--scene 03_head_on --frames 5", "1920x1080"));
+    EXPECT_EQ(projector.width, 1536);
+    EXPECT_EQ(projector.height, 864);
+    const render::Image asked = load(screenshot("window_asked", "--scene 03_head_on --frames 5 --width 1000 --height 700", "1920x1080"));
+    EXPECT_EQ(asked.width, 1000);
+    EXPECT_EQ(asked.height, 700);
 }
 
 // Slide 7's preset opens side by side in three views (its "compare" key), each with

@@ -662,6 +662,7 @@ int runWindowApp(const WindowAppOptions& options) {
     platform::WindowOptions windowOptions;
     windowOptions.width = options.width;
     windowOptions.height = options.height;
+    windowOptions.growToScreen = !options.sizeGiven;
     auto window = platform::Window::create(windowOptions, &error);
     if (!window) {
         // A display whose GL gives no 3.3 core context is another fault than no display.

@@ -13,6 +13,7 @@ struct WindowAppOptions {
     std::string screenshot;             // write the last frame here (PNG)
     bool paused = false;                // start paused
     int width = 1280, height = 800;     // screen coordinates
+    bool sizeGiven = false;             // --width or --height: else a larger screen's window opens larger
     std::vector<std::string> compare;   // "name=value[,name=value]": start side by side
     int select = -1;                    // >= 0: start with this sphere selected (inspector open)
     bool explain = false;               // with select: open "explain this contact"
