@@ -80,7 +80,8 @@ void addCapture(CLI::App& cli, CaptureOptions& o) {
     cap->add_option("--size", o.size, "Image size WxH in pixels (16 to 8192 each)")->capture_default_str();
     cap->add_option("--camera", o.camera,
                     "azimuth,elevation[,distance] in degrees, degrees, m (default: the window's view of the box)");
-    cap->add_option("--color-by", o.colorBy, "Sphere colours: id, speed or contact")->capture_default_str();
+    cap->add_option("--color-by", o.colorBy,
+                    "Sphere colours: id, speed, contact or penetration (default: the scene's own colouring, else contact)");
     cap->add_flag("--with-ui", o.withUi, "Draw the control panel and the readouts as the window does");
     cap->add_option_function<float>("--ui-scale", [&o](const float& scale) { o.uiScale = scale; },
                                     "With --with-ui or --compare: the UI scale, 0.75 to 3 (default 1; 2: as on a HiDPI screen)");

@@ -100,6 +100,28 @@ bool onAPlane(const World& world, std::size_t i, const glm::dvec3& down) {
 
 }  // namespace
 
+std::vector<double> deepestOverlaps(const World& world) {
+    std::vector<double> deepest(world.size(), 0.0);
+    if (world.size() == 0) return deepest;
+    Workspace workspace;
+    findPairsGrid(world, 0.0, workspace, 1);
+    for (const SpherePair& pair : workspace.pairs) {
+        const double reach = world.radius[pair.i] + world.radius[pair.j];  // m
+        const double depth = reach - glm::distance(world.position[pair.i], world.position[pair.j]);  // m
+        const double overlap = depth / std::min(world.radius[pair.i], world.radius[pair.j]);
+        deepest[pair.i] = std::max(deepest[pair.i], overlap);
+        deepest[pair.j] = std::max(deepest[pair.j], overlap);
+    }
+    for (std::size_t i = 0; i < world.size(); ++i) {
+        for (const Plane& plane : world.planes) {
+            const Plane face = faceFor(plane, world.position[i]);
+            const double depth = world.radius[i] - glm::dot(world.position[i] - face.point, face.normal);  // m
+            deepest[i] = std::max(deepest[i], depth / world.radius[i]);
+        }
+    }
+    return deepest;
+}
+
 std::size_t spheresHeldInMidAir(const World& world, const Params& params) {
     const double g = glm::length(params.gravity);
     if (g == 0.0 || world.size() == 0) return 0;

@@ -33,6 +33,10 @@ std::uint64_t stateHash(const World& world);
 // holds them there: friction on spheres that touch only each other.
 std::size_t spheresHeldInMidAir(const World& world, const Params& params);
 
+// Each sphere's deepest overlap: with another sphere over the smaller radius, with a plane
+// over its own; 0 where it overlaps nothing. What "colour by penetration" shows.
+std::vector<double> deepestOverlaps(const World& world);
+
 // How far the state is from its mirror image in `mirror` (a point and a unit normal):
 // each sphere's partner is the sphere nearest its reflected centre; the largest distance
 // between partner and reflection (m), and between the partner's velocity and the

@@ -2,6 +2,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "physics/diagnostics.h"
 #include "physics/world.h"
 #include "render/palette.h"
 
@@ -35,8 +36,10 @@ void FrameSnapshot::clear() {
 namespace {
 
 glm::u8vec4 sphereColor(const physics::World& world, std::size_t i, ColorBy colorBy,
-                        float maxSpeed) {
+                        float maxSpeed, const std::vector<double>& overlaps) {
     switch (colorBy) {
+        case ColorBy::Penetration:
+            return penetrationColor(overlaps[i]);
         case ColorBy::Id:
             return idColor(static_cast<std::uint32_t>(i));
         case ColorBy::Speed:
@@ -54,13 +57,14 @@ glm::u8vec4 sphereColor(const physics::World& world, std::size_t i, ColorBy colo
 void snapshotSpheres(const physics::World& world, ColorBy colorBy, FrameSnapshot& snapshot,
                      float maxSpeed) {
     const std::size_t n = world.size();
+    const std::vector<double> overlaps = colorBy == ColorBy::Penetration ? physics::deepestOverlaps(world) : std::vector<double>{};
     snapshot.centers.resize(n);
     snapshot.radii.resize(n);
     snapshot.colors.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
         snapshot.centers[i] = glm::vec3(world.position[i]);
         snapshot.radii[i] = static_cast<float>(world.radius[i]);
-        snapshot.colors[i] = sphereColor(world, i, colorBy, maxSpeed);
+        snapshot.colors[i] = sphereColor(world, i, colorBy, maxSpeed, overlaps);
     }
 }
 

@@ -60,6 +60,7 @@ enum class ColorBy {
     Id,            // a fixed, varied palette: follow one sphere with the eye
     Speed,         // a perceptual colormap from 0 to maxSpeed
     ContactState,  // free / colliding / static contact (the lecture's epsilon rule)
+    Penetration,   // the deepest overlap, on a log scale (penetrationColor)
 };
 
 // Copies the spheres (centres, radii, colours) of the world; maxSpeed in m/s is

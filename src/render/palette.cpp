@@ -55,6 +55,12 @@ glm::u8vec4 speedColor(float speed, float maxSpeed) {
     return toBytes(glm::mix(kStops[i], kStops[i + 1], x - static_cast<float>(i)));
 }
 
+glm::u8vec4 penetrationColor(double overlapOverRadius) {
+    if (!(overlapOverRadius > kPenetrationShown[0])) return speedColor(0.0f, 1.0f);
+    const double decades = std::log10(kPenetrationShown[1] / kPenetrationShown[0]);
+    return speedColor(float(std::log10(overlapOverRadius / kPenetrationShown[0]) / decades), 1.0f);
+}
+
 glm::u8vec4 contactColor(physics::ContactState state) {
     switch (state) {
         case physics::ContactState::Free:

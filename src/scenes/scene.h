@@ -103,6 +103,10 @@ struct Region {
 // region it fits. Slide 14's presets look straight at their mirror plane, so that a
 // symmetric answer looks symmetric, and frame their spheres, not the whole box, so that
 // four views on a projector draw them large (the box stays drawn; the wheel zooms out).
+// The spheres' colourings by name, in render::ColorBy's order (a scene's "color_by", the
+// page's links, capture's --color-by).
+constexpr const char* kColorByNames[] = {"id", "speed", "contact", "penetration"};
+
 // The time scale's range (the window's slider, a scene's "time_scale").
 constexpr double kTimeScaleRange[2] = {0.01, 4.0};
 
@@ -132,6 +136,10 @@ struct Scene {
     // "paused": the window and the page open it paused at its start, for a lesson in its first
     // step (16-20 start touching: the impact is over before the class has looked).
     bool opensPaused = false;
+    // "color_by": the colouring the window and the page open it with, a kColorByNames index
+    // (-1: the viewer's own). 21 and 22 open coloured by penetration: their stacks, sunk in
+    // by 0.02 to 19 % of r, look alike in the other colourings.
+    int colorBy = -1;
     physics::Params params;
     std::uint64_t seed = 1;
     std::vector<Sphere> spheres;

@@ -1,6 +1,7 @@
 #include "scenes/scene_json.h"
 
 #include <algorithm>
+#include <iterator>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -31,7 +32,7 @@ using Keys = std::vector<std::string_view>;
 constexpr std::size_t kLongestTitle = 200, kLongestDescription = 20000;
 const Keys kSceneKeys = {"title", "slide",   "description", "box",      "planes", "parameters",
                          "seed",  "spheres", "generate",    "emitters", "time",   "steps",
-                         "claims", "compare", "mirror", "camera", "time_scale", "paused"};
+                         "claims", "compare", "mirror", "camera", "time_scale", "paused", "color_by"};
 const Keys kCameraKeys = {"azimuth", "elevation", "fits"};
 const Keys kMirrorKeys = {"point", "normal"};
 const Keys kBoxKeys = {"size", "tilt"};
@@ -125,6 +126,7 @@ class SceneReader {
             scene.timeScale = inRange(*scale, "/time_scale", kTimeScaleRange[0], kTimeScaleRange[1]);
         }
         if (const Json* paused = find(root, "paused")) scene.opensPaused = boolean(*paused, "/paused");
+        if (find(root, "color_by")) scene.colorBy = readColorBy(string(root, "", "color_by"), "/color_by");
         if (const Json* seed = find(root, "seed")) scene.seed = readSeed(*seed, "/seed");
         scene.spheres = readList(root, "spheres", &SceneReader::readSphere);
         scene.generators = readList(root, "generate", &SceneReader::readGenerator);
@@ -187,6 +189,14 @@ class SceneReader {
     [[noreturn]] void outOfRange(const std::string& pointer, double x, double min, double max, const char* unit) const {
         fail(pointer, where(pointer) + " = " + formatNumber(x) + " is out of range [" + formatNumber(min) + ", " +
                           formatNumber(max) + "]" + (*unit ? std::string(" (") + unit + ")" : ""));
+    }
+
+    int readColorBy(const std::string& name, const std::string& pointer) const {
+        for (std::size_t k = 0; k < std::size(kColorByNames); ++k) {
+            if (name == kColorByNames[k]) return int(k);
+        }
+        fail(pointer, "color_by '" + name + "' is not a colouring; choices: id, speed, contact, penetration");
+        return -1;
     }
 
     bool boolean(const Json& v, const std::string& pointer) const {
@@ -838,6 +848,7 @@ std::string sceneText(const Scene& scene, const physics::World& world) {
         << (cameraGiven(scene.camera) ? "  \"camera\": " + cameraText(scene.camera) + ",\n" : "")
         << (scene.timeScale != 1.0 ? "  \"time_scale\": " + dump(scene.timeScale) + ",\n" : "")
         << (scene.opensPaused ? "  \"paused\": true,\n" : "")
+        << (scene.colorBy >= 0 ? std::string("  \"color_by\": \"") + kColorByNames[scene.colorBy] + "\",\n" : "")
         << "  \"parameters\": " << parametersText(scene) << ",\n"
         << "  \"seed\": " << scene.seed << ",\n"
         << "  \"time\": " << dump(world.time) << ",\n"

@@ -107,7 +107,7 @@ TEST(CaptureRefusals, UnknownColouringGlBackendAndSamples) {
     const std::string out = capture_test::freshFolder("refused_names");
     CaptureOptions colour = validOptions(out);
     colour.colorBy = "mass";
-    expectRefused(colour, "--color-by mass: expected id, speed or contact");
+    expectRefused(colour, "--color-by mass: expected id, speed, contact or penetration");
     CaptureOptions gl = validOptions(out);
     gl.gl = "glx";
     expectRefused(gl, "--gl glx: expected osmesa, egl or auto");
@@ -449,6 +449,22 @@ glm::u8vec4 pixelAt(const render::Image& image, const glm::vec3& projected) {
 }
 
 glm::vec2 sizeOf(const render::Image& image) { return {float(image.width), float(image.height)}; }
+
+// Without --color-by, a capture colours as the window opens the scene: 22 by penetration.
+TEST(CaptureColouring, TheScenesOwnColouringUnlessOneIsAsked) {
+    const auto colouring = [](const char* asked) {
+        CaptureOptions options;
+        options.scene = "22_shock_pyramid";
+        options.at = "0";
+        options.size = "64x48";
+        options.colorBy = asked;
+        options.out = capture_test::freshFolder(std::string("colouring_") + (*asked ? asked : "scene"));
+        EXPECT_EQ(app::runCapture(options), 0);
+        return capture_test::readManifest(options.out).at("color_by").get<std::string>();
+    };
+    EXPECT_EQ(colouring(""), "penetration");
+    EXPECT_EQ(colouring("speed"), "speed");
+}
 
 TEST_P(CaptureImages, FallingSphereCentreLandsOnAPixelOfItsColour) {
     CaptureOptions options = small("02_bounce_projection");

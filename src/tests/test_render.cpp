@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "physics/diagnostics.h"
 #include "physics/world.h"
 #include "platform/headless_context.h"
 #include "platform/window.h"
@@ -225,6 +226,29 @@ TEST(Snapshot, CopiesSpheresPlanesAndContactColours) {
     ASSERT_EQ(snapshot.planes.size(), 1u);
     render::snapshotSpheres(world, render::ColorBy::Speed, snapshot, 5.0f);  // |v1| = 5 m/s
     EXPECT_EQ(snapshot.colors[1], render::speedColor(5.0f, 5.0f));
+}
+
+// Colour by penetration: each sphere's deepest overlap, with a sphere over the smaller
+// radius, with a plane over its own; the colormap over the decades 0.01 % to 10 % of r.
+TEST(Snapshot, ColourByPenetrationShowsEachSpheresDeepestOverlap) {
+    physics::World world;
+    world.addSphere({0.0, 0.0, 0.1 - 1e-4}, {0, 0, 0}, 0.1, 1.0);   // 0.1 % of r into the floor
+    world.addSphere({0.0, 0.0, 0.3 - 2e-3}, {0, 0, 0}, 0.1, 1.0);   // 1 % of r into the one below
+    world.addSphere({1.0, 0.0, 0.5}, {0, 0, 0}, 0.1, 1.0);          // touches nothing
+    world.planes.push_back({{0, 0, 0}, {0, 0, 1}});
+    world.boxPlaneCount = 1;
+    const std::vector<double> deepest = physics::deepestOverlaps(world);
+    EXPECT_NEAR(deepest[0], 0.019, 1e-9) << "the sphere above, over the smaller radius";
+    EXPECT_NEAR(deepest[1], 0.019, 1e-9);
+    EXPECT_EQ(deepest[2], 0.0);
+    render::FrameSnapshot snapshot;
+    render::snapshotSpheres(world, render::ColorBy::Penetration, snapshot);
+    EXPECT_EQ(snapshot.colors[0], render::penetrationColor(0.019));
+    EXPECT_EQ(snapshot.colors[2], render::speedColor(0.0f, 1.0f)) << "none: the darkest";
+    EXPECT_EQ(render::penetrationColor(1e-5), render::speedColor(0.0f, 1.0f));
+    EXPECT_EQ(render::penetrationColor(0.5), render::speedColor(1.0f, 1.0f)) << "10 % of r and deeper: the brightest";
+    EXPECT_EQ(render::penetrationColor(std::pow(10.0, -2.5)), render::speedColor(0.5f, 1.0f)) << "a log scale";
+    EXPECT_LT(luminance(render::penetrationColor(1e-3)), luminance(render::penetrationColor(1e-2)));
 }
 
 TEST(ImageIo, PngRoundTripKeepsEveryByte) {

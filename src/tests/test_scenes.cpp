@@ -286,6 +286,7 @@ TEST(SceneFile, RefusesACameraThatCannotLook) {
     expectError(R"({"time_scale": 0})", "1:16", {"time_scale = 0 is out of range [0.01, 4]"});
     expectError(R"({"time_scale": "slow"})", "1:16", {"time_scale"});
     expectError(R"({"paused": 1})", "1:12", {"paused must be true or false, got a number"});
+    expectError(R"({"color_by": "mass"})", "1:14", {"color_by 'mass' is not a colouring; choices: id, speed, contact, penetration"});
 }
 
 TEST(SceneFile, RefusesANegativeCount) {
@@ -340,7 +341,7 @@ TEST(SceneFile, ReadsEveryKey) {
                  "broadphase": "allpairs", "count": 12, "radius": 0.04},
   "seed": 77,
   "camera": {"azimuth": -90, "elevation": 10, "fits": {"min": [-0.5, -0.25, 1], "max": [0.5, 0.25, 2]}},
-  "time_scale": 0.25, "paused": true,
+  "time_scale": 0.25, "paused": true, "color_by": "penetration",
   "spheres": [{"p": [0, 0, 1.5], "v": [1, 2, 3], "r": 0.1, "m": 2}],
   "generate": [{"kind": "lattice", "count": 5, "region": {"min": [-0.5, -0.5, 1], "max": [0.5, 0.5, 1.4]},
                 "radius": [0.03, 0.05], "mass": 0.2, "velocity": [0, 0, -1], "velocitySpread": 0.1,
@@ -376,6 +377,7 @@ TEST(SceneFile, ReadsEveryKey) {
     EXPECT_EQ(s.camera.fits->max, glm::dvec3(0.5, 0.25, 2));
     EXPECT_EQ(s.timeScale, 0.25);
     EXPECT_TRUE(s.opensPaused);
+    EXPECT_EQ(s.colorBy, 3);
     ASSERT_EQ(s.spheres.size(), 1u);
     EXPECT_EQ(s.spheres[0].v, glm::dvec3(1, 2, 3));
     EXPECT_EQ(s.spheres[0].m, 2.0);

@@ -110,7 +110,7 @@ TEST(WindowSettings, ValuesOutOfRangeAreNamedAndNotTaken) {
         "out_of_range.json", R"({"ui_scale": 9, "color_by": 7, "show_box": "yes", "show_grid": false, "later": 1})");
     std::string warning;
     const app::WindowSettings read = app::readWindowSettings(path, warning);
-    EXPECT_EQ(warning, path.string() + ": ui_scale 9 (not a number from 0.75 to 3), color_by 7 (not 0, 1 or 2), "
+    EXPECT_EQ(warning, path.string() + ": ui_scale 9 (not a number from 0.75 to 3), color_by 7 (not 0, 1, 2 or 3), "
                                        "show_box \"yes\" (not true or false); the default instead");
     EXPECT_TRUE(read == app::WindowSettings({0.0f, 2, true, false}));  // the one good value is taken
     // A value nested 300 000 deep overflowed the stack while the warning was written.

@@ -100,7 +100,7 @@ void followCanvasShape(int width, int height) {
 }
 
 // The spheres' colourings by name, in render::ColorBy's order (the panel's colorBy).
-constexpr const char* kColorings[] = {"id", "speed", "contact"};
+constexpr const char* kColorings[] = {"id", "speed", "contact", "penetration"};
 
 // px between the columns side by side, as in the window.
 constexpr int kViewGap = 4;
@@ -274,6 +274,7 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_open(const char* name, const char* sett
         simulation->wallBudget = kStepBudgetSeconds;
         simulation->timeScale = simulation->scene().timeScale;  // a scene may open in slow motion
         simulation->paused = simulation->scene().opensPaused;   // or paused at its start
+        if (simulation->scene().colorBy >= 0) v.look.colorBy = simulation->scene().colorBy;
         auto session = std::make_unique<app::Session>(*simulation, kTimelineBytes);
         const scenes::Scene& s = simulation->scene();
         if (!s.compare.empty()) {
@@ -290,6 +291,7 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_open(const char* name, const char* sett
                        {"sliders", scenes::slidersToMove(s)},
                        {"time_scale", {ui::kTimeScaleRange[0], ui::kTimeScaleRange[1]}},
                        {"opening_time_scale", s.timeScale},
+                       {"color_by", kColorings[v.look.colorBy]},
                        {"slide", s.slide},
                        {"description", scenes::describedText(s)},
                        {"compare", app::joinedOverrides(s.compare)}});
@@ -543,7 +545,7 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_look(const char* name, const char* valu
     refusal.clear();
     if (what == "color-by") {
         const auto at = std::find(std::begin(kColorings), std::end(kColorings), to);
-        if (at == std::end(kColorings)) return (refusal = "color-by " + to + ": expected contact, speed or id").c_str();
+        if (at == std::end(kColorings)) return (refusal = "color-by " + to + ": expected contact, speed, id or penetration").c_str();
         v.look.colorBy = int(at - std::begin(kColorings));
         return refusal.c_str();
     }

@@ -173,10 +173,12 @@ std::vector<int> chooseFrames(const CaptureOptions& o) {
 }
 
 render::ColorBy parseColorBy(const std::string& text) {
+    if (text.empty()) return render::ColorBy::ContactState;  // not given: contact, unless the scene says
     if (text == "id") return render::ColorBy::Id;
     if (text == "speed") return render::ColorBy::Speed;
     if (text == "contact") return render::ColorBy::ContactState;
-    throw UsageError("--color-by " + text + ": expected id, speed or contact");
+    if (text == "penetration") return render::ColorBy::Penetration;
+    throw UsageError("--color-by " + text + ": expected id, speed, contact or penetration");
 }
 
 OverlayFlags parseOverlays(const std::string& text) {
@@ -461,6 +463,7 @@ class Capturer {
     std::unique_ptr<platform::HeadlessContext> context_;
     const CaptureOptions& options_;
     const CapturePlan& plan_;
+    render::ColorBy colorBy_ = render::ColorBy::ContactState;  // plan_'s, or the scene's where --color-by was not given
     std::string scenePath_;
     Simulation simulation_;
     render::OffscreenTarget target_;
@@ -483,6 +486,9 @@ Capturer::Capturer(const CaptureOptions& options, const CapturePlan& plan,
       plan_(plan),
       scenePath_(resolveScenePath(options.scene)),
       simulation_(std::move(scene)) {
+    // Without --color-by, the scene's own colouring, as the window opens it (else contact).
+    const int scenes = simulation_.scene().colorBy;
+    colorBy_ = options.colorBy.empty() && scenes >= 0 ? render::ColorBy(scenes) : plan.colorBy;
     if (const std::string error = target_.resize(plan.size.x, plan.size.y, options.samples);
         !error.empty()) {
         throw std::runtime_error(error);
@@ -499,7 +505,7 @@ Capturer::Capturer(const CaptureOptions& options, const CapturePlan& plan,
     LayoutRequest request;
     request.window = plan.size;
     request.gap = kViewGap;
-    const ui::PanelState view = captureView(plan.colorBy, plan.overlays, options.uiScale.value_or(1.0f), options.present,
+    const ui::PanelState view = captureView(colorBy_, plan.overlays, options.uiScale.value_or(1.0f), options.present,
                                               plan.size.y);
     if (options.withUi) {
         ui_ = std::make_unique<UiOverlay>(plan.size, view, scenePath_);
@@ -539,7 +545,7 @@ render::Image Capturer::drawFrame() {
     target_.bind();
     glClearColor(ui::kBackdropColor[0], ui::kBackdropColor[1], ui::kBackdropColor[2], 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    const ui::PanelState view = captureView(plan_.colorBy, plan_.overlays, options_.uiScale.value_or(1.0f),
+    const ui::PanelState view = captureView(colorBy_, plan_.overlays, options_.uiScale.value_or(1.0f),
                                               options_.present, plan_.size.y);
     renderer_.style.overlayOnTop = overlaysOnTop(view, simulation_.world().size());
     buildSnapshot(simulation_, view, snapshot_);
@@ -606,7 +612,7 @@ Json Capturer::manifest() const {
                 {"viewport", {view_.x, view_.y, view_.z, view_.w}},
                 {"samples", target_.samples()},
                 {"with_ui", options_.withUi},
-                {"color_by", options_.colorBy},
+                {"color_by", scenes::kColorByNames[int(colorBy_)]},
                 {"overlays", overlayList()},
                 {"camera", cameraJson()},
                 {"gl",

@@ -21,7 +21,7 @@ struct CaptureOptions {
     std::string out;                    // folder, created when missing
     std::string size = "1280x800";      // "WxH", px
     std::string camera;  // "azimuth,elevation[,distance]": deg, deg, m; "": fit the box
-    std::string colorBy = "contact";  // id | speed | contact
+    std::string colorBy;  // id | speed | contact | penetration; "": the scene's "color_by", else contact
     bool withUi = false;              // draw the panel and readouts as the window does
     // With withUi or side by side: the panel's and the labels' UI scale (default 1; 2 draws
     // as a HiDPI screen at 2x does).

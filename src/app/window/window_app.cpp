@@ -67,6 +67,8 @@ private:
     void loadPreset(int index);
     void showSceneTitle();
     void applyKeptSettings();
+    // The scene's own colouring (its "color_by"), else the one the viewer chose last.
+    void openColoring();
     void keepSettings() const;
     void loadFile(const std::string& path);
     // The preset whose file `path` names (any spelling of its path), or -1.
@@ -110,6 +112,8 @@ private:
     float scaleBeforePresenting_ = 1.0f;
     std::vector<ViewLabel> labels_;  // side by side: this frame's labels, measured for the layout
     float viewAspect_ = 0.0f;    // of the views last frame: a change refits the camera's distance
+    int chosenColorBy_ = 2;      // the viewer's colouring (kept between sessions), not a scene's
+    int openedColorBy_ = 2;      // the colouring openColoring() set: a change from it is the viewer's
     FrameProfile profile_;       // --frames N only
 };
 
@@ -155,6 +159,7 @@ WindowApp::WindowApp(std::unique_ptr<platform::Window> window, scenes::Scene sce
     screenScale_ = std::max(1.0f, window_->contentScale().x);
     panel_.uiScale = screenScale_;
     applyKeptSettings();
+    openColoring();
     rebuildFont();
     if (options.present) togglePresentation();
 }
@@ -379,6 +384,7 @@ void WindowApp::loadFile(const std::string& path) {
     try {
         simulation_.openScene(scenes::loadScene(path));
         if (simulation_.scene().opensPaused) simulation_.paused = true;  // else it runs on or stays paused
+        openColoring();
         showSceneTitle();
         panel_.scenePath = path;
         panel_.presetIndex = presetIndexOf(path);  // a preset's file by any path: [ and ] go on from it
@@ -544,6 +550,7 @@ void WindowApp::frame(double dt) {
     if (options_.frames > 0) glFinish();  // measured: the UI's drawing, not only its calls
     profile_.lap(FrameProfile::UiRender);
     apply(actions);
+    if (panel_.colorBy != openedColorBy_) chosenColorBy_ = openedColorBy_ = panel_.colorBy;  // chosen in the panel
     if (input_.apply(tools, layout().views, camera_, window_->time())) fitCamera();
     if (const std::string note = session_.takeNote(); !note.empty()) {  // side by side stopped: one view again
         input_.say(window_->time(), "%s", note.c_str());
@@ -626,6 +633,11 @@ int WindowApp::run() {
     return 0;
 }
 
+void WindowApp::openColoring() {
+    const int scenes = simulation_.scene().colorBy;
+    panel_.colorBy = openedColorBy_ = scenes >= 0 ? scenes : chosenColorBy_;
+}
+
 // The view settings the last session kept (window_settings.h). A broken file is said in one
 // line; the session opens as it would without it.
 void WindowApp::applyKeptSettings() {
@@ -634,7 +646,7 @@ void WindowApp::applyKeptSettings() {
     const WindowSettings kept = readWindowSettings(windowSettingsPath(), warning);
     if (!warning.empty()) std::fprintf(stderr, "spheres: settings: %s\n", warning.c_str());
     if (kept.uiScale > 0.0f) panel_.uiScale = kept.uiScale;
-    panel_.colorBy = kept.colorBy;
+    chosenColorBy_ = kept.colorBy;
     panel_.showBox = kept.showBox;
     panel_.showGrid = kept.showGrid;
 }
@@ -647,7 +659,7 @@ void WindowApp::keepSettings() const {
     if (path.empty()) return;
     const float chosen = panel_.present ? scaleBeforePresenting_ : panel_.uiScale;
     const std::string error =
-        writeWindowSettings(path, {chosen == screenScale_ ? 0.0f : chosen, panel_.colorBy, panel_.showBox, panel_.showGrid});
+        writeWindowSettings(path, {chosen == screenScale_ ? 0.0f : chosen, chosenColorBy_, panel_.showBox, panel_.showGrid});
     if (!error.empty()) std::fprintf(stderr, "spheres: settings not kept: %s\n", error.c_str());
 }
 

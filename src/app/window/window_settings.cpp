@@ -18,7 +18,7 @@ namespace {
 using Json = nlohmann::json;
 namespace fs = std::filesystem;
 
-constexpr int kColorings = 3;  // render::ColorBy's values
+constexpr int kColorings = 4;  // render::ColorBy's values
 
 // A value as the warning names it: a number, true, "a string" (cut at 40 characters), or
 // "an array" / "an object" (a file's nesting may be deep enough to overflow a dump).
@@ -85,7 +85,7 @@ WindowSettings readWindowSettings(const fs::path& path, std::string& warning) {
     take(json, "ui_scale", Json::value_t::number_float, scales, settings.uiScale, [](const Json& s) {
         return s.get<double>() >= ui::kUiScaleRange[0] && s.get<double>() <= ui::kUiScaleRange[1];
     }, wrong);
-    take(json, "color_by", Json::value_t::number_unsigned, "0, 1 or 2", settings.colorBy,
+    take(json, "color_by", Json::value_t::number_unsigned, "0, 1, 2 or 3", settings.colorBy,
          [](const Json& c) { return c.get<std::uint64_t>() < kColorings; }, wrong);
     const auto anyBool = [](const Json&) { return true; };
     take(json, "show_box", Json::value_t::boolean, "true or false", settings.showBox, anyBool, wrong);
