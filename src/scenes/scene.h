@@ -99,10 +99,6 @@ struct Region {
     glm::dvec3 max{0.0};  // m
 };
 
-// How the camera opens, and where C puts it back (key "camera"): its angles, and the
-// region it fits. Slide 14's presets look straight at their mirror plane, so that a
-// symmetric answer looks symmetric, and frame their spheres, not the whole box, so that
-// four views on a projector draw them large (the box stays drawn; the wheel zooms out).
 // The spheres' colourings by name, in render::ColorBy's order (a scene's "color_by", the
 // page's links, capture's --color-by).
 constexpr const char* kColorByNames[] = {"id", "speed", "contact", "penetration"};
@@ -110,6 +106,11 @@ constexpr const char* kColorByNames[] = {"id", "speed", "contact", "penetration"
 // The time scale's range (the window's slider, a scene's "time_scale").
 constexpr double kTimeScaleRange[2] = {0.01, 4.0};
 
+// How the camera opens, and where C puts it back (key "camera"): its angles, and the
+// region it fits. Slide 14's presets look straight at their mirror plane, so that a
+// symmetric answer looks symmetric, and frame the slab of the box their spheres move in,
+// so that four views on a projector draw them larger than the whole box would and none
+// leaves a view (the box stays drawn; the wheel zooms out).
 struct SceneCamera {
     std::optional<double> azimuthDeg;    // deg, around +z from +x; none: the three-quarter view's
     std::optional<double> elevationDeg;  // deg, above the xy plane, |el| <= 88; none: the default

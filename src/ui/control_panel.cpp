@@ -11,6 +11,7 @@
 
 #include "scenes/overrides.h"
 #include "scenes/parameters.h"
+#include "ui/tooltip_timing.h"
 #include "ui/wrapped_text.h"
 
 namespace ui {
@@ -26,29 +27,9 @@ const ImVec4 kHintColor{0.85f, 0.78f, 0.70f, 1.0f};
 const ImVec4 kMeasuredColor{0.55f, 0.85f, 1.0f, 1.0f};
 const ImVec4 kRefusalColor{1.0f, 0.62f, 0.30f, 1.0f};  // orange: refused, nothing changed
 
-// A tooltip comes once the pointer has rested on its item for kTooltipAfter, and goes once it
-// has rested there for kTooltipFor or clicked it, until the pointer moves again: a pointer
-// left on a header after a click had kept six lines over the views for a whole run.
-constexpr double kTooltipAfter = 0.5, kTooltipFor = 10.0;  // s
-
+// The item's tooltip, when tooltipDue says.
 void tooltip(std::string_view text) {
-    if (!ImGui::IsItemHovered() || text.empty()) return;
-    static ImVec2 restingOn{-1.0f, -1.0f};  // the item's corner
-    static double since = 0.0;              // s, ImGui's clock: when the pointer came to rest there
-    static int seenIn = -2;                 // the frame it was last hovered in
-    static bool clicked = false;
-    const ImGuiIO& io = ImGui::GetIO();
-    const ImVec2 at = ImGui::GetItemRectMin();
-    const bool moved = io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f;
-    if (at.x != restingOn.x || at.y != restingOn.y || seenIn < ImGui::GetFrameCount() - 1 || moved) {
-        restingOn = at;
-        since = ImGui::GetTime();
-        clicked = false;
-    }
-    seenIn = ImGui::GetFrameCount();
-    clicked = clicked || ImGui::IsMouseDown(ImGuiMouseButton_Left) || ImGui::IsMouseDown(ImGuiMouseButton_Right);
-    const double rested = ImGui::GetTime() - since;
-    if (clicked || rested < kTooltipAfter || rested > kTooltipFor) return;
+    if (!ImGui::IsItemHovered() || text.empty() || !tooltipDue(ImGui::GetItemRectMin())) return;
     ImGui::BeginTooltip();
     ImGui::PushTextWrapPos(ImGui::GetFontSize() * 28.0f);
     ImGui::TextUnformatted(text.data(), text.data() + text.size());
@@ -512,6 +493,8 @@ std::string claimsElsewhereLine(const Readouts& r) {
 // Under the text: its claims as this run measured them (scenes/claims.h), folded under a
 // line that counts them, so that the sliders stay where they are.
 void measuredClaims(const Readouts& r, PanelState& state) {
+    const bool wereOpen = state.claimsWereOpen;
+    state.claimsWereOpen = false;
     if (r.claimsWatched == 0 && !r.claimsInterrupted) {
         if (!r.claimsForOtherSettings) return;
         ImGui::TextDisabled("The text, measured: not at these settings");
@@ -535,7 +518,14 @@ void measuredClaims(const Readouts& r, PanelState& state) {
             "timeline) stops the measurement until the next restart (R); a setting changed before the first step "
             "measures the text's claims for that setting.");
     if (!open) return;
-    if (!state.pointerOverPanel) {  // else the lines stay as they were when the pointer came
+    state.claimsWereOpen = true;
+    // While the pointer is over the panel the lines stay as they were when it came, but for a
+    // list just unfolded (by a click, so under the pointer), and a run restarted or another
+    // scene's (fewer measured, or another count to watch).
+    const bool sameRun = r.claims.size() >= state.claimsMeasuredShown && r.claimsWatched == state.claimsWatchedShown;
+    if (!state.pointerOverPanel || !wereOpen || !sameRun) {
+        state.claimsMeasuredShown = r.claims.size();
+        state.claimsWatchedShown = r.claimsWatched;
         std::vector<std::pair<std::string, int>>& lines = state.claimLinesShown;
         lines.clear();
         for (const Readouts::ClaimLine& c : r.claims) {
@@ -704,7 +694,7 @@ void presentedPanel(const scenes::Scene& scene, const Readouts& readouts, const 
         drawSliders();
     }
     ImGui::EndChild();
-    ImGui::Dummy(ImVec2(0.0f, std::max(0.0f, cut - ImGui::GetStyle().ItemSpacing.y)));  // the keys stay at the bottom
+    ImGui::SetCursorPosY(ImGui::GetCursorPosY() + cut);  // the keys stay at the bottom (a Dummy adds a spacing)
     ImGui::Separator();
     if (!slidersScroll) drawSliders();
     // The numbers the texts point at and the run's state in the body's white: grey washes out

@@ -51,7 +51,7 @@ struct PanelState {
     bool yieldsToExplainer = false;
     bool readoutsOpen = false;  // the readouts unfolded (numbers and plots); folded: one line
     float uiScale = 1.0f;      // multiplies the font size
-    int colorBy = 2;           // render::ColorBy: 0 id, 1 speed, 2 contact state
+    int colorBy = 2;           // render::ColorBy: 0 id, 1 speed, 2 contact state, 3 penetration
     bool showBox = true;
     bool showGrid = true;
     // Overlays (View section), drawn over the scene through the snapshot's lines and
@@ -88,6 +88,8 @@ struct PanelState {
     // had pushed every slider below down a line or two): the text and whether it holds
     // (0 no, 1 yes, 2 a grey note).
     std::vector<std::pair<std::string, int>> claimLinesShown;
+    bool claimsWereOpen = false;                               // unfolded last frame
+    std::size_t claimsMeasuredShown = 0, claimsWatchedShown = 0;  // what claimLinesShown were made from
     // Side by side: the parameters every other view sets itself, whose sliders move view A
     // alone (said under them).
     std::vector<std::string> onlyViewA;

@@ -100,7 +100,7 @@ void followCanvasShape(int width, int height) {
 }
 
 // The spheres' colourings by name, in render::ColorBy's order (the panel's colorBy).
-constexpr const char* kColorings[] = {"id", "speed", "contact", "penetration"};
+constexpr const auto& kColorings = scenes::kColorByNames;
 
 // px between the columns side by side, as in the window.
 constexpr int kViewGap = 4;
@@ -462,7 +462,7 @@ EMSCRIPTEN_KEEPALIVE void spheres_step() {
     if (live().session) live().session->singleStep();
 }
 EMSCRIPTEN_KEEPALIVE void spheres_restart() {
-    if (live().session) live().session->restart();
+    if (live().session) live().session->restartAsOpened();
 }
 
 // Simulated seconds per real second (below 1: slow motion; h does not change), within

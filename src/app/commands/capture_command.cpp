@@ -4,6 +4,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <iterator>
 #include <charconv>
 #include <chrono>
 #include <cmath>
@@ -174,10 +175,9 @@ std::vector<int> chooseFrames(const CaptureOptions& o) {
 
 render::ColorBy parseColorBy(const std::string& text) {
     if (text.empty()) return render::ColorBy::ContactState;  // not given: contact, unless the scene says
-    if (text == "id") return render::ColorBy::Id;
-    if (text == "speed") return render::ColorBy::Speed;
-    if (text == "contact") return render::ColorBy::ContactState;
-    if (text == "penetration") return render::ColorBy::Penetration;
+    for (std::size_t k = 0; k < std::size(scenes::kColorByNames); ++k) {
+        if (text == scenes::kColorByNames[k]) return render::ColorBy(k);
+    }
     throw UsageError("--color-by " + text + ": expected id, speed, contact or penetration");
 }
 

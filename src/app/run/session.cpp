@@ -136,6 +136,11 @@ void Session::restart() {
     startAgain();
 }
 
+void Session::restartAsOpened() {
+    restart();
+    if (primary_.scene().opensPaused) primary_.paused = true;
+}
+
 void Session::sceneChanged() {
     selected_ = -1;
     const std::vector<std::string>& asked = primary_.scene().compare;

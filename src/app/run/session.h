@@ -34,6 +34,9 @@ public:
     // scene's initial state. Returns "" or why not (the runs are then unchanged).
     std::string startComparison(const std::vector<std::string>& lists);
     void stopComparison();
+    // R: every run from its start again, paused where the scene opens paused (13, 16-20: a
+    // replay would show the impact before the class looks).
+    void restartAsOpened();
 
     // ---- stepping: both runs, the same real seconds; frames that stepped are kept ----
     int advance(double realSeconds);

@@ -94,7 +94,8 @@ const physics::ContactGraph& Simulation::contactGraph() const {
 }
 
 void Simulation::restoredFromTimeline() {
-    resetOverlays();
+    // A frame before the newest step: the trails and the bounce in flight were the later state's.
+    if (world_.time < lastStepTime_) resetOverlays();
     restitution_.showAt(world_.time);
     impacts_ = impactsAt(world_.time);
 }
@@ -204,6 +205,7 @@ bool Simulation::beforeStep() {
     if (world_.time < lastStepTime_) {
         overlays_.reset();
         ghosts_.reset();
+        restitution_.forgetFlights();
         restitution_.forgetAfter(world_.time);
         impacts_ = impactsAt(world_.time);
         while (!impactsBefore_.empty() && impactsBefore_.back().first > world_.time) impactsBefore_.pop_back();

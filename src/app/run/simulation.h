@@ -114,7 +114,8 @@ public:
     // start afresh and a bounce in progress is not measured. Measured ratios, the
     // bounce counter and the alarms stay until restart.
     void resetOverlays();
-    // The timeline restored one of its states: the overlays start afresh, and the slide 14
+    // The timeline restored one of its states: the overlays start afresh (but at the newest
+    // step), and the slide 14
     // marks and the measured bounces are shown as they were then (those measured later were
     // news from a future the student had stepped back from; the next step forgets them, and
     // running on measures them again).
@@ -145,7 +146,7 @@ private:
     // impacts_ after each step that measured contacts, with its world time (s), oldest first:
     // what restoredFromTimeline() puts back. Past the cap every other of the older half goes.
     std::vector<std::pair<double, ImpactRecord>> impactsBefore_;
-    static constexpr std::size_t kMostImpactRecordsKept = std::size_t(1) << 13;
+    static constexpr std::size_t kMostImpactRecordsKept = std::size_t(1) << 15;  // past the timeline's 19 200 steps
     double behindFor_ = 0.0;  // s of real time behindRealTime() still says so
     History history_;
     physics::Diagnostics diagnostics_;

@@ -146,7 +146,6 @@ void RestitutionMeter::show(const Judged& judged) {
 }
 
 void RestitutionMeter::showAt(double time) {
-    tracks_.clear();
     last_.clear();
     latest_.reset();
     measured_ = droppedMeasured_;

@@ -54,8 +54,8 @@ public:
     // keeps the measurements.
     void forgetFlights() { tracks_.clear(); }
     // The timeline shows the state at `time` (s): the measurements are shown as they were
-    // then, and the flights forgotten. Those after it are kept for a later frame of the
-    // timeline until forgetAfter(time): running on from there measures them again.
+    // then (the flights are the caller's: forgetFlights). Those after it are kept for a later
+    // frame of the timeline until forgetAfter(time): running on from there measures them again.
     void showAt(double time);
     void forgetAfter(double time);
     // After every step, with world.contacts of that step.
@@ -87,7 +87,7 @@ private:
         bool labelled = false;  // at least kMinLabelledImpactSpeedInGH g h fast
         bool tooSlow = false;   // under kMinImpactSpeedInGH g h: counted, not measured
     };
-    static constexpr std::size_t kMostJudgedKept = std::size_t(1) << 14;
+    static constexpr std::size_t kMostJudgedKept = std::size_t(1) << 16;  // past the timeline's 19 200 steps
     void judge(const Judged& judged);
     void show(const Judged& judged);  // as the newest: last_, latest_ and the counts
 

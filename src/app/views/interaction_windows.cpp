@@ -10,6 +10,7 @@
 #include "app/teaching/contact_explanation.h"
 #include "app/run/session.h"
 #include "app/views/view_labels.h"
+#include "ui/tooltip_timing.h"
 #include "ui/wrapped_text.h"
 
 namespace app {
@@ -320,12 +321,6 @@ float labelsHeight(const std::vector<ViewLabel>& labels, float width) {
 }
 
 void drawViewLabels(const std::vector<ViewLabel>& labels) {
-    // The label the pointer rests on, and since when (s, ImGui's clock): its tooltip waits
-    // kLabelTipDelay, so that a pointer left over the views does not cover them.
-    constexpr double kLabelTipDelay = 0.6;  // s
-    static int restingOn = -1;
-    static double restingSince = 0.0;
-    int pointedAt = -1;
     for (std::size_t k = 0; k < labels.size(); ++k) {
         const ViewLabel& label = labels[k];
         ImGui::SetNextWindowPos(ImVec2(label.topLeft.x, label.topLeft.y), ImGuiCond_Always);
@@ -347,14 +342,12 @@ void drawViewLabels(const std::vector<ViewLabel>& labels) {
             ImGui::PopStyleColor();
         }
         // The label takes no input (a drag across it turns the camera), but the pointer
-        // resting on it explains its marks.
+        // resting on it explains its marks (ui::tooltipDue: not while a button is down, nor for
+        // ever).
         const ImVec2 corner = ImGui::GetWindowPos(), extent = ImGui::GetWindowSize();
-        const bool resting = !ImGui::IsMouseDown(ImGuiMouseButton_Left) && !ImGui::IsMouseDown(ImGuiMouseButton_Right);
-        if (!label.tooltip.empty() && resting && !ImGui::IsAnyItemHovered() &&
-            ImGui::IsMouseHoveringRect(corner, ImVec2(corner.x + extent.x, corner.y + extent.y), false)) {
-            pointedAt = int(k);
-        }
-        if (pointedAt == int(k) && restingOn == pointedAt && ImGui::GetTime() - restingSince >= kLabelTipDelay) {
+        if (!label.tooltip.empty() && !ImGui::IsAnyItemHovered() &&
+            ImGui::IsMouseHoveringRect(corner, ImVec2(corner.x + extent.x, corner.y + extent.y), false) &&
+            ui::tooltipDue(corner)) {
             ImGui::BeginTooltip();
             ImGui::PushTextWrapPos(ImGui::GetFontSize() * 28.0f);
             ImGui::TextUnformatted(label.tooltip.c_str());
@@ -363,8 +356,6 @@ void drawViewLabels(const std::vector<ViewLabel>& labels) {
         }
         ImGui::End();
     }
-    if (pointedAt != restingOn) restingSince = ImGui::GetTime();
-    restingOn = pointedAt;
 }
 
 namespace {

@@ -93,7 +93,7 @@ std::string InteractionInput::startComparison(const std::vector<std::string>& li
 // could change nothing there (the cradle's order=index,reversed on 13's one sphere: two views
 // of one run). Overrides the user wrote stay, and a scene's own "compare" comes first.
 void InteractionInput::sceneChanged() {
-    const bool followOffer = session_.comparison() && comparingSuggestion_;
+    const bool followOffer = session_.comparison() && comparingSuggestion_ && tools_.compareText == suggested_;
     if (followOffer) session_.stopComparison();
     session_.sceneChanged();
     suggestOverrides();
@@ -117,6 +117,7 @@ void InteractionInput::suggestOverrides() {
 bool InteractionInput::toggleCompare(double now) {
     if (session_.comparison()) {
         session_.stopComparison();
+        comparingSuggestion_ = false;
         say(now, "side by side: off");
         return true;
     }

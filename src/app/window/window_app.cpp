@@ -104,6 +104,7 @@ private:
     StillFrames stillFrames_;       // paused and unchanged: wait for input
     std::vector<std::string> presets_;
     ui::FrameTimes timing_;
+    ui::FrameTimes shownTiming_;  // timing_ as the readouts show it: the last running frame's while paused
     double frameSeconds_ = 0.0;  // s, a running average of the real frame time
     bool screenshotRequested_ = false;
     bool cameraFitted_ = false;  // fitted in the first frame, once the panel's width is known
@@ -310,7 +311,7 @@ void WindowApp::handleKey(int key, int mods) {
     switch (key) {
         case GLFW_KEY_P: case GLFW_KEY_SPACE: simulation_.paused = !simulation_.paused; break;
         case GLFW_KEY_O: case GLFW_KEY_N: session_.singleStep(); break;
-        case GLFW_KEY_R: session_.restart(); break;
+        case GLFW_KEY_R: session_.restartAsOpened(); break;
         case GLFW_KEY_LEFT: session_.stepBack(); break;
         case GLFW_KEY_RIGHT: session_.stepForward(); break;
         case GLFW_KEY_F: input_.shoot(layout().views, camera_, true, window_->time()); break;
@@ -433,7 +434,7 @@ std::string WindowApp::writeOutput(ui::PanelState::FileButton at, const char* st
 void WindowApp::apply(const ui::PanelActions& a) {
     if (a.togglePause) simulation_.paused = !simulation_.paused;
     if (a.step) session_.singleStep();
-    if (a.restart) session_.restart();
+    if (a.restart) session_.restartAsOpened();
     for (const ui::PanelActions::Edit& edit : a.edits) {
         // Refused: the slider shows the value it had, and why under it.
         panel_.refusal = session_.setParameter(*edit.parameter, edit.value);
@@ -538,7 +539,8 @@ void WindowApp::frame(double dt) {
     followViewShape(placed.views);
     drawScene(placed.views);
     profile_.lap(FrameProfile::Draw);
-    ui::Readouts readouts = makeReadouts(simulation_, timing_, session_.comparison());
+    if (!simulation_.paused) shownTiming_ = timing_;  // paused, the readouts hold still (StillFrames can wait)
+    ui::Readouts readouts = makeReadouts(simulation_, shownTiming_, session_.comparison());
     readouts.diagnostics = session_.diagnostics(0);  // measured again after an edit or a step back
     ui::PanelActions actions = ui::drawControlPanel(simulation_.scene(), simulation_.timeScale, readouts, panel_, presets_);
     const auto box = [](const Rect& r) { return glm::vec4(r.min, r.size); };

@@ -10,7 +10,7 @@ namespace app {
 
 struct WindowSettings {
     float uiScale = 0.0f;  // multiplies the panel's font; 0: the screen's own scale (not kept)
-    int colorBy = 2;       // render::ColorBy: 0 id, 1 speed, 2 contact state
+    int colorBy = 2;       // render::ColorBy: 0 id, 1 speed, 2 contact state, 3 penetration
     bool showBox = true;
     bool showGrid = true;
 };
