@@ -577,6 +577,12 @@ TEST(SaveLoad, TheCameraAndTheTimeScaleAreKept) {
     reloaded(scene, scenes::buildWorld(scene), &back);
     EXPECT_EQ(back.timeScale, 0.25);
     EXPECT_TRUE(back.opensPaused);
+    const Scene pyramid = scenes::loadScene(scenes::presetPath("22_shock_pyramid"));
+    ASSERT_EQ(pyramid.colorBy, 3);  // penetration
+    Scene pyramidBack;
+    reloaded(pyramid, scenes::buildWorld(pyramid), &pyramidBack);
+    EXPECT_EQ(pyramidBack.colorBy, 3);
+    EXPECT_EQ(back.colorBy, -1) << "16 gives none: the viewer's own";
     EXPECT_EQ(back.camera.azimuthDeg, scene.camera.azimuthDeg);
     EXPECT_EQ(back.camera.elevationDeg, scene.camera.elevationDeg);
     ASSERT_TRUE(back.camera.fits);

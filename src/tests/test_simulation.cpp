@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "app/run/session.h"
 #include "app/run/simulation.h"
 #include "scenes/claims.h"
 #include "scenes/presets.h"
@@ -52,6 +53,23 @@ TEST(Simulation, TheTimeScaleFollowsTheScenesOpenedUnlessTheUserChoseOne) {
     EXPECT_EQ(sim.timeScale, 0.5);
     sim.openScene(preset("11_pile"));
     EXPECT_EQ(sim.timeScale, 0.5);
+}
+
+// R on a scene that opens paused (13, 16-20) pauses it again at its start: a replay would
+// show the impact before the class looks. Other scenes run on.
+TEST(Simulation, RestartPausesAgainTheScenesThatOpenPaused) {
+    app::Simulation bernoulli(scenes::loadScene(scenes::presetPath("16_bernoulli")));
+    app::Session session(bernoulli);
+    session.singleStep();
+    bernoulli.paused = false;
+    session.restartAsOpened();
+    EXPECT_TRUE(bernoulli.paused);
+    EXPECT_EQ(bernoulli.world().stepCount, 0u);
+    app::Simulation resting = pile();
+    app::Session pileSession(resting);
+    resting.paused = false;
+    pileSession.restartAsOpened();
+    EXPECT_FALSE(resting.paused);
 }
 
 TEST(Simulation, AWallBudgetStopsAfterTheFirstStepItExceeds) {
