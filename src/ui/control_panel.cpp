@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
+#include <string_view>
 
 #include <glm/geometric.hpp>
 #include <imgui.h>
@@ -16,6 +18,16 @@
 
 namespace ui {
 namespace {
+
+// What the colours mean where they are not obvious: the penetration colouring's scale
+// (render::penetrationColor), under the readouts and the presented sliders.
+std::string colourLegend(const PanelState& state) {
+    const bool penetration = state.colorBy >= 0 && state.colorBy < int(std::size(scenes::kColorByNames)) &&
+                             std::string_view(scenes::kColorByNames[state.colorBy]) == "penetration";
+    return penetration ? "colours: each sphere's deepest overlap, dark \u2264 0.01 %, blue 0.1 %, green 1 %, "
+                         "yellow \u2265 10 % of r"
+                       : "";
+}
 
 // Under a slider side by side: the other views keep the value their overrides give them.
 constexpr const char* kOnlyViewA = "view A only: the other views set their own";
@@ -345,11 +357,13 @@ void readoutsBody(const Readouts& r, const PanelState& state, PanelActions& acti
     } else {
         ImGui::TextDisabled("FPS and timings: not measured here");  // capture: equal runs, equal images
     }
-    // The overlays' scales first: they explain what is drawn over the scene.
-    if (!r.legend.empty()) {
+    // The overlays' scales and the colours first: they explain what is drawn.
+    const std::string colours = colourLegend(state);
+    if (!r.legend.empty() || !colours.empty()) {
         for (const Readouts::LegendLine& line : r.legend) {
             wrappedColored(ImVec4(line.color[0], line.color[1], line.color[2], line.color[3]), line.text);
         }
+        if (!colours.empty()) ImGui::TextWrapped("%s", colours.c_str());
         ImGui::Separator();
     }
     ImGui::Text("contacts %llu sphere + %llu wall", static_cast<unsigned long long>(d.sphereContacts),
@@ -609,6 +623,7 @@ UnderText underPresentedText(const std::vector<const scenes::Parameter*>& slider
         return std::find(state.onlyViewA.begin(), state.onlyViewA.end(), p->name) != state.onlyViewA.end();
     });
     if (viewA) under.notes.push_back(kOnlyViewA);
+    if (const std::string colours = colourLegend(state); !colours.empty()) under.notes.push_back(colours);
     if (showsRestitution(sliders, scene, r)) {
         // "β² = 0.640   measured ≈ ..." on a line, or "β² = 0.640" and its note wrapped under it
         const float wrap = ImGui::GetContentRegionAvail().x;
