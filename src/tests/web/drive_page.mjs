@@ -311,6 +311,12 @@ try {
   const opened = await until((s) => s.spheres === 3, 30000);
   check('16 opens paused at its start, in slow motion', opened.paused === true && opened.time_s === 0 &&
         (await text('time-scale-shown')) === '0.25 x', JSON.stringify(opened));
+  await navigate('scene=16_bernoulli&present');
+  await until((s) => s.spheres === 3, 30000);
+  await sleep(300);  // a frame draws the state
+  const presented = await text('present-state');
+  check('presented, the page says the run is paused, in slow motion', presented === 't = 0.000 s, paused (P runs), slow motion 0.25×',
+        presented);
   const rows = async (width, height) => {
     await send('Emulation.setDeviceMetricsOverride', { width, height, deviceScaleFactor: 1, mobile: false });
     await sleep(1500);
