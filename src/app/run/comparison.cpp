@@ -264,8 +264,7 @@ std::vector<ViewReadout> viewReadouts(const Simulation& primary, const Compariso
         readout.properties = propertiesMarks(judgedProperties(run));
         // Scenes the meter follows whole (not the selected sphere alone: a column's would read
         // "–" for ever, and the label would change size with the selection).
-        readout.bouncesMeasured = world.recordContacts && floorPlane(world, run.params()) >= 0 &&
-                                  !measuredSpheres(world, -1).empty();
+        readout.bouncesMeasured = followsBounces(world, run.params(), -1);
         if (run.restitution().latest()) readout.apexRatio = run.restitution().latest()->ratio();
         readout.betaSquared = run.params().beta * run.params().beta;
         readout.work = workOf(run);

@@ -52,6 +52,10 @@ std::vector<std::uint32_t> measuredSpheres(const physics::World& world, int sele
     return spheres;
 }
 
+bool followsBounces(const physics::World& world, const physics::Params& params, int selected) {
+    return world.recordContacts && floorPlane(world, params) >= 0 && !measuredSpheres(world, selected).empty();
+}
+
 void RestitutionMeter::reset() {
     tracks_.clear();
     judged_.clear();

@@ -47,6 +47,10 @@ double normalEnergy(const physics::World& world, const physics::Params& params, 
 // The spheres measured: the selected one, or all of a scene of up to kMaxMeasuredSpheres.
 std::vector<std::uint32_t> measuredSpheres(const physics::World& world, int selected);
 
+// Whether the meter follows floor bounces here: contacts recorded, a floor under gravity,
+// spheres to measure (with `selected`, or -1 for the scene's own).
+bool followsBounces(const physics::World& world, const physics::Params& params, int selected);
+
 class RestitutionMeter {
 public:
     void reset();

@@ -151,8 +151,7 @@ ui::Readouts makeReadouts(const Simulation& simulation, const ui::FrameTimes& ti
     r.betaSquared = simulation.params().beta * simulation.params().beta;
     for (const BounceMeasurement& m : simulation.restitution().last()) r.measuredBetaSquared.push_back(m.ratio());
     if (r.measuredBetaSquared.empty()) r.restitutionNote = restitutionNote(simulation);
-    r.bouncesMeasured = simulation.world().recordContacts && floorPlane(simulation.world(), simulation.params()) >= 0 &&
-                        !measuredSpheres(simulation.world(), simulation.selectedSphere()).empty();
+    r.bouncesMeasured = followsBounces(simulation.world(), simulation.params(), simulation.selectedSphere());
     std::vector<LegendLine> legend =
         overlayLegend(simulation.overlayFlags(), simulation.world().size(), simulation.selectedSphere());
     if (const auto& ghost = simulation.contactGhosts().latest(); ghost && simulation.selectedSphere() >= 0) {
