@@ -342,6 +342,29 @@ TEST_F(CaptureCompare, WritesThreeViewsForSlideSevensAnswers) {
     }
 }
 
+// 21's view C gains a label line at its first steps ("most in one step: 20 shock levels,
+// 80 rounds" wraps where "0 shock levels, 0 rounds" did not): the views make room for it at
+// the frame it appears, as the window's do, and no frame cuts a label (the README's
+// screenshot, laid out once at frame 0, had lost C's last line).
+TEST_F(CaptureCompare, NoFrameCutsALabelThatGrewSinceTheFirst) {
+    const std::string out = capture_test::freshFolder("compare_labels_grow");
+    app::CaptureOptions options = capture_test::smallCapture("21_shock_column", out, platform::HeadlessBackend::Auto);
+    options.size = "1280x720";
+    options.withUi = true;
+    options.at = "0,120";
+    ASSERT_EQ(app::runCapture(options), 0);
+    const nlohmann::json manifest = capture_test::readManifest(out);
+    ASSERT_EQ(manifest["frames"].size(), 2u);
+    for (const auto& frame : manifest["frames"]) EXPECT_EQ(frame["labels_cut"], 0) << "frame " << frame["index"];
+    // Laid out for frame 0's labels, frame 120's views would reach a line higher.
+    options.at = "0";
+    const std::string first = capture_test::freshFolder("compare_labels_first");
+    options.out = first;
+    ASSERT_EQ(app::runCapture(options), 0);
+    const auto top = [](const nlohmann::json& viewport) { return int(viewport[1]) + int(viewport[3]); };  // px, from the bottom
+    EXPECT_LT(top(manifest["viewport"]), top(capture_test::readManifest(first)["viewport"])) << "the views moved down";
+}
+
 TEST_F(CaptureCompare, RefusesAnUnknownOverrideBeforeWritingAnything) {
     const std::string out = capture_test::freshFolder("compare_refused");
     app::CaptureOptions options = capture_test::smallCapture("cradle", out, platform::HeadlessBackend::Auto);

@@ -453,6 +453,7 @@ class Capturer {
 
   private:
     render::Image drawFrame();
+    void followLabels();
     void writeFrame(int index);
     const Comparison* comparedRuns() const { return compare_ ? &compare_->comparison() : nullptr; }
     Json manifest() const;
@@ -471,6 +472,7 @@ class Capturer {
     render::FrameSnapshot snapshot_;
     std::unique_ptr<UiOverlay> ui_;
     std::unique_ptr<CaptureComparison> compare_;  // --compare: views B, C, D
+    LayoutRequest request_;  // what layout_ was laid out from; the labels measured again each frame
     WindowLayout layout_;
     glm::ivec4 view_{0};  // x, y, width, height in px (GL's lower-left origin)
     std::vector<glm::vec4> uiDrawn_;  // px from the top left: what the panels and labels covered
@@ -502,7 +504,7 @@ Capturer::Capturer(const CaptureOptions& options, const CapturePlan& plan,
     // Contacts and trails are recorded from the first step on, as in a window whose
     // overlays were switched on before the run.
     simulation_.setOverlayFlags(plan.overlays);
-    LayoutRequest request;
+    LayoutRequest& request = request_;
     request.window = plan.size;
     request.gap = kViewGap;
     const ui::PanelState view = captureView(colorBy_, plan.overlays, options.uiScale.value_or(1.0f), options.present,
@@ -541,7 +543,30 @@ Capturer::Capturer(const CaptureOptions& options, const CapturePlan& plan,
     if (plan.camera && plan.camera->distance) camera_.distance = float(*plan.camera->distance);
 }
 
+// Side by side, a label gains a line when a value first wraps (C's "most in one step: 20
+// shock levels, 80 rounds" at 2 s, empty at 0): the labels are measured again at every
+// frame and the views laid out again, as the window does, the camera keeping its fit
+// of the box (the window's followViewShape; --camera's distance stays), so that no
+// label is cut.
+void Capturer::followLabels() {
+    if (!compare_) return;
+    compare_->sizeLabels(simulation_, request_);
+    const WindowLayout layout = layoutWindow(request_);
+    const float before = layout_.views.aspect(), after = layout.views.aspect();
+    const bool distanceGiven = plan_.camera && plan_.camera->distance;
+    if (after != before && !distanceGiven) {
+        glm::vec3 lo, hi;
+        sceneBounds(simulation_, lo, hi);
+        camera_.distance *= camera_.fitDistance(lo, hi, after) / camera_.fitDistance(lo, hi, before);
+    }
+    layout_ = layout;
+    view_ = layout_.views.views[0];
+    compare_->place(layout_);
+    if (ui_) ui_->place(layout_);
+}
+
 render::Image Capturer::drawFrame() {
+    followLabels();
     target_.bind();
     glClearColor(ui::kBackdropColor[0], ui::kBackdropColor[1], ui::kBackdropColor[2], 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -584,6 +609,7 @@ void Capturer::writeFrame(int index) {
             hashes.push_back(hashText(physics::stateHash(compare_->comparison().simulation(k).world())));
         }
         frames_.back()["compare_hashes"] = hashes;
+        frames_.back()["labels_cut"] = compare_->labelsCut();  // 0: every label's lines in its room
     }
 }
 

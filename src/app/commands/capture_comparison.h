@@ -40,6 +40,7 @@ public:
     void draw(render::Renderer& renderer, const render::Camera& camera, const ui::PanelState& view,
               const Simulation& primary);
     const std::vector<glm::vec4>& labelsDrawn() const { return labelsDrawn_; }  // px, top-left origin
+    int labelsCut() const { return labels_.cut(); }  // the last draw's labels taller than their room
 
     const Comparison& comparison() const { return comparison_; }
 

@@ -320,7 +320,8 @@ float labelsHeight(const std::vector<ViewLabel>& labels, float width) {
     return std::ceil(tallest);
 }
 
-void drawViewLabels(const std::vector<ViewLabel>& labels) {
+int drawViewLabels(const std::vector<ViewLabel>& labels) {
+    int cut = 0;
     for (std::size_t k = 0; k < labels.size(); ++k) {
         const ViewLabel& label = labels[k];
         ImGui::SetNextWindowPos(ImVec2(label.topLeft.x, label.topLeft.y), ImGuiCond_Always);
@@ -341,6 +342,10 @@ void drawViewLabels(const std::vector<ViewLabel>& labels) {
             ui::textWrappedAtSpaces(label.lines[n]);
             ImGui::PopStyleColor();
         }
+        // The lines' bottom and the padding under them, against the room the window got.
+        const ImGuiStyle& style = ImGui::GetStyle();
+        const float needed = ImGui::GetCursorPosY() - style.ItemSpacing.y + style.WindowPadding.y;  // units
+        cut += needed > ImGui::GetWindowHeight() + 0.5f;
         // The label takes no input (a drag across it turns the camera), but the pointer
         // resting on it explains its marks (ui::tooltipDue: not while a button is down, nor for
         // ever).
@@ -356,6 +361,7 @@ void drawViewLabels(const std::vector<ViewLabel>& labels) {
         }
         ImGui::End();
     }
+    return cut;
 }
 
 namespace {

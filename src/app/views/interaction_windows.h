@@ -125,7 +125,9 @@ glm::vec2 viewLabelSize(const ViewLabel& label);
 // a line to spare.
 float labelsWidth(const std::vector<ViewLabel>& labels);
 float labelsHeight(const std::vector<ViewLabel>& labels, float width);
-void drawViewLabels(const std::vector<ViewLabel>& labels);
+// Draws each label at its place, within its room; returns how many were cut (their lines
+// taller than the room).
+int drawViewLabels(const std::vector<ViewLabel>& labels);
 
 // All of the above for the session's state, where `layout` puts them: the timeline
 // bar, the inspector and the explainer of the selected sphere in the dock, the views'

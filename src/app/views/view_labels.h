@@ -38,10 +38,12 @@ public:
     // measure the previous frame), so that a frame does not depend on the ones before.
     // Returns what it drew (ui::drawnRectangles).
     std::vector<glm::vec4> draw(const std::vector<ViewLabel>& labels);
+    int cut() const { return cut_; }  // how many labels the last draw cut (lines taller than their room)
 
 private:
     struct Impl;
     std::unique_ptr<Impl> impl_;
+    int cut_ = 0;
 };
 
 }  // namespace app
