@@ -128,6 +128,42 @@ TEST(Rewind, TheMeasuredBouncesAndTheSlideFourteenMarksFollowTheTimeline) {
     EXPECT_EQ(cradle.impacts().total.struck, struck);
 }
 
+// The text's claims go on through the timeline: stepped back and run on at the same
+// settings, the steps come out as the claims saw them (checked by their hashes), and they
+// measure on from the newest, giving what a run never stepped back gives. A sphere moved
+// by hand in the replay stops them at the next step, as it does in a run going forward.
+TEST(Rewind, TheTextsClaimsMeasureOnThroughStepsBackAndStopWhenTheReplayDiffers) {
+    const auto runTo = [](app::Session& session, double time) {
+        while (session.run(0).world().time < time) session.singleStep();
+    };
+    app::Simulation straight(preset("02_bounce_projection"));
+    app::Session straightSession(straight);
+    runTo(straightSession, 3.0);
+
+    app::Simulation simulation(preset("02_bounce_projection"));
+    app::Session session(simulation);
+    runTo(session, 1.5);
+    session.scrubTo(session.timeline().cursor() / 3);  // back into the first fall
+    ASSERT_LT(simulation.world().time, 0.6);
+    runTo(session, 2.0);
+    session.scrubTo(session.timeline().cursor() - 20);  // and back again, past the newest step the claims saw
+    runTo(session, 3.0);
+    EXPECT_FALSE(simulation.claimsInterrupted());
+    const std::vector<scenes::ClaimCheck> measured = simulation.measuredClaims(), expected = straight.measuredClaims();
+    ASSERT_EQ(measured.size(), expected.size());
+    EXPECT_GE(measured.size(), 6u);
+    for (std::size_t k = 0; k < measured.size(); ++k) {
+        EXPECT_EQ(measured[k].measured, expected[k].measured) << measured[k].claim->says;
+        EXPECT_EQ(measured[k].samples, expected[k].samples) << measured[k].claim->says;
+    }
+
+    session.scrubTo(session.timeline().cursor() - 10);
+    simulation.editableWorld().velocity[0].z += 0.5;  // the ball thrown up by hand
+    session.singleStep();
+    EXPECT_TRUE(simulation.claimsInterrupted());
+    EXPECT_EQ(simulation.claimsWatched(), 0u);
+}
+
 TEST(Rewind, SteppingFromAnEarlierFrameDropsTheFramesAfterIt) {
     app::Simulation simulation(preset("03_head_on"));
     app::Session session(simulation);

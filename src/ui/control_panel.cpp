@@ -528,8 +528,9 @@ void measuredClaims(const Readouts& r, PanelState& state) {
     const bool open = ImGui::CollapsingHeader(header);
     tooltip("What the text above says, measured in this run since its start: each claim once its moment has "
             "passed (the lab sheet checks the same claims). Side by side, each view measures what the text says "
-            "of it (its letter first). A change by hand once the run has started (a slider, a sphere, the "
-            "timeline) stops the measurement until the next restart (R); a setting changed before the first step "
+            "of it (its letter first). A change by hand once the run has started (a slider, a sphere) "
+            "stops the measurement until the next restart (R); the timeline does not (the steps replayed come out "
+            "as they did, and are checked to); a setting changed before the first step "
             "measures the text's claims for that setting.");
     if (!open) return;
     state.claimsWereOpen = true;

@@ -48,7 +48,7 @@ void Simulation::startFrom(physics::World world) {
     settingsAtLastStep_.clear();
     settingsChange_ = {};
     claims_.observe(world_);
-    claimsState_ = claimsStartState_ = physics::stateHash(world_);
+    claimsStates_.assign(1, {world_.stepCount, physics::stateHash(world_)});
     claimsStartSteps_ = world_.stepCount;
     updateRecording();
     measureNow();
@@ -61,25 +61,41 @@ bool Simulation::claimsForOtherSettings() const {
     return claimed && claims_.empty() && !claimsInterrupted_;
 }
 
+const std::uint64_t* Simulation::claimsStateAt(std::uint64_t steps) const {
+    const auto at = std::lower_bound(claimsStates_.begin(), claimsStates_.end(), steps,
+                                     [](const std::pair<std::uint64_t, std::uint64_t>& seen, std::uint64_t s) { return seen.first < s; });
+    return at != claimsStates_.end() && at->first == steps ? &at->second : nullptr;
+}
+
+bool Simulation::claimsSawThisState(std::uint64_t state, const std::vector<double>& parameters) const {
+    if (parameters != claimsParameters_) return false;
+    const std::uint64_t* seen = claimsStateAt(world_.stepCount);
+    return seen && *seen == state;
+}
+
+void Simulation::stopClaims() {
+    claims_ = {};
+    claimsStates_.clear();
+    claimsInterrupted_ = true;
+}
+
 void Simulation::watchClaims() {
     const bool atStart = world_.stepCount == claimsStartSteps_;
     if (claims_.empty() && !atStart) return;  // nothing to stop, nothing to start: no hash of every sphere
     const std::uint64_t state = physics::stateHash(world_);
     std::vector<double> parameters = scenes::tableValues(scene_);
-    if (state == claimsState_ && parameters == claimsParameters_) return;
+    if (claimsSawThisState(state, parameters)) return;  // the newest step, or one the timeline went back to
     // Settings changed before the first step (a text's "switch response to lecture", done
     // at t = 0): that variant's claims are watched from the start, not stopped.
-    if (atStart && state == claimsStartState_) {
+    if (atStart && !claimsStates_.empty() && state == claimsStates_[0].second) {
         claims_ = scenes::LiveClaims(scene_);
         claimsInterrupted_ = false;
         claimsParameters_ = std::move(parameters);
         claims_.observe(world_);
-        claimsState_ = state;
+        claimsStates_.assign(1, {world_.stepCount, state});
         return;
     }
-    if (claims_.empty()) return;
-    claims_ = {};
-    claimsInterrupted_ = true;
+    if (!claims_.empty()) stopClaims();
 }
 
 const physics::ContactGraph& Simulation::contactGraph() const {
@@ -233,8 +249,15 @@ void Simulation::noteSettingsChange() {
 
 void Simulation::afterStep() {
     if (!claims_.empty()) {
-        claims_.observe(world_);
-        claimsState_ = physics::stateHash(world_);
+        // A new step is measured; a step the claims saw before the timeline went back must
+        // come out as it did then, else the run is not the one they measured.
+        const std::uint64_t state = physics::stateHash(world_);
+        if (world_.stepCount > claimsStates_.back().first) {
+            claims_.observe(world_);
+            claimsStates_.emplace_back(world_.stepCount, state);
+        } else if (const std::uint64_t* seen = claimsStateAt(world_.stepCount); !seen || *seen != state) {
+            stopClaims();
+        }
     }
     bounces_ += lastStats_.collisions;
     if (lastStats_.impacts.contacts > 0) {

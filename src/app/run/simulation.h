@@ -89,7 +89,8 @@ public:
 
     // The claims of the scene's text this run has measured so far (scenes::LiveClaims):
     // judged once their stretch of time has passed. None once the run was changed by
-    // hand (a parameter, a sphere, the timeline): claimsInterrupted() says so.
+    // hand (a parameter, a sphere): claimsInterrupted() says so. Stepping back on the
+    // timeline changes nothing the claims saw: the steps replayed come out the same.
     std::vector<scenes::ClaimCheck> measuredClaims() const { return claims_.judged(world_.time); }
     std::size_t claimsWatched() const { return claims_.size(); }  // judged or not yet
     double claimsLastMoment() const { return claims_.lastMoment(); }  // s: all judged from then on
@@ -161,13 +162,21 @@ private:
     std::size_t sizeBefore_ = 0;  // spheres before the running step
     double lastStepTime_ = 0.0;   // s, world time after the last step
     bool skipEnergyCheck_ = false;
-    // The claims measured as the run goes: the state and parameters they last saw, so that
-    // a change by hand between steps stops them.
+    // The claims measured as the run goes, and the states and parameters they saw, so that
+    // a change by hand between steps stops them. claimsStates_: (World::stepCount, state
+    // hash) after each step they measured, the world as restarted first. A rewind keeps
+    // them: the same settings replay the same steps, checked against these hashes, and the
+    // claims measure again from the newest step they saw (any other state, or settings,
+    // stops them).
     scenes::LiveClaims claims_;
-    std::uint64_t claimsState_ = 0;
-    std::uint64_t claimsStartState_ = 0, claimsStartSteps_ = 0;  // the world as restarted
+    std::vector<std::pair<std::uint64_t, std::uint64_t>> claimsStates_;
+    std::uint64_t claimsStartSteps_ = 0;
     std::vector<double> claimsParameters_;
     bool claimsInterrupted_ = false;
+    // Whether the world now is a state the claims saw, at the settings they saw.
+    bool claimsSawThisState(std::uint64_t state, const std::vector<double>& parameters) const;
+    const std::uint64_t* claimsStateAt(std::uint64_t steps) const;  // the hash they saw then, or null
+    void stopClaims();
     // The live settings at the last step, and the last change of them since the restart:
     // the energy alarm's why when the new settings lift what the old ones let sink.
     std::vector<double> settingsAtLastStep_;
