@@ -209,13 +209,14 @@ class Sweep {
         pressed.resize(count);
     }
 
-    // Whether the pair overlaps by more than `fraction` of the smaller radius (its depth as
-    // touching() finds it, without the normal; apart, the depth is below 0).
+    // Whether the pair overlaps by more than `fraction` of the smaller radius: whether its
+    // centres are closer than reach - fraction r, compared squared (no square root, no
+    // division: this runs on every contact the pushes may have pressed).
     bool pressedDeeper(const SpherePair& pair, double fraction = kSettledOverlap) const {
         const glm::dvec3 delta = world_.position[pair.i] - world_.position[pair.j];
-        const double reach = world_.radius[pair.i] + world_.radius[pair.j];  // m
-        const double depth = reach - std::sqrt(glm::dot(delta, delta));     // m
-        return depth / std::min(world_.radius[pair.i], world_.radius[pair.j]) > fraction;
+        const double ri = world_.radius[pair.i], rj = world_.radius[pair.j];  // m
+        const double closest = ri + rj - fraction * std::min(ri, rj);          // m, > 0
+        return glm::dot(delta, delta) < closest * closest;
     }
 
     // Both spheres in the level: the passes' own response (static contacts) and split.
