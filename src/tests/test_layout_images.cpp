@@ -127,18 +127,24 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"present_three_answers_1920x1080", "14_three_answers", "1920x1080", 1.0f, true}),
     [](const ::testing::TestParamInfo<Case>& tested) { return tested.param.name; });
 
-// The panel's width in a presentation capture (the widest box drawn from the left edge), as a
-// share of the image's.
-float presentedPanelShare(const std::string& size, float uiScale) {
-    const std::string out = capture_test::freshFolder("present_share_" + size);
+// Frame 0 of `scene` in the presentation layout with its panel, `size` px, into `out`.
+app::CaptureOptions presentedFrameZero(const std::string& scene, const std::string& out, const std::string& size) {
     app::CaptureOptions options;
-    options.scene = "14_three_answers";
+    options.scene = scene;
     options.out = out;
     options.size = size;
     options.at = "0";
     options.withUi = true;
-    options.uiScale = uiScale;
     options.present = true;
+    return options;
+}
+
+// The panel's width in a presentation capture (the widest box drawn from the left edge), as a
+// share of the image's.
+float presentedPanelShare(const std::string& size, float uiScale) {
+    const std::string out = capture_test::freshFolder("present_share_" + size);
+    app::CaptureOptions options = presentedFrameZero("14_three_answers", out, size);
+    options.uiScale = uiScale;
     if (app::runCapture(options) != 0) return -1.0f;
     const nlohmann::json manifest = capture_test::readManifest(out);
     float widest = 0.0f;
@@ -163,6 +169,29 @@ TEST_F(LayoutImages, ThePresentationsTypeGrowsWithTheScreensHeight) {
     EXPECT_FLOAT_EQ(ui::presentedScale(1.0f, 600.0f), ui::kPresentScale) << "never below the 720 lines' type";
 }
 
+// The presented panel keeps the sliders the text names in sight while they leave the text
+// at least 38 % of the panel, and where all would not, the first that fit: 02's long text
+// (β, ε, h, the substeps and the method) had taken the whole panel at 1280x720 and at
+// 1024x768, its sliders scrolled under it, and a teacher saying "move β" had none to show.
+// Counted as the sliders' frames (ImGui's frame colour, 29 47 73) down the panel's left side.
+TEST_F(LayoutImages, ThePresentedSlidersStayInSightUnderALongText) {
+    const std::pair<const char*, int> sizes[] = {{"1280x720", 5}, {"1024x768", 3}};  // all five; β, ε and h
+    for (const auto& [size, least] : sizes) {
+        const std::string out = capture_test::freshFolder(std::string("present_sliders_") + size);
+        ASSERT_EQ(app::runCapture(presentedFrameZero("02_bounce_projection", out, size)), 0);
+        const render::Image image = capture_test::readFrame(out, 0);
+        int frames = 0;
+        bool inFrame = false;
+        for (int y = 0; y < image.height; ++y) {
+            const glm::u8vec4 c = image.pixel(60, y);
+            const bool frame = std::abs(c.x - 29) < 8 && std::abs(c.y - 47) < 8 && std::abs(c.z - 73) < 8;
+            frames += frame && !inFrame;
+            inFrame = frame;
+        }
+        EXPECT_GE(frames, least) << size;
+    }
+}
+
 // The radius (px) sphere `centre`, `radius` m, is drawn with in a view `viewSize` px.
 float drawnRadius(const render::Camera& camera, glm::vec3 centre, float radius, glm::vec2 viewSize) {
     const glm::vec3 right = glm::normalize(glm::cross(camera.forward(), glm::vec3(0.0f, 0.0f, 1.0f)));
@@ -182,14 +211,7 @@ TEST_F(LayoutImages, APresetThatFramesItsSpheresDrawsThemLargeAndKeepsThemInView
     const std::pair<const char*, float> presets[] = {{"16_bernoulli", 12.0f}, {"19_symmetric_break", 7.0f}};  // px, the least
     for (const auto& [preset, leastRadius] : presets) {
         const std::string out = capture_test::freshFolder(std::string("present_framed_1280x720_") + preset);
-        app::CaptureOptions options;
-        options.scene = preset;
-        options.out = out;
-        options.size = "1280x720";
-        options.at = "0";
-        options.withUi = true;
-        options.present = true;
-        ASSERT_EQ(app::runCapture(options), 0);
+        ASSERT_EQ(app::runCapture(presentedFrameZero(preset, out, "1280x720")), 0);
         const nlohmann::json manifest = capture_test::readManifest(out);
         const render::Camera camera = capture_test::cameraOf(manifest);
         scenes::Scene scene = scenes::loadScene(scenes::presetPath(preset));

@@ -677,22 +677,29 @@ void presentedPanel(const scenes::Scene& scene, const Readouts& readouts, const 
     }
     const bool labelsAbove = labelsAboveSliders(sliders);
     UnderText under = underPresentedText(sliders, scene, state, readouts, alarms);
-    // The sliders stay in sight under the text while they leave it at least half the panel;
-    // else (five sliders with their labels above at 1024x768 left it two lines) they scroll
-    // with it, under it.
+    // The sliders stay in sight under the text while they leave it at least 38 % of the panel
+    // (9 lines at 1280x720: it scrolls; at half, 02's text took the whole panel and hid the
+    // β it tells the class to move). Where all of them would take more, the first ones the
+    // text names that fit stay (02's β and ε at 1024x768), and the rest scroll with the text,
+    // under it (five sliders with their labels above at 1024x768 left it two lines).
+    const float most = 0.62f * ImGui::GetContentRegionAvail().y;  // px
+    const float restitutionHeight = under.restitutionHeight;
+    std::size_t inSight = sliders.size();
     float below = heightUnderText(sliders, state, labelsAbove, under);
-    const bool slidersScroll = below > 0.5f * ImGui::GetContentRegionAvail().y;
-    if (slidersScroll) {
-        under.restitutionHeight = 0.0f;  // under β, with it
-        below = heightUnderText({}, state, labelsAbove, under);
+    while (inSight > 0 && below > most) {
+        --inSight;
+        const std::vector<const scenes::Parameter*> first(sliders.begin(), sliders.begin() + std::ptrdiff_t(inSight));
+        under.restitutionHeight = showsBeta(first) ? restitutionHeight : 0.0f;  // under β, with it
+        below = heightUnderText(first, state, labelsAbove, under);
     }
-    const auto drawSliders = [&] {
+    const bool restitutionInSight = inSight == sliders.size() || showsBeta({sliders.begin(), sliders.begin() + std::ptrdiff_t(inSight)});
+    const auto drawSliders = [&](std::size_t begin, std::size_t end, bool restitutionAfter) {
         pushItemWidth();
-        for (const scenes::Parameter* p : sliders) {
-            parameterWidget(*p, scene, state, actions, labelsAbove, false);  // "view A only" once, under them
-            if (p->name == "beta") measuredRestitution(readouts);  // 02's "comes back to about β²"
+        for (std::size_t k = begin; k < end; ++k) {
+            parameterWidget(*sliders[k], scene, state, actions, labelsAbove, false);  // "view A only" once, under them
+            if (sliders[k]->name == "beta") measuredRestitution(readouts);  // 02's "comes back to about β²"
         }
-        if (!showsBeta(sliders) && showsRestitution(sliders, scene, readouts)) measuredRestitution(readouts);
+        if (restitutionAfter && !showsBeta(sliders) && showsRestitution(sliders, scene, readouts)) measuredRestitution(readouts);
         ImGui::PopItemWidth();
     };
     // The fold between two of the text's lines, never through one (a class saw the last line
@@ -705,14 +712,14 @@ void presentedPanel(const scenes::Scene& scene, const Readouts& readouts, const 
     scrollToTopIfAsked(state);
     sceneText(scene);
     measuredClaims(readouts, state);
-    if (slidersScroll) {
+    if (inSight < sliders.size()) {
         ImGui::Separator();
-        drawSliders();
+        drawSliders(inSight, sliders.size(), !restitutionInSight);
     }
     ImGui::EndChild();
     ImGui::SetCursorPosY(ImGui::GetCursorPosY() + cut);  // the keys stay at the bottom (a Dummy adds a spacing)
     ImGui::Separator();
-    if (!slidersScroll) drawSliders();
+    drawSliders(0, inSight, restitutionInSight);
     // The numbers the texts point at and the run's state in the body's white: grey washes out
     // on a projector (a teacher measured them at 4.8:1 against 21:1 for the text).
     const ImVec4 white = ImGui::GetStyleColorVec4(ImGuiCol_Text), grey = ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled);
