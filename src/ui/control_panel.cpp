@@ -584,7 +584,7 @@ struct UnderText {
     std::string status;               // "t = 3.450 s, paused (P runs, O steps)"
     std::vector<std::string> alarms;  // the lit alarms' headlines
     float restitutionHeight = 0.0f;   // under β, its measured apex ratios (measuredRestitution)
-    const char* keys = "Esc: all controls  P: pause  R: restart  [ ]: preset";
+    const char* keys = "Esc: all controls  P: pause  R: restart  [ ]: preset  Tab: views only";
 };
 
 float heightUnderText(const std::vector<const scenes::Parameter*>& sliders, const PanelState& state,
