@@ -117,6 +117,11 @@ TEST(ContactExplanation, ElasticEqualMassesSwapTheirNormalSpeeds) {
     EXPECT_NEAR(e.impulse, 3.0, 1e-12);  // 2/(1 + 1) * 3
     expectVector(e.predicted[0], {2.0, 0.5, 0.0});   // v1par + v2perp
     expectVector(e.predicted[1], {-1.0, 0.0, 0.0});  // v2par + v1perp
+    // Elastic: the pair's kinetic energy, ½ (2² + 0.5²) + ½ 1² = 2.625 J, is kept.
+    event.velocityAfter[0] = e.predicted[0];
+    event.velocityAfter[1] = e.predicted[1];
+    EXPECT_TRUE(hasLine(app::explanationLines(app::explainContact(event, params), params, 6),
+                        "before 2.625 J, after 2.625 J: kept"));
 }
 
 TEST(ContactExplanation, FloorBounceMatchesTheHandComputation) {
@@ -152,6 +157,10 @@ TEST(ContactExplanation, FloorBounceMatchesTheHandComputation) {
     EXPECT_TRUE(hasLine(lines, "Sphere #4 and the floor"));
     EXPECT_TRUE(hasLine(lines, "v ← 0.9 × (0.300, 0.000, 0.000) − 0.5 × -2.000 n = (0.270, 0.000, 1.000)"));
     EXPECT_TRUE(hasLine(lines, "d = r − (p − a)·n = 0.004 m"));
+    // ½ 2 (0.3² + 2²) = 4.09 J before, ½ 2 (0.27² + 1²) = 1.0729 J after: β² of the normal
+    // part (4 J -> 1 J) and α² of the tangential one (0.09 J -> 0.0729 J).
+    EXPECT_TRUE(hasLine(lines, "before 4.09 J, after 1.073 J: 3.017 J lost (73.8 %)"));
+    EXPECT_TRUE(hasLine(lines, "slide 4 keeps β² = 0.25 of ½ m v⊥² and α² = 0.81 of ½ m v∥²"));
     // Velocity based: no projection.
     params.method = physics::Method::VelocityBased;
     EXPECT_EQ(app::explainContact(event, params).correction, app::PositionCorrection::None);

@@ -188,6 +188,29 @@ void matchLine(std::vector<Line>& lines, const ContactExplanation& e, const phys
     }
 }
 
+// The kinetic energy before and after this answer (the velocities logged): a bounce keeps
+// β² of the normal part and α² of the tangential one (slide 4), friction μ² (slide 13). A
+// plane, and a frozen sphere of the shock sweep, take none.
+void energyLines(std::vector<Line>& lines, const ContactExplanation& e, const physics::Params& p) {
+    const bool both = !e.plane && std::isfinite(e.mass[1]);
+    double before = 0.0, after = 0.0;  // J
+    for (int k = 0; k < (both ? 2 : 1); ++k) {
+        before += 0.5 * e.mass[k] * glm::dot(e.velocityBefore[k], e.velocityBefore[k]);
+        after += 0.5 * e.mass[k] * glm::dot(e.velocityAfter[k], e.velocityAfter[k]);
+    }
+    add(lines, Line::Kind::Heading, both ? "Kinetic energy, ½ m₁ |v₁|² + ½ m₂ |v₂|²" : "Kinetic energy, ½ m |v|²");
+    std::string change = "kept";
+    if (std::abs(after - before) > 1e-9 * std::max(before, 1e-12)) {
+        change = format("%.4g J %s (%.3g %%)", std::abs(after - before), after < before ? "lost" : "gained",
+                        100.0 * std::abs(after - before) / std::max(before, 1e-300));
+    }
+    add(lines, Line::Kind::Formula, format("before %.4g J, after %.4g J: %s", before, after, change.c_str()));
+    if (e.plane && !e.staticContact) {
+        add(lines, Line::Kind::Formula,
+            format("slide 4 keeps β² = %.3g of ½ m v⊥² and α² = %.3g of ½ m v∥²", p.beta * p.beta, p.alpha * p.alpha));
+    }
+}
+
 void planeLines(const ContactExplanation& e, const physics::Params& p, int boxPlaneCount, std::vector<Line>& lines) {
     add(lines, Line::Kind::Heading,
         format("Sphere #%u and the %s, %s", e.sphere, planeName(e.other, boxPlaneCount).c_str(),
@@ -218,6 +241,7 @@ void planeLines(const ContactExplanation& e, const physics::Params& p, int boxPl
     }
     add(lines, Line::Kind::Formula, "after:   " + splitText("v", e.after[0], "n"));
     matchLine(lines, e, p);
+    energyLines(lines, e, p);
     add(lines, Line::Kind::Heading, "Position correction");
     if (e.correction == PositionCorrection::Projection && e.reflected) {
         add(lines, Line::Kind::Formula,
@@ -299,6 +323,7 @@ void pairLines(const ContactExplanation& e, const physics::Params& p, std::vecto
     add(lines, Line::Kind::Formula, "after:   " + splitText("v₁", e.after[0], "u"));
     add(lines, Line::Kind::Formula, "         " + splitText("v₂", e.after[1], "u"));
     matchLine(lines, e, p);
+    energyLines(lines, e, p);
     add(lines, Line::Kind::Heading,
         e.reflected ? "Slide 7, reflection: position correction by (1 + β) d" : "Slide 13, step 3: position correction");
     if (e.reflected) {
