@@ -40,13 +40,14 @@ constexpr double kEnergyTolerance = 1e-3;
 // sphere sunk through half its radius, or one that tunnelled, is beyond any of them.
 constexpr double kPenetrationTolerance = 0.5;
 // Spheres held in mid-air, as a share of all, from which it is an alarm (and at least
-// kHeldInMidAirMin): the position-based pile holds 0-2 of 1000 for a moment as it lands,
-// the velocity-based one about 300 for good.
-constexpr double kHeldInMidAirShare = 0.01;
+// kHeldInMidAirMin): the position-based pile holds up to 39 of 1000 for a moment as it
+// lands (counted at every step), the velocity-based one about 300 for good. At 1 % the
+// page's coarser frames lit it on the landing position based pile.
+constexpr double kHeldInMidAirShare = 0.1;
 constexpr std::size_t kHeldInMidAirMin = 3;
 // s of simulated time between two counts of the spheres held in mid-air (a broad phase),
 // and how long the count must stay at the alarm's level: a landing pile holds a few for
-// a moment (the position-based pile up to 24 of 1000, the rain up to 5).
+// a moment (the position-based pile up to 39 of 1000, the rain up to 5).
 constexpr double kHeldInMidAirPeriod = 0.25;
 constexpr double kHeldInMidAirFor = 1.0;
 // s of simulated time an alarm stays lit (red) after it last fired; then it is
