@@ -3,6 +3,7 @@
 // one by one or generated), the solver parameters and a seed. buildWorld turns
 // it into the physics::World the solver advances. Units: SI (m, s, kg), z up.
 #include <cstdint>
+#include <iterator>
 #include <glm/vec3.hpp>
 #include <optional>
 #include <stdexcept>
@@ -102,6 +103,15 @@ struct Region {
 // The spheres' colourings by name, in render::ColorBy's order (a scene's "color_by", the
 // page's links, capture's --color-by).
 constexpr const char* kColorByNames[] = {"id", "speed", "contact", "penetration"};
+// What each colouring's colours mean, in one line, in the same order (render/palette.cpp
+// draws them; the speed scale tops at snapshotSpheres' 3 m/s): under the window's readouts
+// and the page's "Colour by". "" for id, where each sphere simply has its own.
+constexpr const char* kColorByLegends[] = {
+    "",
+    "speed: dark purple at rest, green 1.5 m/s, yellow 3 m/s and faster",
+    "blue free, orange a bounce (faster than \u03b5), green a static contact (slide 13)",
+    "each sphere's deepest overlap: dark \u2264 0.01 %, blue 0.1 %, green 1 %, yellow \u2265 10 % of r"};
+static_assert(std::size(kColorByLegends) == std::size(kColorByNames));
 
 // The time scale's range (the window's slider, a scene's "time_scale").
 constexpr double kTimeScaleRange[2] = {0.01, 4.0};

@@ -134,6 +134,11 @@ TEST(ImpactReport, TheContinuousMethodSaysItsContactsAreNotMeasured) {
         EXPECT_EQ(v.verdict, Verdict::Untested) << v.name;
         EXPECT_EQ(v.value, "not measured under the continuous method") << v.name;
     }
+    // A view's label under the continuous method with no mirror plane: not "none tested yet",
+    // which a student read still at 13 s.
+    EXPECT_EQ(app::propertiesMarks(app::judgeProperties(record, {}, continuous)),
+              "properties: not measured under the continuous method");
+    EXPECT_EQ(app::propertiesMarks(app::judgeProperties(app::ImpactRecord{}, {}, elastic())), "properties: none tested yet");
 }
 
 // The readouts show the five properties under the continuous method too, each saying it is

@@ -19,14 +19,14 @@
 namespace ui {
 namespace {
 
-// What the colours mean where they are not obvious: the penetration colouring's scale
-// (render::penetrationColor), under the readouts and the presented sliders.
-std::string colourLegend(const PanelState& state) {
-    const bool penetration = state.colorBy >= 0 && state.colorBy < int(std::size(scenes::kColorByNames)) &&
-                             std::string_view(scenes::kColorByNames[state.colorBy]) == "penetration";
-    return penetration ? "colours: each sphere's deepest overlap, dark \u2264 0.01 %, blue 0.1 %, green 1 %, "
-                         "yellow \u2265 10 % of r"
-                       : "";
+// What the colours mean (scenes::kColorByLegends), under the readouts; presented, under the
+// sliders for the penetration colouring alone (the texts say what green and orange mean
+// where it matters, and the projector's panel has no line to spare).
+std::string colourLegend(const PanelState& state, bool presented) {
+    if (state.colorBy < 0 || state.colorBy >= int(std::size(scenes::kColorByNames))) return "";
+    const bool penetration = std::string_view(scenes::kColorByNames[state.colorBy]) == "penetration";
+    const std::string legend = scenes::kColorByLegends[state.colorBy];
+    return legend.empty() || (presented && !penetration) ? "" : "colours: " + legend;
 }
 
 // Under a slider side by side: the other views keep the value their overrides give them.
@@ -358,7 +358,7 @@ void readoutsBody(const Readouts& r, const PanelState& state, PanelActions& acti
         ImGui::TextDisabled("FPS and timings: not measured here");  // capture: equal runs, equal images
     }
     // The overlays' scales and the colours first: they explain what is drawn.
-    const std::string colours = colourLegend(state);
+    const std::string colours = colourLegend(state, false);
     if (!r.legend.empty() || !colours.empty()) {
         for (const Readouts::LegendLine& line : r.legend) {
             wrappedColored(ImVec4(line.color[0], line.color[1], line.color[2], line.color[3]), line.text);
@@ -446,7 +446,8 @@ void viewSection(PanelState& state, PanelActions& actions) {
     tooltip("Contact state: blue free, orange colliding (bounce), green static contact (speed at or below epsilon). "
             "Penetration: each sphere's deepest overlap with a sphere or a wall, over the radius, on a log scale from "
             "0.01 % of r (dark purple, or none) through 0.1 % and 1 % (green) to 10 % (yellow): how far a stack has "
-            "sunk into itself, visible where the views look alike.");
+            "sunk into itself, visible where the views look alike. Speed: dark purple at rest to yellow at 3 m/s and "
+            "faster. The readouts say what the colours mean.");
     ImGui::Checkbox("box", &state.showBox);
     ImGui::SameLine();
     ImGui::Checkbox("floor grid", &state.showGrid);
@@ -624,7 +625,7 @@ UnderText underPresentedText(const std::vector<const scenes::Parameter*>& slider
         return std::find(state.onlyViewA.begin(), state.onlyViewA.end(), p->name) != state.onlyViewA.end();
     });
     if (viewA) under.notes.push_back(kOnlyViewA);
-    if (const std::string colours = colourLegend(state); !colours.empty()) under.notes.push_back(colours);
+    if (const std::string colours = colourLegend(state, true); !colours.empty()) under.notes.push_back(colours);
     if (showsRestitution(sliders, scene, r)) {
         // "β² = 0.640   measured ≈ ..." on a line, or "β² = 0.640" and its note wrapped under it
         const float wrap = ImGui::GetContentRegionAvail().x;

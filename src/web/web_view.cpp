@@ -150,14 +150,17 @@ void selectSphere(LiveView& v, int index) {
 // Side by side's views: {"views": [{"lines": [label, readouts...], "presented": [label, E~,
 // penetration]}, "compact": [label, E~ and penetration, marks]}, ...]} (none when off;
 // "presented": the presentation layout's, as F5; "compact": four views in two rows, where
-// the full lines were cut off).
+// the full lines were cut off; "properties": what its marks say, as the window's label tooltip).
 Json viewsOf(const LiveView& v) {
     Json views = Json::array();
     if (!v.session->comparison()) return views;
-    for (const app::ViewReadout& view : app::viewReadouts(v.session->run(0), *v.session->comparison())) {
+    const app::Comparison& comparison = *v.session->comparison();
+    const std::vector<std::string> tips = app::propertiesTooltips(v.session->run(0), comparison);
+    for (const app::ViewReadout& view : app::viewReadouts(v.session->run(0), comparison)) {
         views.push_back({{"lines", app::viewReadoutLines(view)},
                          {"presented", app::presentedLines(view)},
-                         {"compact", app::compactLines(view)}});
+                         {"compact", app::compactLines(view)},
+                         {"properties", tips[views.size()]}});
     }
     return views;
 }
@@ -452,6 +455,13 @@ EMSCRIPTEN_KEEPALIVE void spheres_explain(int step) {
 // The mouse: drag to orbit (px), wheel to zoom (steps, positive closer).
 EMSCRIPTEN_KEEPALIVE void spheres_orbit(float dx, float dy) { live().camera.orbit(dx, dy); }
 EMSCRIPTEN_KEEPALIVE void spheres_zoom(float steps) { live().camera.zoom(steps); }
+// The camera as the scene opened it, for a canvas of width x height px (the desktop's C).
+EMSCRIPTEN_KEEPALIVE void spheres_reset_camera(int width, int height) {
+    LiveView& v = live();
+    if (!v.session) return;
+    const Cell first = cellOf(0, v.session->runCount(), width, height);
+    fitCamera(first.width, first.height);
+}
 
 // Pause or run; one time step h (every run, paused or not); restart from the scene's
 // initial state.
@@ -580,7 +590,7 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_overlays() {
 // (side by side: the parameters every other view sets, Comparison::setInEveryView), "selected"
 // (selectedOf), "timeline" (timelineOf), "claims" (claimsOf), "suggested_compare" (what the
 // side-by-side field offers, app::suggestedOverrides), "alarms" (alarmsOf), "look":
-// {"color_by", "overlays"}}.
+// {"color_by", "legend" (what its colours mean), "overlays"}}.
 EMSCRIPTEN_KEEPALIVE const char* spheres_state() {
     LiveView& v = live();
     if (!v.simulation || !v.session) return answer(Json::object());
@@ -608,6 +618,7 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_state() {
                    {"suggested_compare", app::suggestedOverrides(v.simulation->scene())},
                    {"alarms", alarmsOf(*v.simulation)},
                    {"look", {{"color_by", kColorings[v.look.colorBy]},
+                             {"legend", scenes::kColorByLegends[v.look.colorBy]},
                              {"overlays", app::overlayNames(app::overlayFlags(v.look))}}}});
 }
 

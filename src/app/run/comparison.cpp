@@ -127,6 +127,7 @@ std::string brokenProperties(const std::string& marks) {
         names += (names.empty() ? "" : ", ") + marks.substr(name, end - name);
     }
     if (!names.empty()) return "\u2717 " + names;
+    if (marks.find("not measured") != std::string::npos) return "\u2013 not measured (continuous)";
     return marks.find("\u2713") != std::string::npos ? "\u2713 nothing broken" : "\u2013 none tested yet";
 }
 

@@ -7,6 +7,9 @@
 #include <glm/geometric.hpp>
 
 namespace app {
+
+// A property's value where the continuous method leaves it unmeasured.
+constexpr const char* kNotMeasuredUnderContinuous = "not measured under the continuous method";
 namespace {
 
 // Relative (momentum, energy) and absolute (m/s, m) slack of a kept property: rounding.
@@ -130,7 +133,7 @@ std::vector<PropertyVerdict> judgeProperties(const ImpactRecord& record,
         for (PropertyVerdict& v : verdicts) {
             if (v.name == "symmetry") continue;
             v.verdict = Verdict::Untested;
-            v.value = "not measured under the continuous method";
+            v.value = kNotMeasuredUnderContinuous;
         }
     }
     return verdicts;
@@ -154,9 +157,13 @@ std::string propertiesLine(const std::vector<PropertyVerdict>& verdicts) {
 }
 
 std::string propertiesMarks(const std::vector<PropertyVerdict>& verdicts) {
-    // Five dashes said nothing to a student: one line while no impact has tested any of them.
+    // Five dashes said nothing to a student: one line while no impact has tested any of them
+    // ("yet" under the continuous method, whose contacts they are not measured on, was false
+    // for a whole run).
     if (std::all_of(verdicts.begin(), verdicts.end(), [](const PropertyVerdict& v) { return v.verdict == Verdict::Untested; })) {
-        return "properties: none tested yet";
+        const bool continuous = std::any_of(verdicts.begin(), verdicts.end(),
+                                            [](const PropertyVerdict& v) { return v.value == kNotMeasuredUnderContinuous; });
+        return continuous ? "properties: not measured under the continuous method" : "properties: none tested yet";
     }
     std::string line;
     for (std::size_t k = 0; k < verdicts.size(); ++k) {

@@ -300,6 +300,32 @@ try {
   const emptied = await js("({ refusal: document.getElementById('refusal').textContent, said: document.getElementById('compare-said').textContent, views: document.getElementById('labels').children.length })");
   check('an emptied side-by-side field says what to write, the views stay', emptied.refusal.startsWith('Cannot compare: give at least one') &&
         emptied.said === '' && emptied.views === 2, JSON.stringify(emptied));
+  const marks = await js("({ shown: !document.getElementById('marks-help').hidden, text: document.getElementById('marks-text').textContent })");
+  check('side by side, the page says what the labels\' marks mean', marks.shown && marks.text.startsWith("Smith et al.'s five properties") &&
+        marks.text.includes('positivity'), JSON.stringify(marks).slice(0, 120));
+  // R with the pair order's list focused (its name clicked) restarts and changes no setting:
+  // the list's type-ahead had picked "reversed".
+  const order = () => js("JSON.parse(call('spheres_parameters', 'string', [], [])).find((p) => p.name === 'order').value");
+  const orderBefore = await order();
+  await js("document.querySelector('#controls label[data-name=order] select').focus()");
+  await send('Input.dispatchKeyEvent', { type: 'keyDown', key: 'r', code: 'KeyR', windowsVirtualKeyCode: 82, text: 'r' });  // typed: a list's type-ahead reads it
+  await send('Input.dispatchKeyEvent', { type: 'keyUp', key: 'r', code: 'KeyR', windowsVirtualKeyCode: 82 });
+  await sleep(300);
+  check('R with the pair order\'s list focused changes no setting', (await order()) === orderBefore &&
+        (await js("document.activeElement.tagName")) === 'SELECT', 'order ' + orderBefore + ' -> ' + (await order()));
+  // A refused value is said under its own field, in sight (K = 0 was said 166 px above the view of the panel).
+  await js(`(() => { const f = document.querySelector('#controls label[data-name=passes] input.typed');
+                     f.scrollIntoView(); f.value = '0'; f.dispatchEvent(new Event('change')); })()`);
+  const refusedK = await js(`(() => { const r = document.getElementById('refusal'), box = r.getBoundingClientRect();
+    return { text: r.textContent, under: r.previousElementSibling && r.previousElementSibling.dataset.name,
+             inSight: box.top >= 0 && box.bottom <= innerHeight }; })()`);
+  check('K = 0 typed: refused under its field, in sight', refusedK.text.startsWith('passes = 0') && refusedK.under === 'passes' &&
+        refusedK.inSight, JSON.stringify(refusedK));
+  // h typed as the texts write it.
+  await js(`(() => { const f = document.querySelector('#controls label[data-name=h] input.typed');
+                     f.value = '1/240'; f.dispatchEvent(new Event('change')); })()`);
+  const h240 = await js("JSON.parse(call('spheres_parameters', 'string', [], [])).find((p) => p.name === 'h').value");
+  check('h typed 1/240 is 1/240 s', Math.abs(h240 - 1 / 240) < 1e-15 && (await text('refusal')) === '', 'h = ' + h240);
   // Slide 14's column side by side: every other view sets K and shock, so their sliders say they move view A only.
   await navigate('scene=21_shock_column&present');
   await until((s) => s.time_s > 0, 30000);
@@ -311,6 +337,11 @@ try {
   const opened = await until((s) => s.spheres === 3, 30000);
   check('16 opens paused at its start, in slow motion', opened.paused === true && opened.time_s === 0 &&
         (await text('time-scale-shown')) === '0.25 x', JSON.stringify(opened));
+  await sleep(300);  // a frame draws the state
+  const note = await js("({ shown: !document.getElementById('paused-note').hidden, text: document.getElementById('paused-note').textContent })");
+  check('paused, the view says so and how to go on', note.shown && note.text.startsWith('Paused at t = 0.000 s: Run (P)'), JSON.stringify(note));
+  const legend = await text('colour-legend');
+  check('the colouring says what its colours mean', legend.startsWith('blue free, orange a bounce'), legend);
   await navigate('scene=16_bernoulli&present');
   await until((s) => s.spheres === 3, 30000);
   await sleep(300);  // a frame draws the state
