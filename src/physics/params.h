@@ -9,7 +9,7 @@
 
 namespace physics {
 
-// Second deck, "Summary with multiple particles".
+// The simulation models deck, "Summary with multiple particles".
 enum class Method {
     PositionBased,  // "position projection": velocity + position response, walls last
     VelocityBased,  // "velocity correction": velocity response, cancel penetrating velocity

@@ -32,12 +32,12 @@ constexpr std::int64_t kMostSteps = 1000000;  // a page asks for a run, not a da
 
 extern "C" {
 
-// [{"name": "01_bounce_response_only", "title": "..."}, ...]
+// [{"name": "01_bounce_response_only", "title": "...", "slide": "Rigid spheres 5–6/14: ..."}, ...]
 EMSCRIPTEN_KEEPALIVE const char* spheres_presets() {
     Json list = Json::array();
     for (const std::string& name : scenes::listPresets()) {
         const scenes::Scene scene = scenes::loadScene(scenes::presetPath(name));
-        list.push_back({{"name", name}, {"title", scenes::withCount(scene.title, scene)}});
+        list.push_back({{"name", name}, {"title", scenes::withCount(scene.title, scene)}, {"slide", scene.slide}});
     }
     return answer(list);
 }
