@@ -108,7 +108,7 @@ constexpr const char* kColorByNames[] = {"id", "speed", "contact", "penetration"
 // and the page's "Colour by". "" for id, where each sphere simply has its own.
 constexpr const char* kColorByLegends[] = {
     "",
-    "speed: dark purple at rest, green 1.5 m/s, yellow 3 m/s and faster",
+    "dark purple at rest, teal 1.5 m/s, yellow 3 m/s and faster",
     "blue free, orange a bounce (faster than \u03b5), green a static contact (slide 13)",
     "each sphere's deepest overlap: dark \u2264 0.01 %, blue 0.1 %, green 1 %, yellow \u2265 10 % of r"};
 static_assert(std::size(kColorByLegends) == std::size(kColorByNames));

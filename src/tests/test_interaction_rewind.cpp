@@ -162,6 +162,12 @@ TEST(Rewind, TheTextsClaimsMeasureOnThroughStepsBackAndStopWhenTheReplayDiffers)
     session.singleStep();
     EXPECT_TRUE(simulation.claimsInterrupted());
     EXPECT_EQ(simulation.claimsWatched(), 0u);
+    // Back at the start, run on: the claims are watched again, as a restart would watch them.
+    session.scrubTo(0);
+    ASSERT_EQ(simulation.world().stepCount, 0u);
+    session.singleStep();
+    EXPECT_FALSE(simulation.claimsInterrupted());
+    EXPECT_EQ(simulation.claimsWatched(), straight.claimsWatched());
 }
 
 TEST(Rewind, SteppingFromAnEarlierFrameDropsTheFramesAfterIt) {

@@ -453,6 +453,7 @@ class Capturer {
 
   private:
     render::Image drawFrame();
+    void place(const WindowLayout& layout);
     void followLabels();
     void writeFrame(int index);
     const Comparison* comparedRuns() const { return compare_ ? &compare_->comparison() : nullptr; }
@@ -504,7 +505,7 @@ Capturer::Capturer(const CaptureOptions& options, const CapturePlan& plan,
     // Contacts and trails are recorded from the first step on, as in a window whose
     // overlays were switched on before the run.
     simulation_.setOverlayFlags(plan.overlays);
-    LayoutRequest& request = request_;
+    LayoutRequest& request = request_;  // kept: the labels are measured again at every frame
     request.window = plan.size;
     request.gap = kViewGap;
     const ui::PanelState view = captureView(colorBy_, plan.overlays, options.uiScale.value_or(1.0f), options.present,
@@ -528,7 +529,14 @@ Capturer::Capturer(const CaptureOptions& options, const CapturePlan& plan,
     glm::vec3 lo, hi;
     sceneBounds(simulation_, lo, hi);
     request.boxAspect = boxAspectOnScreen(camera_, lo, hi);
-    layout_ = layoutWindow(request);
+    place(layoutWindow(request));
+}
+
+// Everything where `layout` puts it, and the camera fitted to the first view: the scene's
+// region (or --camera's distance), from the layout alone, so that a frame does not depend
+// on the frames before it.
+void Capturer::place(const WindowLayout& layout) {
+    layout_ = layout;
     view_ = layout_.views.views[0];
     if (compare_) compare_->place(layout_);
     if (ui_) {
@@ -538,31 +546,30 @@ Capturer::Capturer(const CaptureOptions& options, const CapturePlan& plan,
         // whichever frames came before it.
         for (int frame = 0; frame < kUiWarmUpFrames; ++frame) ui_->layout(simulation_, comparedRuns());
     }
-    // The scene's angles or --camera's, the scene's region fitted (or --camera's distance).
+    glm::vec3 lo, hi;
+    sceneBounds(simulation_, lo, hi);
     camera_.fitBox(lo, hi, float(view_.z) / float(view_.w));
-    if (plan.camera && plan.camera->distance) camera_.distance = float(*plan.camera->distance);
+    if (plan_.camera && plan_.camera->distance) camera_.distance = float(*plan_.camera->distance);
+}
+
+bool sameViews(const WindowLayout& a, const WindowLayout& b) {
+    for (int k = 0; k < kMostViews; ++k) {
+        if (a.views.views[k] != b.views.views[k] || a.labels[k].min != b.labels[k].min || a.labels[k].size != b.labels[k].size) {
+            return false;
+        }
+    }
+    return a.views.count == b.views.count;
 }
 
 // Side by side, a label gains a line when a value first wraps (C's "most in one step: 20
 // shock levels, 80 rounds" at 2 s, empty at 0): the labels are measured again at every
-// frame and the views laid out again, as the window does, the camera keeping its fit
-// of the box (the window's followViewShape; --camera's distance stays), so that no
-// label is cut.
+// frame and the views laid out again where they changed, as the window does, so that no
+// label is cut. The manifest gives each frame's views and camera distance.
 void Capturer::followLabels() {
     if (!compare_) return;
     compare_->sizeLabels(simulation_, request_);
     const WindowLayout layout = layoutWindow(request_);
-    const float before = layout_.views.aspect(), after = layout.views.aspect();
-    const bool distanceGiven = plan_.camera && plan_.camera->distance;
-    if (after != before && !distanceGiven) {
-        glm::vec3 lo, hi;
-        sceneBounds(simulation_, lo, hi);
-        camera_.distance *= camera_.fitDistance(lo, hi, after) / camera_.fitDistance(lo, hi, before);
-    }
-    layout_ = layout;
-    view_ = layout_.views.views[0];
-    compare_->place(layout_);
-    if (ui_) ui_->place(layout_);
+    if (!sameViews(layout, layout_)) place(layout);
 }
 
 render::Image Capturer::drawFrame() {
@@ -610,6 +617,13 @@ void Capturer::writeFrame(int index) {
         }
         frames_.back()["compare_hashes"] = hashes;
         frames_.back()["labels_cut"] = compare_->labelsCut();  // 0: every label's lines in its room
+        Json viewports = Json::array();  // the labels may have moved them since the frame before
+        for (int k = 0; k <= compare_->comparison().count(); ++k) {
+            const glm::ivec4& v = compare_->view(k);
+            viewports.push_back({v.x, v.y, v.z, v.w});
+        }
+        frames_.back()["viewports"] = viewports;
+        frames_.back()["camera_distance_m"] = camera_.distance;
     }
 }
 

@@ -48,7 +48,7 @@ void Simulation::startFrom(physics::World world) {
     settingsAtLastStep_.clear();
     settingsChange_ = {};
     claims_.observe(world_);
-    claimsStates_.assign(1, {world_.stepCount, physics::stateHash(world_)});
+    claimsStates_.assign(1, SeenState{world_.stepCount, physics::stateHash(world_)});
     claimsStartSteps_ = world_.stepCount;
     updateRecording();
     measureNow();
@@ -61,21 +61,33 @@ bool Simulation::claimsForOtherSettings() const {
     return claimed && claims_.empty() && !claimsInterrupted_;
 }
 
-const std::uint64_t* Simulation::claimsStateAt(std::uint64_t steps) const {
-    const auto at = std::lower_bound(claimsStates_.begin(), claimsStates_.end(), steps,
-                                     [](const std::pair<std::uint64_t, std::uint64_t>& seen, std::uint64_t s) { return seen.first < s; });
-    return at != claimsStates_.end() && at->first == steps ? &at->second : nullptr;
+std::optional<std::uint64_t> Simulation::claimsStateAt(std::uint64_t solverSteps) const {
+    const auto at = std::lower_bound(claimsStates_.begin(), claimsStates_.end(), solverSteps,
+                                     [](const SeenState& seen, std::uint64_t s) { return seen.solverSteps < s; });
+    if (at == claimsStates_.end() || at->solverSteps != solverSteps) return std::nullopt;
+    return at->hash;
 }
 
 bool Simulation::claimsSawThisState(std::uint64_t state, const std::vector<double>& parameters) const {
-    if (parameters != claimsParameters_) return false;
-    const std::uint64_t* seen = claimsStateAt(world_.stepCount);
-    return seen && *seen == state;
+    return !claims_.empty() && parameters == claimsParameters_ && claimsStateAt(world_.stepCount) == state;
+}
+
+// The states are kept as far back as the timeline can go and further (kClaimsStatesKept
+// steps); past that, every other of the older half goes (a rewind to a step no longer kept
+// stops the claims), the first always kept.
+void Simulation::keepClaimsState(std::uint64_t hash) {
+    if (claimsStates_.size() >= kClaimsStatesKept) {
+        const std::size_t half = claimsStates_.size() / 2;
+        std::size_t kept = 1;
+        for (std::size_t k = 1; k < half; k += 2) claimsStates_[kept++] = claimsStates_[k];
+        claimsStates_.erase(claimsStates_.begin() + std::ptrdiff_t(kept), claimsStates_.begin() + std::ptrdiff_t(half));
+    }
+    claimsStates_.push_back({world_.stepCount, hash});
 }
 
 void Simulation::stopClaims() {
     claims_ = {};
-    claimsStates_.clear();
+    claimsStates_.resize(1);  // the start: a change of settings there watches them again
     claimsInterrupted_ = true;
 }
 
@@ -87,12 +99,12 @@ void Simulation::watchClaims() {
     if (claimsSawThisState(state, parameters)) return;  // the newest step, or one the timeline went back to
     // Settings changed before the first step (a text's "switch response to lecture", done
     // at t = 0): that variant's claims are watched from the start, not stopped.
-    if (atStart && !claimsStates_.empty() && state == claimsStates_[0].second) {
+    if (atStart && !claimsStates_.empty() && state == claimsStates_[0].hash) {
         claims_ = scenes::LiveClaims(scene_);
         claimsInterrupted_ = false;
         claimsParameters_ = std::move(parameters);
         claims_.observe(world_);
-        claimsStates_.assign(1, {world_.stepCount, state});
+        claimsStates_.assign(1, SeenState{world_.stepCount, state});
         return;
     }
     if (!claims_.empty()) stopClaims();
@@ -252,10 +264,10 @@ void Simulation::afterStep() {
         // A new step is measured; a step the claims saw before the timeline went back must
         // come out as it did then, else the run is not the one they measured.
         const std::uint64_t state = physics::stateHash(world_);
-        if (world_.stepCount > claimsStates_.back().first) {
+        if (world_.stepCount > claimsStates_.back().solverSteps) {
             claims_.observe(world_);
-            claimsStates_.emplace_back(world_.stepCount, state);
-        } else if (const std::uint64_t* seen = claimsStateAt(world_.stepCount); !seen || *seen != state) {
+            keepClaimsState(state);
+        } else if (claimsStateAt(world_.stepCount) != state) {
             stopClaims();
         }
     }

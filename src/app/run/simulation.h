@@ -4,6 +4,7 @@
 // both advance it through advance(), so they step exactly alike.
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include "app/teaching/alarms.h"
@@ -148,6 +149,7 @@ private:
     // what restoredFromTimeline() puts back. Past the cap every other of the older half goes.
     std::vector<std::pair<double, ImpactRecord>> impactsBefore_;
     static constexpr std::size_t kMostImpactRecordsKept = std::size_t(1) << 15;  // past the timeline's 19 200 steps
+    static constexpr std::size_t kClaimsStatesKept = std::size_t(1) << 16;        // 1 MB, past the timeline's too
     double behindFor_ = 0.0;  // s of real time behindRealTime() still says so
     History history_;
     physics::Diagnostics diagnostics_;
@@ -163,19 +165,25 @@ private:
     double lastStepTime_ = 0.0;   // s, world time after the last step
     bool skipEnergyCheck_ = false;
     // The claims measured as the run goes, and the states and parameters they saw, so that
-    // a change by hand between steps stops them. claimsStates_: (World::stepCount, state
-    // hash) after each step they measured, the world as restarted first. A rewind keeps
-    // them: the same settings replay the same steps, checked against these hashes, and the
-    // claims measure again from the newest step they saw (any other state, or settings,
-    // stops them).
+    // a change by hand between steps stops them. claimsStates_: the state after each time
+    // step h they measured (World::stepCount counts solver steps: substeps a time step), the
+    // world as restarted first; a stop keeps that first one, from which a change of settings
+    // at t = 0 watches the claims again. A rewind keeps them: the same settings replay the
+    // same steps, checked against these hashes, and the claims measure again from the newest
+    // step they saw (any other state, or settings, stops them).
+    struct SeenState {
+        std::uint64_t solverSteps = 0;  // World::stepCount
+        std::uint64_t hash = 0;         // physics::stateHash
+    };
     scenes::LiveClaims claims_;
-    std::vector<std::pair<std::uint64_t, std::uint64_t>> claimsStates_;
+    std::vector<SeenState> claimsStates_;
     std::uint64_t claimsStartSteps_ = 0;
     std::vector<double> claimsParameters_;
     bool claimsInterrupted_ = false;
-    // Whether the world now is a state the claims saw, at the settings they saw.
+    // Whether the world now is a state the watched claims saw, at the settings they saw.
     bool claimsSawThisState(std::uint64_t state, const std::vector<double>& parameters) const;
-    const std::uint64_t* claimsStateAt(std::uint64_t steps) const;  // the hash they saw then, or null
+    std::optional<std::uint64_t> claimsStateAt(std::uint64_t solverSteps) const;  // the hash seen then
+    void keepClaimsState(std::uint64_t hash);  // after a new step they measured
     void stopClaims();
     // The live settings at the last step, and the last change of them since the restart:
     // the energy alarm's why when the new settings lift what the old ones let sink.

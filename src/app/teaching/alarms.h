@@ -41,9 +41,10 @@ constexpr double kEnergyTolerance = 1e-3;
 constexpr double kPenetrationTolerance = 0.5;
 // Spheres held in mid-air, as a share of all, from which it is an alarm (and at least
 // kHeldInMidAirMin): the position-based pile holds up to 39 of 1000 for a moment as it
-// lands (counted at every step), the velocity-based one about 300 for good. At 1 % the
-// page's coarser frames lit it on the landing position based pile.
-constexpr double kHeldInMidAirShare = 0.1;
+// lands (counted at every step), the velocity-based one about 300 for good. Above the
+// landing pile's most, whenever the frames count: at 1 % the page's coarser frames lit it
+// on the landing position based pile.
+constexpr double kHeldInMidAirShare = 0.05;
 constexpr std::size_t kHeldInMidAirMin = 3;
 // s of simulated time between two counts of the spheres held in mid-air (a broad phase),
 // and how long the count must stay at the alarm's level: a landing pile holds a few for

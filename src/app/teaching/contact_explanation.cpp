@@ -189,20 +189,23 @@ void matchLine(std::vector<Line>& lines, const ContactExplanation& e, const phys
 }
 
 // The kinetic energy before and after this answer (the velocities logged): a bounce keeps
-// β² of the normal part and α² of the tangential one (slide 4), friction μ² (slide 13). A
-// plane, and a frozen sphere of the shock sweep, take none.
+// β² of the normal part and α² of the tangential one (slide 4). A plane, and a frozen sphere
+// of the shock sweep, take none. A contact slide 14's global solvers answered with others
+// logs the velocities after the whole solve: the slides' answer to it alone is counted.
 void energyLines(std::vector<Line>& lines, const ContactExplanation& e, const physics::Params& p) {
     const bool both = !e.plane && std::isfinite(e.mass[1]);
+    const glm::dvec3* answered = e.solvedTogether ? e.predicted : e.velocityAfter;  // m/s
     double before = 0.0, after = 0.0;  // J
     for (int k = 0; k < (both ? 2 : 1); ++k) {
         before += 0.5 * e.mass[k] * glm::dot(e.velocityBefore[k], e.velocityBefore[k]);
-        after += 0.5 * e.mass[k] * glm::dot(e.velocityAfter[k], e.velocityAfter[k]);
+        after += 0.5 * e.mass[k] * glm::dot(answered[k], answered[k]);
     }
-    add(lines, Line::Kind::Heading, both ? "Kinetic energy, ½ m₁ |v₁|² + ½ m₂ |v₂|²" : "Kinetic energy, ½ m |v|²");
+    const char* counted = e.solvedTogether ? " (this contact alone)" : "";
+    add(lines, Line::Kind::Heading, std::string(both ? "Kinetic energy, ½ m₁ |v₁|² + ½ m₂ |v₂|²" : "Kinetic energy, ½ m |v|²") + counted);
     std::string change = "kept";
     if (std::abs(after - before) > 1e-9 * std::max(before, 1e-12)) {
-        change = format("%.4g J %s (%.3g %%)", std::abs(after - before), after < before ? "lost" : "gained",
-                        100.0 * std::abs(after - before) / std::max(before, 1e-300));
+        change = format("%.4g J %s", std::abs(after - before), after < before ? "lost" : "gained");
+        if (before > 1e-12) change += format(" (%.3g %%)", 100.0 * std::abs(after - before) / before);
     }
     add(lines, Line::Kind::Formula, format("before %.4g J, after %.4g J: %s", before, after, change.c_str()));
     if (e.plane && !e.staticContact) {

@@ -331,8 +331,9 @@ try {
   await until((s) => s.time_s > 0, 30000);
   const onlyA = await js("[...document.querySelectorAll('#controls label.only-a')].filter((l) => l.offsetParent).map((l) => l.dataset.name)");
   check('presented side by side, K and shock say they move view A only', JSON.stringify(onlyA) === '["passes","shock"]', JSON.stringify(onlyA));
-  // Four views on a narrow page (800 x 1000: four columns were 100 px wide) go in two rows
-  // of two, each label over its quarter; at 1280 x 720 in one row again.
+  // Four views on a narrow page (800 x 1000: four columns were 100 px wide) or a laptop's
+  // (1280 x 720) go in two rows of two, each label over its quarter; on a wide and low page
+  // (1600 x 600) in one row again.
   await navigate('scene=16_bernoulli');
   const opened = await until((s) => s.spheres === 3, 30000);
   check('16 opens paused at its start, in slow motion', opened.paused === true && opened.time_s === 0 &&
@@ -356,8 +357,10 @@ try {
   };
   const narrow = await rows(800, 1000);
   check('four views on a narrow page go in two rows, D\'s label in the lower half', narrow.two && narrow.dTop >= narrow.half - 4, JSON.stringify(narrow));
-  const wide = await rows(1280, 720);
-  check('and in one row on a wide one', !wide.two && wide.dTop < 4, JSON.stringify(wide));
+  const laptop = await rows(1280, 720);
+  check('and on a laptop\'s page', laptop.two && laptop.dTop >= laptop.half - 4, JSON.stringify(laptop));
+  const wide = await rows(1600, 600);
+  check('and in one row on a wide and low one', !wide.two && wide.dTop < 4, JSON.stringify(wide));
   await send('Emulation.clearDeviceMetricsOverride');
 } catch (error) {
   check('the page answers', false, String(error));
