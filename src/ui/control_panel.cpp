@@ -589,14 +589,14 @@ struct UnderText {
 };
 
 float heightUnderText(const std::vector<const scenes::Parameter*>& sliders, const PanelState& state,
-                      bool labelsAbove, const UnderText& under) {
+                      bool labelsAbove, const UnderText& under, bool withRefusal = true) {
     const ImGuiStyle& style = ImGui::GetStyle();
     const float wrap = ImGui::GetContentRegionAvail().x;
     const auto lines = [&](const char* text) { return ImGui::CalcTextSize(text, nullptr, false, wrap).y + style.ItemSpacing.y; };
     float below = 2.0f * style.ItemSpacing.y + lines(under.keys);
     for (const scenes::Parameter* p : sliders) {
         below += ImGui::GetFrameHeightWithSpacing() + (labelsAbove ? ImGui::GetTextLineHeightWithSpacing() : 0.0f);
-        if (state.refusedName == p->name && !state.refusal.empty()) below += lines(state.refusal.c_str());
+        if (withRefusal && state.refusedName == p->name && !state.refusal.empty()) below += lines(state.refusal.c_str());
     }
     for (const std::string& note : under.notes) below += lines(note.c_str());
     below += lines(under.status.c_str()) + under.restitutionHeight;
@@ -683,17 +683,19 @@ void presentedPanel(const scenes::Scene& scene, const Readouts& readouts, const 
     // β it tells the class to move). Where all of them would take more, the first ones the
     // text names that fit stay (02's β and ε at 1024x768), and the rest scroll with the text,
     // under it (five sliders with their labels above at 1024x768 left it two lines).
+    // A refusal under a slider is left out of the count: it would push the slider it is
+    // about into the scrolled text, just where the teacher was looking.
     const float most = 0.62f * ImGui::GetContentRegionAvail().y;  // px
     const float restitutionHeight = under.restitutionHeight;
     std::size_t inSight = sliders.size();
-    float below = heightUnderText(sliders, state, labelsAbove, under);
-    while (inSight > 0 && below > most) {
+    while (inSight > 0 && heightUnderText(std::vector<const scenes::Parameter*>(sliders.begin(), sliders.begin() + std::ptrdiff_t(inSight)),
+                                          state, labelsAbove, under, false) > most) {
         --inSight;
-        const std::vector<const scenes::Parameter*> first(sliders.begin(), sliders.begin() + std::ptrdiff_t(inSight));
-        under.restitutionHeight = showsBeta(first) ? restitutionHeight : 0.0f;  // under β, with it
-        below = heightUnderText(first, state, labelsAbove, under);
+        under.restitutionHeight = showsBeta({sliders.begin(), sliders.begin() + std::ptrdiff_t(inSight)}) ? restitutionHeight : 0.0f;  // under β, with it
     }
-    const bool restitutionInSight = inSight == sliders.size() || showsBeta({sliders.begin(), sliders.begin() + std::ptrdiff_t(inSight)});
+    const std::vector<const scenes::Parameter*> first(sliders.begin(), sliders.begin() + std::ptrdiff_t(inSight));
+    const float below = heightUnderText(first, state, labelsAbove, under);
+    const bool restitutionInSight = inSight == sliders.size() || showsBeta(first);
     const auto drawSliders = [&](std::size_t begin, std::size_t end, bool restitutionAfter) {
         pushItemWidth();
         for (std::size_t k = begin; k < end; ++k) {
