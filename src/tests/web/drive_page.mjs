@@ -130,6 +130,8 @@ try {
   const refused = await text('refusal');
   run = await state();
   check('r = 9 m is refused in one line', refused.length > 0 && !refused.includes('\n') && run.selected.r === radius, refused);
+  const under = await js("document.getElementById('refusal').previousElementSibling.id");
+  check('and said under the inspector\'s fields', under === 'sphere-fields', under);
 
   // Esc backs out one level at a time: out of the field, then the selection.
   await key('Escape', 'Escape', 27);
