@@ -230,13 +230,13 @@ TEST(WindowInteraction, AnAlarmWaitsUntilThePointerLeavesThePanel) {
 // A teacher presses F5 on the column: the presentation layout (the panel in large type
 // is wider, the bar and the readouts' line are gone); F12's screenshot shows it and
 // F5 again brings every control back (a second screenshot); a click on the readouts'
-// arrow unfolds them into the dock (a third).
+// line, on its words (not only its arrow), unfolds them into the dock (a third).
 TEST(WindowInteraction, F5SwitchesToThePresentationLayoutAndBack) {
     if (!haveXvfb() || !haveXdotool()) GTEST_SKIP() << "xvfb-run or xdotool not found";
     const fs::path folder = fs::path(SPHERES_TEST_OUTPUT_DIR) / "window_present_key";
-    // After two screenshots, a click on the readouts' arrow (top left of the view): they
-    // unfold into the dock; a third.
-    const std::string unfold = "xdotool mousemove 438 11 sleep 0.3 click 1 sleep 1 mousemove 900 400 sleep 0.3\n";
+    // After two screenshots, a click on the readouts' word "Readouts" (top left of the view):
+    // they unfold into the dock; a third.
+    const std::string unfold = "xdotool mousemove 480 11 sleep 0.3 mousedown 1 sleep 0.3 mouseup 1 sleep 1 mousemove 900 400 sleep 0.3\n";
     const int status = runScript(
         folder, sessionOnTheColumn("--paused", press("F5") + press("F12") + press("F5") + press("F12") + unfold + press("F12")));
     ASSERT_TRUE(WIFEXITED(status));
@@ -249,7 +249,7 @@ TEST(WindowInteraction, F5SwitchesToThePresentationLayoutAndBack) {
     EXPECT_LT(fraction(a, 700, 770, 1270, 798, dark), 0.01);  // no bar
     EXPECT_LT(fraction(b, 440, 300, 560, 780, dark), 0.1);   // the panel as it was
     EXPECT_GT(fraction(b, 700, 770, 1270, 798, dark), 0.25);  // the bar again
-    // A click on the readouts' arrow: their numbers fill a column on the right (the dock).
+    // A click on the readouts' line: their numbers fill a column on the right (the dock).
     const fs::path unfolded = folder / "spheres_output" / "screenshot_0003.png";
     ASSERT_TRUE(fs::exists(unfolded));
     EXPECT_LT(fraction(b, 1000, 100, 1270, 700, notSky), 0.3);

@@ -829,8 +829,11 @@ void drawReadouts(const Readouts& readouts, PanelState& state, PanelActions& act
                  ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoSavedSettings);
     const bool unfolded = !ImGui::IsWindowCollapsed();  // the arrow was clicked: laid out so from the next frame
     if (unfolded) readoutsBody(readouts, state, actions);
+    // A click on the folded line's words unfolds it too (ImGui unfolds a window by its arrow
+    // or a double click: a single click on "Readouts" did nothing).
+    const bool lineClicked = !state.readoutsOpen && !unfolded && ImGui::IsWindowHovered() && ImGui::IsMouseClicked(0);
     ImGui::End();
-    state.readoutsOpen = unfolded;
+    state.readoutsOpen = unfolded || lineClicked;
 }
 
 }  // namespace ui
