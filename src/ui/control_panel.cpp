@@ -687,13 +687,15 @@ void presentedPanel(const scenes::Scene& scene, const Readouts& readouts, const 
     // about into the scrolled text, just where the teacher was looking.
     const float most = 0.62f * ImGui::GetContentRegionAvail().y;  // px
     const float restitutionHeight = under.restitutionHeight;
+    const auto firstOf = [&](std::size_t n) {
+        return std::vector<const scenes::Parameter*>(sliders.begin(), sliders.begin() + std::ptrdiff_t(n));
+    };
     std::size_t inSight = sliders.size();
-    while (inSight > 0 && heightUnderText(std::vector<const scenes::Parameter*>(sliders.begin(), sliders.begin() + std::ptrdiff_t(inSight)),
-                                          state, labelsAbove, under, false) > most) {
+    while (inSight > 0 && heightUnderText(firstOf(inSight), state, labelsAbove, under, false) > most) {
         --inSight;
-        under.restitutionHeight = showsBeta({sliders.begin(), sliders.begin() + std::ptrdiff_t(inSight)}) ? restitutionHeight : 0.0f;  // under β, with it
+        under.restitutionHeight = showsBeta(firstOf(inSight)) ? restitutionHeight : 0.0f;  // under β, with it
     }
-    const std::vector<const scenes::Parameter*> first(sliders.begin(), sliders.begin() + std::ptrdiff_t(inSight));
+    const std::vector<const scenes::Parameter*> first = firstOf(inSight);
     const float below = heightUnderText(first, state, labelsAbove, under);
     const bool restitutionInSight = inSight == sliders.size() || showsBeta(first);
     const auto drawSliders = [&](std::size_t begin, std::size_t end, bool restitutionAfter) {
