@@ -438,6 +438,25 @@ TEST(SideBySide, PresentedLabelsSayWhatEachSolverBreaks) {
     EXPECT_EQ(twoNames[0].front(), "A   shock = off, passes = 1") << "two names: both said";
 }
 
+// Under the continuous method only the symmetry is measured (the sequential solver, meeting
+// Bernoulli's two impacts of one instant, breaks it there too): the short line says so, not
+// "nothing broken" (which claimed all five from the symmetry alone), and so do the marks.
+TEST(SideBySide, PresentedLabelsUnderTheContinuousMethodSayWhatIsNotMeasured) {
+    app::Simulation simulation(preset("16_bernoulli", {"method=continuous"}));
+    app::Session session(simulation);
+    session.sceneChanged();
+    ASSERT_EQ(session.runCount(), 4);
+    while (simulation.world().time < 0.5) session.advance(1.0 / 30.0);
+    const auto presented = app::comparisonReadouts(simulation, *session.comparison(), app::LabelLines::Presented);
+    const auto full = app::comparisonReadouts(simulation, *session.comparison(), app::LabelLines::Full);
+    for (std::size_t k = 0; k < 4; ++k) {
+        ASSERT_FALSE(presented[k].empty());
+        EXPECT_EQ(presented[k].back(), k == 0 ? "\u2717 symmetry" : "\u2713 symmetry, others not measured (continuous)") << k;
+        ASSERT_FALSE(full[k].empty());
+        EXPECT_EQ(full[k].back(), "others not measured (continuous)") << k;
+    }
+}
+
 // Slide 7's three answers side by side at a coarse step: each view's label (the projector's
 // too) shows its newest floor bounce's apex ratio beside beta^2, the lesson of 14's text: A
 // (projection) under 0.64, B (reflection) above it by then, C (back to the contact) 0.640.

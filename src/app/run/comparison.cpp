@@ -118,17 +118,26 @@ bool differsIn(const ViewReadout& view, const char* name) {
 // The marks' line as a projector shows it: what the solver breaks ("✗ symmetry, energy"),
 // "✓ nothing broken", or "– none tested yet" (five marks in large type broke inside their
 // words).
-std::string brokenProperties(const std::string& marks) {
-    const std::string broken = "\u2717\u00a0";
+// The names after each `mark` in the marks' line, joined by commas.
+std::string namesMarked(const std::string& marks, const std::string& mark) {
     std::string names;
-    for (std::size_t at = marks.find(broken); at != std::string::npos; at = marks.find(broken, at + 1)) {
-        const std::size_t name = at + broken.size();
+    for (std::size_t at = marks.find(mark); at != std::string::npos; at = marks.find(mark, at + 1)) {
+        const std::size_t name = at + mark.size();
         const std::size_t end = std::min(marks.find_first_of(" \n", name), marks.size());
         names += (names.empty() ? "" : ", ") + marks.substr(name, end - name);
     }
+    return names;
+}
+
+std::string brokenProperties(const std::string& marks) {
+    const std::string names = namesMarked(marks, "\u2717\u00a0");
     if (!names.empty()) return "\u2717 " + names;
-    if (marks.find("not measured") != std::string::npos) return "\u2013 not measured (continuous)";
-    return marks.find("\u2713") != std::string::npos ? "\u2713 nothing broken" : "\u2013 none tested yet";
+    if (marks.find("not measured") == std::string::npos) {
+        return marks.find("\u2713") != std::string::npos ? "\u2713 nothing broken" : "\u2013 none tested yet";
+    }
+    // The continuous method: "nothing broken" would claim five properties from the symmetry.
+    const std::string kept = namesMarked(marks, "\u2713\u00a0");
+    return kept.empty() ? "\u2013 not measured (continuous)" : "\u2713 " + kept + ", " + kOthersNotMeasured;
 }
 
 }  // namespace

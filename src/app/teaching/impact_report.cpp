@@ -170,6 +170,11 @@ std::string propertiesMarks(const std::vector<PropertyVerdict>& verdicts) {
         if (k > 0) line += k == 3 ? "\n" : "  ";  // two lines: a label stays narrow
         line += std::string(markOf(verdicts[k].verdict)) + "\u00a0" + verdicts[k].name;  // wraps between marks
     }
+    // Under the continuous method only the symmetry is measured: its dashes say why (a
+    // projector's short line read "nothing broken" from the symmetry alone).
+    const bool continuous = std::any_of(verdicts.begin(), verdicts.end(),
+                                        [](const PropertyVerdict& v) { return v.value == kNotMeasuredUnderContinuous; });
+    if (continuous) line += std::string("\n") + kOthersNotMeasured;
     return line;
 }
 

@@ -39,7 +39,8 @@ std::vector<PropertyVerdict> judgeProperties(const ImpactRecord& record,
 // One line: "momentum ✓ 0 | energy ✓ 1.000000 after/before | ...".
 std::string propertiesLine(const std::vector<PropertyVerdict>& verdicts);
 // The marks alone, for a view's label, on two lines: "✓ momentum  ✓ energy  ✗ symmetry",
-// then "✓ break-away  ✓ positivity".
+// then "✓ break-away  ✓ positivity"; under the continuous method a third, kOthersNotMeasured.
+inline constexpr const char* kOthersNotMeasured = "others not measured (continuous)";
 std::string propertiesMarks(const std::vector<PropertyVerdict>& verdicts);
 // What the marks mean, for a tooltip: a paragraph per property, its mark, name and number,
 // then what it asks.
