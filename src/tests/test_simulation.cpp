@@ -26,6 +26,24 @@ TEST(Simulation, AdvanceSpendsRealTimeInWholeStepsOfH) {
     EXPECT_FALSE(sim.behindRealTime());
 }
 
+// A bounce's contact lasts one solver step (of 4 a time step in 02), gone by the frame's end:
+// the plots' contacts count the bounces of the frame's steps too, so every frame that
+// counted a bounce shows a contact (sampled at the frame's end only, 02's plot showed 2 of 16).
+TEST(Simulation, ThePlottedContactsShowEveryFrameThatCountedABounce) {
+    app::Simulation sim(scenes::loadScene(scenes::presetPath("02_bounce_projection")));
+    sim.paused = false;
+    for (int frame = 0; frame < 6 * 60; ++frame) sim.advance(1.0 / 60.0);
+    const std::vector<float>& bounces = sim.history().values(app::Series::Bounces);
+    const std::vector<float>& contacts = sim.history().values(app::Series::Contacts);
+    int bounceFrames = 0;
+    for (std::size_t k = 1; k < bounces.size(); ++k) {
+        if (bounces[k] == bounces[k - 1]) continue;
+        ++bounceFrames;
+        EXPECT_GE(contacts[k], 1.0f) << "sample " << k;
+    }
+    EXPECT_GE(bounceFrames, 10);
+}
+
 TEST(Simulation, TooMuchTimeIsClampedAndSaidSo) {
     app::Simulation sim = pile();
     const double h = sim.params().timeStep;

@@ -35,6 +35,7 @@ void Simulation::startFrom(physics::World world) {
     impactsBefore_.clear();
     behindFor_ = 0.0;
     history_.clear();
+    mostBouncesInAStep_ = 0;
     overlays_.reset();
     ghosts_.reset();
     alarms_.clear();
@@ -272,6 +273,7 @@ void Simulation::afterStep() {
         }
     }
     bounces_ += lastStats_.collisions;
+    mostBouncesInAStep_ = std::max(mostBouncesInAStep_, lastStats_.collisions);
     if (lastStats_.impacts.contacts > 0) {
         impacts_.add(lastStats_.impacts);
         if (impactsBefore_.size() == kMostImpactRecordsKept) {
@@ -322,7 +324,9 @@ void Simulation::measureNow() {
     diagnostics_ = physics::measure(world_, scene_.params);
     alarms_.checkMeasurement(diagnostics_, scene_.params, world_.time);
     alarms_.checkRest(world_, scene_.params);
-    history_.add(world_.time, diagnostics_, bounces_);
+    const std::uint64_t touching = diagnostics_.sphereContacts + diagnostics_.wallContacts;
+    history_.add(world_.time, diagnostics_, std::max(touching, mostBouncesInAStep_), bounces_);
+    mostBouncesInAStep_ = 0;
 }
 
 }  // namespace app
