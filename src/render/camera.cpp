@@ -62,6 +62,11 @@ void Camera::fitBox(const glm::vec3& boxMin, const glm::vec3& boxMax, float aspe
     distance = fitDistance(boxMin, boxMax, aspect);
 }
 
+void Camera::followAspect(const glm::vec3& boxMin, const glm::vec3& boxMax, float before, float after) {
+    if (before <= 0.0f || after == before) return;
+    distance *= fitDistance(boxMin, boxMax, after) / fitDistance(boxMin, boxMax, before);
+}
+
 float Camera::fitDistance(const glm::vec3& boxMin, const glm::vec3& boxMax, float aspect) const {
     const glm::vec3 centre = 0.5f * (boxMin + boxMax);
     const glm::vec3 f = forward();

@@ -40,6 +40,10 @@ class Camera {
     void fitBox(const glm::vec3& boxMin, const glm::vec3& boxMax, float aspect);
     // The distance fitBox would choose for these angles, without moving (m).
     float fitDistance(const glm::vec3& boxMin, const glm::vec3& boxMax, float aspect) const;
+    // The view changed shape from aspect `before` to `after` (a window resized, a phone
+    // turned): keeps the angles, the target and the zoom relative to the box, so that the
+    // box still fits as it did.
+    void followAspect(const glm::vec3& boxMin, const glm::vec3& boxMax, float before, float after);
     // The default three-quarter view of the box, then fitBox.
     void reset(const glm::vec3& boxMin, const glm::vec3& boxMax, float aspect);
 

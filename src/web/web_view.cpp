@@ -95,7 +95,7 @@ void followCanvasShape(int width, int height) {
     if (aspect == v.aspect) return;
     glm::vec3 lo, hi;
     app::sceneBounds(*v.simulation, lo, hi);
-    v.camera.distance *= v.camera.fitDistance(lo, hi, aspect) / v.camera.fitDistance(lo, hi, v.aspect);
+    v.camera.followAspect(lo, hi, v.aspect, aspect);
     v.aspect = aspect;
 }
 

@@ -249,16 +249,13 @@ void WindowApp::fitCamera() {
     camera_.fitBox(lo, hi, viewAspect_);
 }
 
-// The views changed shape (a window opened in the dock, the window was resized): the
-// camera keeps its angles, target and zoom relative to the box, so that the box
-// still fits as it did.
+// The views changed shape (a window opened in the dock, the window was resized).
 void WindowApp::followViewShape(const ViewLayout& views) {
     const float aspect = views.aspect();
-    if (viewAspect_ > 0.0f && aspect != viewAspect_) {
-        glm::vec3 lo, hi;
-        sceneBounds(simulation_, lo, hi);
-        camera_.distance *= camera_.fitDistance(lo, hi, aspect) / camera_.fitDistance(lo, hi, viewAspect_);
-    }
+    if (aspect == viewAspect_) return;
+    glm::vec3 lo, hi;
+    sceneBounds(simulation_, lo, hi);
+    camera_.followAspect(lo, hi, viewAspect_, aspect);
     viewAspect_ = aspect;
 }
 
