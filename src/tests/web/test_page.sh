@@ -139,6 +139,22 @@ scene=shock_column A shock = off, passes = 1 | B shock = off, passes = 4 | C sho
 scene=cradle&compare=order=sideways Cannot compare: order=sideways: order = 'sideways' is not a choice; choices: index, reversed, shuffled, colored
 CASES
 
+# A live link with a setting the scene refuses opens the scene without it (the link's other
+# settings taken), the refusal said in one line (it had left the student on the front page).
+said=$(DOM="$(live_dom "scene=cradle&beta=7&method=velocity")" python3 -c '
+import html, json, os, re
+dom = os.environ["DOM"]
+def exported(name):
+    m = re.search(r"<pre id=\"%s\"[^>]*>([^<]*)</pre>" % name, dom)
+    return json.loads(html.unescape(m.group(1)) or "null") if m else None
+table = {p["name"]: p for p in exported("parameters") or []}
+method = table.get("method", {})
+refusal = re.search(r"<p class=\"refusal\" id=\"refusal\">([^<]*)</p>", dom)
+print("method %s, beta %g: %s" % (method.get("choices", [None])[int(method.get("value", -1))], table.get("beta", {}).get("value"),
+      html.unescape(refusal.group(1)) if refusal else "nothing said"))')
+echo "live link, beta=7&method=velocity: $said"
+case "$said" in "method velocity, beta 1: The link's beta"*"out of range"*": opened without it.") ;; *) failed=1 ;; esac
+
 # What the view draws: the link's color-by=... and overlay=..., in the run's state; an
 # overlay it does not know is refused in one line.
 while read -r query expected; do
