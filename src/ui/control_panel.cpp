@@ -443,11 +443,16 @@ void readoutsBody(const Readouts& r, const PanelState& state, PanelActions& acti
 
 void viewSection(PanelState& state, PanelActions& actions) {
     ImGui::Combo("colour by", &state.colorBy, "sphere id\0speed\0contact state\0penetration\0");
-    tooltip("Contact state: blue free, orange colliding (bounce), green static contact (speed at or below epsilon). "
-            "Penetration: each sphere's deepest overlap with a sphere or a wall, over the radius, on a log scale from "
-            "0.01 % of r (dark purple, or none) through 0.1 % and 1 % (green) to 10 % (yellow): how far a stack has "
-            "sunk into itself, visible where the views look alike. Speed: dark purple at rest to yellow at 3 m/s and "
-            "faster. The readouts say what the colours mean.");
+    // The legends are the readouts' (scenes::kColorByLegends), said once.
+    static const std::string colours = [] {
+        std::string text;
+        for (std::size_t k = 1; k < std::size(scenes::kColorByLegends); ++k) {
+            text += std::string(scenes::kColorByNames[k]) + ": " + scenes::kColorByLegends[k] + ".\n";
+        }
+        return text + "Penetration shows how far a stack has sunk into itself, where the views look alike. "
+                      "The readouts say what the colours mean.";
+    }();
+    tooltip(colours.c_str());
     ImGui::Checkbox("box", &state.showBox);
     ImGui::SameLine();
     ImGui::Checkbox("floor grid", &state.showGrid);
