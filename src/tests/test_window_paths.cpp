@@ -12,12 +12,14 @@
 #include <vector>
 
 #include "app/run/interaction.h"
+#include "app/views/frame_builder.h"
 #include "app/window/interaction_input.h"
 #include "app/run/session.h"
 #include "app/run/simulation.h"
 #include "scenes/parameters.h"
 #include "scenes/presets.h"
 #include "scenes/scene_json.h"
+#include "ui/control_panel.h"
 
 namespace {
 
@@ -332,6 +334,53 @@ TEST(WindowPaths, AClickThatMissesASphereKeepsTheExplanation) {
     input.toggleExplainer();
     clickAt(input, views, camera, sky);
     EXPECT_EQ(session.selected(), -1);
+    ImGui::DestroyContext(context);
+}
+
+
+// The unfolded claims' list holds still while the pointer is over the panel (a new line
+// would push the sliders under it), and then says how many it will add: a teacher who left
+// the pointer on the panel read "9 of 9 measured" above a list of 4 and "5 more are measured
+// as the run reaches their moment (the last at t = 10 s)", at t = 25 s.
+TEST(WindowPaths, TheHeldClaimsListSaysHowManyMoreWereMeasured) {
+    ImGuiContext* context = ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr;
+    io.DisplaySize = ImVec2(1280.0f, 800.0f);
+    unsigned char* pixels = nullptr;
+    int width = 0, height = 0;
+    io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);
+    app::Simulation simulation(scenes::loadScene(scenes::presetPath("13_tunnelling")));
+    ui::PanelState state;
+    double timeScale = 1.0;
+    const auto frame = [&](ImVec2 pointer, bool down) {
+        io.DeltaTime = 1.0f / 60.0f;
+        io.MousePos = pointer;
+        io.MouseDown[ImGuiMouseButton_Left] = down;
+        ImGui::NewFrame();
+        ui::drawControlPanel(simulation.scene(), timeScale, app::makeReadouts(simulation, ui::FrameTimes{}), state, {});
+        ImGui::EndFrame();
+    };
+    // The header is the first control under the scene's text: clicked down the panel until
+    // the list unfolds.
+    ImVec2 header(100.0f, 30.0f);
+    for (; header.y < 500.0f && !state.claimsWereOpen; header.y += 8.0f) {
+        frame(header, true);
+        frame(header, false);
+        frame(header, false);
+    }
+    ASSERT_TRUE(state.claimsWereOpen) << "no claims' header found";
+    frame(header, false);
+    const std::size_t shown = state.claimsMeasuredShown;
+    ASSERT_LT(shown, simulation.claimsWatched());
+    while (simulation.world().time < 12.0) simulation.singleStep();  // every moment passed
+    frame(header, false);
+    EXPECT_EQ(state.claimsMeasuredShown, shown) << "the list moved under the pointer";
+    ASSERT_GT(state.claimLinesShown.size(), shown);
+    const std::string more = std::to_string(simulation.claimsWatched() - shown) + " more measured since";
+    EXPECT_EQ(state.claimLinesShown[shown].first.rfind(more, 0), 0u) << state.claimLinesShown[shown].first;
+    frame(ImVec2(900.0f, 400.0f), false);  // the pointer leaves: the list shows them
+    EXPECT_EQ(state.claimsMeasuredShown, simulation.claimsWatched());
     ImGui::DestroyContext(context);
 }
 

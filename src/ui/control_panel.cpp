@@ -524,6 +524,11 @@ void measuredClaims(const Readouts& r, PanelState& state) {
     }
     int held = 0;
     for (const Readouts::ClaimLine& c : r.claims) held += c.holds;
+    // While the pointer is over the panel the lines stay as they were when it came, but for a
+    // list just unfolded (by a click, so under the pointer), and a run restarted or another
+    // scene's (fewer measured, or another count to watch).
+    const bool sameRun = r.claims.size() >= state.claimsMeasuredShown && r.claimsWatched == state.claimsWatchedShown;
+    const bool keepLines = state.pointerOverPanel && wereOpen && sameRun;
     char header[160];
     if (r.claimsInterrupted) {
         std::snprintf(header, sizeof header, "The text, measured: stopped; R measures again###claims");
@@ -537,14 +542,11 @@ void measuredClaims(const Readouts& r, PanelState& state) {
             "of it (its letter first). A change by hand once the run has started (a slider, a sphere) "
             "stops the measurement until the next restart (R); the timeline does not (the steps replayed come out "
             "as they did, and are checked to); a setting changed before the first step "
-            "measures the text's claims for that setting.");
+            "measures the text's claims for that setting. While the pointer is over the panel the list holds "
+            "still (a new line would push the sliders under it), and says how many it will add.");
     if (!open) return;
     state.claimsWereOpen = true;
-    // While the pointer is over the panel the lines stay as they were when it came, but for a
-    // list just unfolded (by a click, so under the pointer), and a run restarted or another
-    // scene's (fewer measured, or another count to watch).
-    const bool sameRun = r.claims.size() >= state.claimsMeasuredShown && r.claimsWatched == state.claimsWatchedShown;
-    if (!state.pointerOverPanel || !wereOpen || !sameRun) {
+    if (!keepLines) {
         state.claimsMeasuredShown = r.claims.size();
         state.claimsWatchedShown = r.claimsWatched;
         std::vector<std::pair<std::string, int>>& lines = state.claimLinesShown;
@@ -555,6 +557,12 @@ void measuredClaims(const Readouts& r, PanelState& state) {
         }
         if (r.claimsWatched > r.claims.size() && !r.claimsInterrupted) lines.emplace_back(claimsPendingLine(r), 2);
         if (r.claimsElsewhere > 0) lines.emplace_back(claimsElsewhereLine(r), 2);
+    } else if (const std::size_t waiting = r.claims.size() - state.claimsMeasuredShown;
+               waiting > 0 && state.claimsMeasuredShown < state.claimLinesShown.size()) {
+        // Held with claims measured since: the pending line (right after the claims shown)
+        // says so, in its place, else the header's count and the list disagree.
+        state.claimLinesShown[state.claimsMeasuredShown].first =
+            std::to_string(waiting) + " more measured since: the list shows them once the pointer leaves the panel.";
     }
     const ImVec4 colours[] = {kAlarmLit, ImVec4(0.45f, 0.9f, 0.45f, 1.0f), ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled)};
     for (const auto& [text, kind] : state.claimLinesShown) wrappedColored(colours[kind], text);
