@@ -285,6 +285,18 @@ TEST(WindowPaths, EscClosesTheExplainerThenTheSelectionThenNothing) {
 
 namespace {
 
+// An ImGui context for a display of `size` (window units), its font built, drawing nowhere.
+ImGuiContext* headlessImGui(ImVec2 size) {
+    ImGuiContext* context = ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr;
+    io.DisplaySize = size;
+    unsigned char* pixels = nullptr;
+    int width = 0, height = 0;
+    io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);
+    return context;
+}
+
 // One click of the left button at `at` (window units): pressed in a frame, released in the next.
 void clickAt(app::InteractionInput& input, const app::ViewLayout& views, const render::Camera& camera, ImVec2 at) {
     ImGuiIO& io = ImGui::GetIO();
@@ -304,13 +316,7 @@ void clickAt(app::InteractionInput& input, const app::ViewLayout& views, const r
 // stays, with a line that says so (before, the click deselected and the contact was lost).
 // With the explanation closed, a click on nothing deselects as before.
 TEST(WindowPaths, AClickThatMissesASphereKeepsTheExplanation) {
-    ImGuiContext* context = ImGui::CreateContext();
-    ImGuiIO& io = ImGui::GetIO();
-    io.IniFilename = nullptr;
-    io.DisplaySize = ImVec2(800.0f, 600.0f);
-    unsigned char* pixels = nullptr;
-    int width = 0, height = 0;
-    io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);
+    ImGuiContext* context = headlessImGui(ImVec2(800.0f, 600.0f));
     app::Simulation simulation(scenes::loadScene(scenes::presetPath("09_column")));
     app::Session session(simulation);
     app::InteractionInput input(session);
@@ -343,13 +349,8 @@ TEST(WindowPaths, AClickThatMissesASphereKeepsTheExplanation) {
 // the pointer on the panel read "9 of 9 measured" above a list of 4 and "5 more are measured
 // as the run reaches their moment (the last at t = 10 s)", at t = 25 s.
 TEST(WindowPaths, TheHeldClaimsListSaysHowManyMoreWereMeasured) {
-    ImGuiContext* context = ImGui::CreateContext();
+    ImGuiContext* context = headlessImGui(ImVec2(1280.0f, 800.0f));
     ImGuiIO& io = ImGui::GetIO();
-    io.IniFilename = nullptr;
-    io.DisplaySize = ImVec2(1280.0f, 800.0f);
-    unsigned char* pixels = nullptr;
-    int width = 0, height = 0;
-    io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);
     app::Simulation simulation(scenes::loadScene(scenes::presetPath("13_tunnelling")));
     ui::PanelState state;
     double timeScale = 1.0;
