@@ -350,6 +350,28 @@ TEST(MultipleCollisions, TheGlobalSolversLeaveNothingApproachingUnderTheReflecti
     expectPositivityUnderTheGlobalSolvers("method=reflection");
 }
 
+// The most kinetic energy after / before of the clusters `steps` steps of `preset` (with
+// `settings`) struck, their most momentum change / sum m |v| (those free of walls), and how
+// many contacts were struck.
+struct StruckClusters {
+    double energy = 0.0, momentum = 0.0;
+    std::uint64_t struck = 0;
+};
+StruckClusters struckClusters(const std::string& preset, const std::vector<std::string>& settings, int steps) {
+    scenes::Scene scene = scenes::loadScene(scenes::presetPath(preset));
+    for (const std::string& setting : settings) EXPECT_EQ(scenes::applySetting(scene, setting), "") << setting;
+    physics::World world = scenes::buildWorld(scene);
+    world.measureImpacts = true;
+    StruckClusters most;
+    for (int k = 0; k < steps; ++k) {
+        const physics::ImpactProperties p = physics::step(world, scene.params).impacts;
+        if (p.kineticBefore > 0.0) most.energy = std::max(most.energy, p.kineticAfter / p.kineticBefore);
+        if (p.momentumScale > 0.0) most.momentum = std::max(most.momentum, p.momentumChange / p.momentumScale);
+        most.struck += p.struck;
+    }
+    return most;
+}
+
 // The energy and momentum properties are measured over the clusters a step struck,
 // together with the spheres the step brought into contact with them: a falling sphere
 // projected onto the landing pile gives it energy and momentum. Counted without it, 300
@@ -358,24 +380,22 @@ TEST(MultipleCollisions, TheGlobalSolversLeaveNothingApproachingUnderTheReflecti
 TEST(MultipleCollisions, AFallingSphereThatJoinsAStruckClusterIsCountedWithIt) {
     for (const char* solver : {"solver=lcp", "solver=generalized-reflections"}) {
         SCOPED_TRACE(solver);
-        scenes::Scene scene = scenes::loadScene(scenes::presetPath("11_pile"));
-        ASSERT_EQ(scenes::applySetting(scene, solver), "");
-        ASSERT_EQ(scenes::applySetting(scene, "count=300"), "");
-        physics::World world = scenes::buildWorld(scene);
-        world.measureImpacts = true;
-        double most = 0.0;       // kinetic energy after / before, of the struck clusters
-        double momentum = 0.0;   // their momentum change / sum m |v|, of those free of walls
-        std::uint64_t struck = 0;
-        for (int k = 0; k < 120; ++k) {
-            const physics::ImpactProperties p = physics::step(world, scene.params).impacts;
-            if (p.kineticBefore > 0.0) most = std::max(most, p.kineticAfter / p.kineticBefore);
-            if (p.momentumScale > 0.0) momentum = std::max(momentum, p.momentumChange / p.momentumScale);
-            struck += p.struck;
-        }
-        EXPECT_GT(struck, 1000u);
-        EXPECT_LE(most, 1.0 + 1e-9);
-        EXPECT_LT(momentum, 1e-12);
+        const StruckClusters most = struckClusters("11_pile", {solver, "count=300"}, 120);
+        EXPECT_GT(most.struck, 1000u);
+        EXPECT_LE(most.energy, 1.0 + 1e-9);
+        EXPECT_LT(most.momentum, 1e-12);
     }
+}
+
+// So is a pair the passes brought together and then carried apart: in the fast gas (15),
+// whose overlaps reach 200 % of r, the later passes' projections left such a pair beyond the
+// margin, and the lecture's elastic exchange, exact for the whole world, read "✗ momentum
+// ✗ energy" on view A from step 685 (0.9956 to 1.0005 of the energy, 8 % of the momentum).
+TEST(MultipleCollisions, APairThePassesMetAndCarriedApartIsCountedTogether) {
+    const StruckClusters most = struckClusters("15_fast_gas", {}, 900);
+    EXPECT_GT(most.struck, 10000u);
+    EXPECT_LE(most.energy, 1.0 + 1e-9);
+    EXPECT_LT(most.momentum, 1e-12);
 }
 
 // Break-away is tested only where an impact struck (a contact faster than epsilon): a
