@@ -438,6 +438,26 @@ TEST(SideBySide, PresentedLabelsSayWhatEachSolverBreaks) {
     EXPECT_EQ(twoNames[0].front(), "A   shock = off, passes = 1") << "two names: both said";
 }
 
+// 14's text counts its bounces ("0.47 at the fifth", "0.43 at the seventh"); the labels say
+// which bounce their apex ratio is, so that the class finds the text's numbers on screen
+// (they showed the newest ratio alone, and the fifth had gone by unnoticed).
+TEST(SideBySide, TheLabelsNumberTheBounceOfTheirApexRatio) {
+    app::Simulation simulation(preset("14_three_answers"));
+    app::Session session(simulation);
+    session.sceneChanged();
+    ASSERT_EQ(session.runCount(), 3);
+    while (simulation.world().time < 5.0) session.advance(1.0 / 30.0);
+    const auto labels = app::comparisonReadouts(simulation, *session.comparison(), app::LabelLines::Full);
+    const auto apexLine = [](const std::vector<std::string>& lines) {
+        for (const std::string& line : lines) {
+            if (line.rfind("apex ratio", 0) == 0) return line;
+        }
+        return std::string();
+    };
+    EXPECT_EQ(apexLine(labels[0]), "apex ratio 0.467 at bounce 5 (\u03b2\u00b2 0.640)");
+    EXPECT_EQ(apexLine(labels[1]), "apex ratio 0.428 at bounce 7 (\u03b2\u00b2 0.640)");
+}
+
 // Under the continuous method only the symmetry is measured (the sequential solver, meeting
 // Bernoulli's two impacts of one instant, breaks it there too): the short line says so, not
 // "nothing broken" (which claimed all five from the symmetry alone), and so do the marks.
@@ -497,7 +517,7 @@ TEST(SideBySide, EachViewShowsItsApexRatioBesideBetaSquared) {
     EXPECT_TRUE(near(first3(shown[1]), {0.635, 0.74, 0.77}));  // 0.635, then 0.74 and 0.77
     EXPECT_LT(*std::max_element(shown[1].begin(), shown[1].end()), 0.8) << "a hop's 3.8 measured the step";
     EXPECT_TRUE(near(shown[2], {0.640}));                      // 0.640 at every bounce
-    EXPECT_EQ(labels()[2][3], "apex ratio\u00a00.640 (\u03b2\u00b2\u00a00.640)");
+    EXPECT_EQ(labels()[2][3], "apex ratio\u00a00.640 at bounce\u00a07 (\u03b2\u00b2\u00a00.640)");
 }
 
 // Beside the dock of a selected sphere, four full labels (seven lines each) left the views

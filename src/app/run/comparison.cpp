@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstring>
 #include <string_view>
 #include <utility>
 
@@ -82,12 +83,17 @@ std::vector<std::string> Comparison::setInEveryView() const {
 
 namespace {
 
-// "apex ratio 0.590 (β² 0.640)", a dash until the first bounce; `space` joins a number to
-// its name (a no-break space where the line may wrap).
+// "apex ratio 0.590 (β² 0.640)", a dash until the first bounce, "apex ratio 0.467 at bounce 5
+// (β² 0.640)" where the bounces are one ball's; `space` joins a number to its name (a
+// no-break space where the line may wrap).
 std::string apexRatioLine(const ViewReadout& view, const char* space) {
-    char ratio[32] = "\u2013";
+    char ratio[64] = "\u2013";
     if (view.apexRatio) std::snprintf(ratio, sizeof ratio, "%.3f", *view.apexRatio);
-    char line[96];
+    if (view.apexRatio && view.apexBounce > 0) {
+        std::snprintf(ratio + std::strlen(ratio), sizeof ratio - std::strlen(ratio), " at bounce%s%llu", space,
+                      static_cast<unsigned long long>(view.apexBounce));
+    }
+    char line[128];
     std::snprintf(line, sizeof line, "apex ratio%s%s (\u03b2\u00b2%s%.3f)", space, ratio, space, view.betaSquared);
     return line;
 }
@@ -276,6 +282,8 @@ std::vector<ViewReadout> viewReadouts(const Simulation& primary, const Compariso
         // "–" for ever, and the label would change size with the selection).
         readout.bouncesMeasured = followsBounces(world, run.params(), -1);
         if (run.restitution().latest()) readout.apexRatio = run.restitution().latest()->ratio();
+        // Its number where the bounces are one ball's: the texts count them ("0.47 at the fifth").
+        if (world.size() == 1) readout.apexBounce = run.restitution().latestNumber();
         readout.betaSquared = run.params().beta * run.params().beta;
         readout.work = workOf(run);
         views.push_back(std::move(readout));

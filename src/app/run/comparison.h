@@ -81,6 +81,7 @@ struct ViewReadout {
     // newest floor bounce's (none yet: not measured), beside beta^2.
     bool bouncesMeasured = false;
     std::optional<double> apexRatio;
+    std::uint64_t apexBounce = 0;  // which bounce apexRatio is (1 the first), with one sphere; else 0
     double betaSquared = 0.0;
     // The most work its method or solver took in one time step since the restart ("most a
     // step: lcp sweeps 14"); "" for the sequential passes.

@@ -59,7 +59,7 @@ bool followsBounces(const physics::World& world, const physics::Params& params, 
 void RestitutionMeter::reset() {
     tracks_.clear();
     judged_.clear();
-    droppedMeasured_ = droppedTooSlow_ = 0;
+    droppedMeasured_ = droppedTooSlow_ = droppedLabelled_ = labelled_ = 0;
     last_.clear();
     latest_.reset();
     measured_ = 0;
@@ -132,6 +132,7 @@ void RestitutionMeter::judge(const Judged& judged) {
     if (judged_.size() == kMostJudgedKept) {  // the oldest half goes: no frame of the timeline is that old
         for (auto k = judged_.begin(); k != judged_.begin() + kMostJudgedKept / 2; ++k) {
             ++(k->tooSlow ? droppedTooSlow_ : droppedMeasured_);
+            droppedLabelled_ += k->labelled;
         }
         judged_.erase(judged_.begin(), judged_.begin() + kMostJudgedKept / 2);
     }
@@ -139,7 +140,10 @@ void RestitutionMeter::judge(const Judged& judged) {
 }
 
 void RestitutionMeter::show(const Judged& judged) {
-    if (judged.labelled) latest_ = judged.bounce;
+    if (judged.labelled) {
+        latest_ = judged.bounce;
+        ++labelled_;
+    }
     if (judged.tooSlow) {
         ++tooSlow_;
         return;
@@ -154,6 +158,7 @@ void RestitutionMeter::showAt(double time) {
     latest_.reset();
     measured_ = droppedMeasured_;
     tooSlow_ = droppedTooSlow_;
+    labelled_ = droppedLabelled_;
     for (const Judged& judged : judged_) {
         if (judged.bounce.time <= time) show(judged);
     }

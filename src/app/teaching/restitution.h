@@ -70,6 +70,9 @@ public:
     // (under kMinImpactSpeedInGH) too: the apex ratio a view's label shows, where comparing
     // the methods at one coarse h is the lesson (slide 7's three answers).
     const std::optional<BounceMeasurement>& latest() const { return latest_; }
+    // Which of the labelled bounces since the restart latest() is: 1 the first ("0.47 at the
+    // fifth", 14's text says of view A's); 0 none.
+    std::uint64_t latestNumber() const { return labelled_; }
     std::uint64_t measuredCount() const { return measured_; }
     // Clean floor bounces left unmeasured because they were slower than
     // kMinImpactSpeedInGH g h (a large h makes every bounce so).
@@ -95,7 +98,8 @@ private:
     void judge(const Judged& judged);
     void show(const Judged& judged);  // as the newest: last_, latest_ and the counts
 
-    std::uint64_t droppedMeasured_ = 0, droppedTooSlow_ = 0;  // of the judged_ the cap dropped
+    std::uint64_t droppedMeasured_ = 0, droppedTooSlow_ = 0, droppedLabelled_ = 0;  // of the judged_ the cap dropped
+    std::uint64_t labelled_ = 0;  // labelled bounces shown
     std::vector<Track> tracks_;  // by sphere index
     std::vector<Judged> judged_;
     std::deque<BounceMeasurement> last_;
