@@ -342,7 +342,7 @@ try {
         (await text('time-scale-shown')) === '0.25 x', JSON.stringify(opened));
   await sleep(300);  // a frame draws the state
   const note = await js("({ shown: !document.getElementById('paused-note').hidden, text: document.getElementById('paused-note').textContent })");
-  check('paused, the view says so and how to go on', note.shown && note.text === 'Paused at t = 0.000 s: P runs, O steps', JSON.stringify(note));
+  check('paused, the view says so and how to go on', note.shown && note.text === 'Paused at t = 0.000 s: Run (P), Step (O)', JSON.stringify(note));
   const legend = await text('colour-legend');
   check('the colouring says what its colours mean', legend.startsWith('blue free, orange a bounce'), legend);
   await navigate('scene=16_bernoulli&present');

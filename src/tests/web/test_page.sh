@@ -140,20 +140,26 @@ scene=cradle&compare=order=sideways Cannot compare: order=sideways: order = 'sid
 CASES
 
 # A live link with a setting the scene refuses opens the scene without it (the link's other
-# settings taken), the refusal said in one line (it had left the student on the front page).
-said=$(DOM="$(live_dom "scene=cradle&beta=7&method=velocity")" python3 -c '
+# settings taken, one that needs another beside it too), the refusal said in one line under
+# the text (it had left the student on the front page); a refused colouring still said too.
+while read -r query expected; do
+  said=$(DOM="$(live_dom "$query")" python3 -c '
 import html, json, os, re
 dom = os.environ["DOM"]
 def exported(name):
     m = re.search(r"<pre id=\"%s\"[^>]*>([^<]*)</pre>" % name, dom)
     return json.loads(html.unescape(m.group(1)) or "null") if m else None
 table = {p["name"]: p for p in exported("parameters") or []}
-method = table.get("method", {})
-refusal = re.search(r"<p class=\"refusal\" id=\"refusal\">([^<]*)</p>", dom)
-print("method %s, beta %g: %s" % (method.get("choices", [None])[int(method.get("value", -1))], table.get("beta", {}).get("value"),
-      html.unescape(refusal.group(1)) if refusal else "nothing said"))')
-echo "live link, beta=7&method=velocity: $said"
-case "$said" in "method velocity, beta 1: The link's beta"*"out of range"*": opened without it.") ;; *) failed=1 ;; esac
+def shown(name):
+    p = table.get(name)
+    return "-" if p is None else p["choices"][int(p["value"])] if p.get("choices") else "%g" % p["value"]
+said = [html.unescape(m) for m in re.findall(r"<p class=\"refusal\" id=\"(?:link-)?refusal\">([^<]*)</p>", dom) if m]
+print("method %s, toi %s, beta %s: %s" % (shown("method"), shown("toi"), shown("beta"), " | ".join(said) or "nothing said"))')
+  if [ "$said" = "$expected" ]; then echo "live link, $query: $said"; else echo "live link, $query: $said (expected $expected)"; failed=1; fi
+done <<'CASES'
+scene=cradle&beta=7&method=velocity method velocity, toi -, beta 1: The link's beta=7: beta = 7 is out of range [0, 1]: opened without it.
+scene=cradle&method=continuous&toi=bisection&beta=7&color-by=foo method continuous, toi bisection, beta 1: The link's beta=7: beta = 7 is out of range [0, 1]: opened without it. | View: color-by foo: expected contact, speed, id or penetration
+CASES
 
 # What the view draws: the link's color-by=... and overlay=..., in the run's state; an
 # overlay it does not know is refused in one line.
