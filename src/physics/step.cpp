@@ -313,6 +313,7 @@ StepStats& StepStats::operator+=(const StepStats& o) {
     wallContacts += o.wallContacts;
     collisions += o.collisions;
     staticContacts += o.staticContacts;
+    mostSpheresInContact = std::max(mostSpheresInContact, o.mostSpheresInContact);
     passesUsed += o.passesUsed;
     passCapHits += o.passCapHits;
     lcpSweeps += o.lcpSweeps;
@@ -560,6 +561,9 @@ StepStats step(World& world, const Params& params) {
         const auto start = std::chrono::steady_clock::now();
         std::fill(world.contactState.begin(), world.contactState.end(), ContactState::Free);
         stats += solverStep(world, params, h);
+        const auto inContact = std::count_if(world.contactState.begin(), world.contactState.end(),
+                                             [](ContactState state) { return state != ContactState::Free; });
+        stats.mostSpheresInContact = std::max(stats.mostSpheresInContact, std::uint64_t(inContact));
         world.time += h;
         ++world.stepCount;
         stats.threads = threadsFor(world, params);

@@ -17,6 +17,9 @@ struct StepStats {
     std::uint64_t wallContacts = 0;    // sphere-plane contacts found in the first pass
     std::uint64_t collisions = 0;      // contacts that bounced (speed above epsilon), all passes
     std::uint64_t staticContacts = 0;  // contacts handled as static (slide 13), all passes
+    // Spheres whose contact a solver step answered (a bounce or a static contact: their
+    // contact state not free), the most of the substeps (max, not summed). Set by step().
+    std::uint64_t mostSpheresInContact = 0;
     // The continuous method: impacts handled at their instant (bounces and static
     // contacts), bisection iterations spent finding those instants, and solver steps that
     // reached Params::maxEvents() and were projected from there.

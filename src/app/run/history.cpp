@@ -11,9 +11,9 @@ void History::clear() {
     for (auto& series : ordered_) series.clear();
 }
 
-void History::add(double time, const physics::Diagnostics& d, std::uint64_t contacts, std::uint64_t bounces) {
+void History::add(double time, const physics::Diagnostics& d, std::uint64_t inContact, std::uint64_t bounces) {
     const float sample[] = {float(d.kinetic), float(d.potential), float(d.modified), float(glm::length(d.momentum)),
-                            float(contacts), float(d.maxPenetration), float(bounces)};
+                            float(inContact), float(d.maxPenetration), float(bounces)};
     static_assert(sizeof sample / sizeof sample[0] == static_cast<std::size_t>(Series::Count));
     // Kept in order (oldest first) so the plots read the vectors as they are; at
     // 600 samples the shift costs less than a frame's drawing.
@@ -31,7 +31,7 @@ const char* History::name(Series series) {
         case Series::Potential: return "potential energy (J)";
         case Series::Modified: return "modified energy E~ (J)";
         case Series::Momentum: return "|momentum| (kg m/s)";
-        case Series::Contacts: return "contacts (touching or bouncing)";
+        case Series::InContact: return "spheres in contact (most in a step)";
         case Series::Penetration: return "deepest penetration / r";
         case Series::Bounces: return "bounces since restart";
         case Series::Count: break;

@@ -10,17 +10,17 @@
 
 namespace app {
 
-enum class Series { Kinetic, Potential, Modified, Momentum, Contacts, Penetration, Bounces, Count };
+enum class Series { Kinetic, Potential, Modified, Momentum, InContact, Penetration, Bounces, Count };
 
 class History {
 public:
     static constexpr int kCapacity = 600;  // samples kept
 
     void clear();
-    // The energies, momentum and penetration from `d`; `contacts`: those touching, or the
-    // bounces one of the frame's time steps answered if more; `bounces`: contacts answered as
-    // a bounce since restart (Simulation::bouncesSinceRestart).
-    void add(double time, const physics::Diagnostics& d, std::uint64_t contacts, std::uint64_t bounces);
+    // The energies, momentum and penetration from `d`; `inContact`: the most spheres whose
+    // contact one solver step of the frame answered (StepStats::mostSpheresInContact);
+    // `bounces`: contacts answered as a bounce since restart (Simulation::bouncesSinceRestart).
+    void add(double time, const physics::Diagnostics& d, std::uint64_t inContact, std::uint64_t bounces);
     // Oldest first, for ImGui::PlotLines.
     const std::vector<float>& values(Series series) const { return ordered_[static_cast<int>(series)]; }
     std::size_t size() const { return times_.size(); }

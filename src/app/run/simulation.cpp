@@ -35,7 +35,7 @@ void Simulation::startFrom(physics::World world) {
     impactsBefore_.clear();
     behindFor_ = 0.0;
     history_.clear();
-    mostBouncesInAStep_ = 0;
+    mostInContact_ = 0;
     overlays_.reset();
     ghosts_.reset();
     alarms_.clear();
@@ -273,7 +273,7 @@ void Simulation::afterStep() {
         }
     }
     bounces_ += lastStats_.collisions;
-    mostBouncesInAStep_ = std::max(mostBouncesInAStep_, lastStats_.collisions);
+    mostInContact_ = std::max(mostInContact_, lastStats_.mostSpheresInContact);
     if (lastStats_.impacts.contacts > 0) {
         impacts_.add(lastStats_.impacts);
         if (impactsBefore_.size() == kMostImpactRecordsKept) {
@@ -324,9 +324,8 @@ void Simulation::measureNow() {
     diagnostics_ = physics::measure(world_, scene_.params);
     alarms_.checkMeasurement(diagnostics_, scene_.params, world_.time);
     alarms_.checkRest(world_, scene_.params);
-    const std::uint64_t touching = diagnostics_.sphereContacts + diagnostics_.wallContacts;
-    history_.add(world_.time, diagnostics_, std::max(touching, mostBouncesInAStep_), bounces_);
-    mostBouncesInAStep_ = 0;
+    history_.add(world_.time, diagnostics_, mostInContact_, bounces_);
+    mostInContact_ = 0;
 }
 
 }  // namespace app

@@ -153,10 +153,10 @@ private:
     double behindFor_ = 0.0;  // s of real time behindRealTime() still says so
     History history_;
     physics::Diagnostics diagnostics_;
-    // The most bounces one time step of the frame answered: the plots' contacts are at least
-    // as many (a bounce's contact lasts a solver step, gone by the frame's end: 02's plot
-    // had shown 2 of 16 bounces).
-    std::uint64_t mostBouncesInAStep_ = 0;
+    // The plots' "spheres in contact": the most whose contact a solver step of the frame
+    // answered (a bounce's contact lasts a solver step, gone by the frame's end: counted
+    // there, 02's plot of the contacts had shown 2 of 16 bounces).
+    std::uint64_t mostInContact_ = 0;
     OverlayFlags overlayFlags_;
     int selected_ = -1;
     OverlayState overlays_;

@@ -121,7 +121,7 @@ ui::Readouts makeReadouts(const Simulation& simulation, const ui::FrameTimes& ti
     r.stats = simulation.lastStepStats();
     r.diagnostics = simulation.diagnostics();
     const History& history = simulation.history();
-    for (Series s : {Series::Kinetic, Series::Potential, Series::Modified, Series::Contacts}) {
+    for (Series s : {Series::Kinetic, Series::Potential, Series::Modified, Series::InContact}) {
         r.plots.emplace_back(History::name(s), &history.values(s));
     }
     r.plotTimes = &history.times();
