@@ -38,21 +38,24 @@ void countCluster(const ContactCluster& cluster, StepStats& stats) {
 namespace {
 
 // The contacts solved together take in the pairs apart by no more than rounding: this
-// fraction of their reach. Two impacts of one instant then stay one impact when the last bit
-// of a centre has drifted: in 17's second squeeze the middle sphere came back 3e-16 m off
+// fraction of their reach or of their centres' distance from the origin, the larger (the
+// last bit of a coordinate). Two impacts of one instant then stay one impact when the last
+// bit of a centre has drifted: in 17's second squeeze the middle sphere came back 3e-16 m off
 // centre (the first solve left it 4e-16 m/s), so only one of its strikers touched, and lcp
 // and generalized reflections answered them in two steps, as the sequential solver would
 // ("symmetry ✗" on the projector for the slide that says they keep it).
 constexpr double kSameInstantGap = 1e-12;
 
-// touching(), with the pairs apart by at most kSameInstantGap of their reach (depth < 0).
-bool touchingThisInstant(const World& world, const SpherePair& pair, SphereContact& contact) {
+// A pair that touching() found apart, within kSameInstantGap of touching: its normal, and
+// its depth (m, < 0: the gap).
+bool apartByRounding(const World& world, const SpherePair& pair, SphereContact& contact) {
     const glm::dvec3 delta = world.position[pair.i] - world.position[pair.j];
     const double reach = world.radius[pair.i] + world.radius[pair.j];  // m
-    const double within = reach * (1.0 + kSameInstantGap);             // m
+    const double scale = std::max({reach, glm::length(world.position[pair.i]), glm::length(world.position[pair.j])});
+    const double within = reach + kSameInstantGap * scale;  // m
     const double distanceSquared = glm::dot(delta, delta);
-    if (!(distanceSquared <= within * within)) return false;
-    const double distance = std::sqrt(distanceSquared);  // > 0: the pair is not touching
+    if (!(distanceSquared > reach * reach && distanceSquared <= within * within)) return false;
+    const double distance = std::sqrt(distanceSquared);  // m, > reach > 0
     contact.u = delta * (1.0 / distance);
     contact.depth = reach - distance;
     return true;
@@ -75,7 +78,7 @@ void gatherContacts(World& world, const Params& params, bool withSeparating, std
         SphereContact near;
         if (ws.pairTouches[k]) {
             add(pairs[k].i, pairs[k].j, std::int32_t(pairs[k].j), ws.pairContacts[k].u, ws.pairContacts[k].depth);
-        } else if (touchingThisInstant(world, pairs[k], near)) {
+        } else if (apartByRounding(world, pairs[k], near)) {
             add(pairs[k].i, pairs[k].j, std::int32_t(pairs[k].j), near.u, near.depth);
         }
     }
