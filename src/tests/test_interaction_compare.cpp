@@ -471,7 +471,7 @@ TEST(SideBySide, PresentedLabelsUnderTheContinuousMethodSayWhatIsNotMeasured) {
     const auto full = app::comparisonReadouts(simulation, *session.comparison(), app::LabelLines::Full);
     for (std::size_t k = 0; k < 4; ++k) {
         ASSERT_FALSE(presented[k].empty());
-        EXPECT_EQ(presented[k].back(), k == 0 ? "\u2717 symmetry" : "\u2713 symmetry, others not measured (continuous)") << k;
+        EXPECT_EQ(presented[k].back(), std::string(k == 0 ? "\u2717" : "\u2713") + " symmetry, others not measured (continuous)") << k;
         ASSERT_FALSE(full[k].empty());
         EXPECT_EQ(full[k].back(), "others not measured (continuous)") << k;
     }

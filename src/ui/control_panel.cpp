@@ -442,12 +442,15 @@ void readoutsBody(const Readouts& r, const PanelState& state, PanelActions& acti
 }
 
 void viewSection(PanelState& state, PanelActions& actions) {
-    ImGui::Combo("colour by", &state.colorBy, "sphere id\0speed\0contact state\0penetration\0");
-    // The legends are the readouts' (scenes::kColorByLegends), said once.
+    // The list's names, in scenes::kColorByNames' order; the legends are the readouts'
+    // (scenes::kColorByLegends), said once.
+    static const char* const colourings[] = {"sphere id", "speed", "contact state", "penetration"};
+    static_assert(std::size(colourings) == std::size(scenes::kColorByNames));
+    ImGui::Combo("colour by", &state.colorBy, colourings, int(std::size(colourings)));
     static const std::string colours = [] {
         std::string text;
         for (std::size_t k = 1; k < std::size(scenes::kColorByLegends); ++k) {
-            text += std::string(scenes::kColorByNames[k]) + ": " + scenes::kColorByLegends[k] + ".\n";
+            text += std::string(colourings[k]) + ": " + scenes::kColorByLegends[k] + ".\n";
         }
         return text + "Penetration shows how far a stack has sunk into itself, where the views look alike. "
                       "The readouts say what the colours mean.";
@@ -555,13 +558,17 @@ void measuredClaims(const Readouts& r, PanelState& state) {
             const std::string view = c.view ? std::string(1, c.view) + "  " : "";
             lines.emplace_back(view + (c.holds ? "\u2713 " : "\u2717 ") + "\u201c" + c.says + "\u201d: " + c.measured, int(c.holds));
         }
-        if (r.claimsWatched > r.claims.size() && !r.claimsInterrupted) lines.emplace_back(claimsPendingLine(r), 2);
+        state.claimsPendingShown = std::size_t(-1);
+        if (r.claimsWatched > r.claims.size() && !r.claimsInterrupted) {
+            state.claimsPendingShown = lines.size();
+            lines.emplace_back(claimsPendingLine(r), 2);
+        }
         if (r.claimsElsewhere > 0) lines.emplace_back(claimsElsewhereLine(r), 2);
     } else if (const std::size_t waiting = r.claims.size() - state.claimsMeasuredShown;
-               waiting > 0 && state.claimsMeasuredShown < state.claimLinesShown.size()) {
-        // Held with claims measured since: the pending line (right after the claims shown)
-        // says so, in its place, else the header's count and the list disagree.
-        state.claimLinesShown[state.claimsMeasuredShown].first =
+               waiting > 0 && state.claimsPendingShown < state.claimLinesShown.size()) {
+        // Held with claims measured since: the pending line says so, in its place, else the
+        // header's count and the list disagree.
+        state.claimLinesShown[state.claimsPendingShown].first =
             std::to_string(waiting) + " more measured since: the list shows them once the pointer leaves the panel.";
     }
     const ImVec4 colours[] = {kAlarmLit, ImVec4(0.45f, 0.9f, 0.45f, 1.0f), ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled)};

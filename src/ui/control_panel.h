@@ -90,6 +90,7 @@ struct PanelState {
     std::vector<std::pair<std::string, int>> claimLinesShown;
     bool claimsWereOpen = false;                               // unfolded last frame
     std::size_t claimsMeasuredShown = 0, claimsWatchedShown = 0;  // what claimLinesShown were made from
+    std::size_t claimsPendingShown = std::size_t(-1);  // the index of its "more are measured" line, or none
     // Side by side: the parameters every other view sets itself, whose sliders move view A
     // alone (said under them).
     std::vector<std::string> onlyViewA;
