@@ -17,6 +17,7 @@ double relativeNormal(const World& world, const LcpContact& c) {
 void push(World& world, const LcpContact& c, double impulse) {
     world.velocity[c.i] += (impulse / world.mass[c.i]) * c.u;
     if (c.j >= 0) world.velocity[std::size_t(c.j)] -= (impulse / world.mass[std::size_t(c.j)]) * c.u;
+    if (world.measureImpacts && impulse != 0.0) noteAnswered(world, c.i, c.j);
 }
 
 LcpContact contactFor(const World& world, const Params& params, std::uint32_t i, std::int64_t j, std::int32_t other,

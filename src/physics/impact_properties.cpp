@@ -69,31 +69,39 @@ double kineticOf(const World& world, std::size_t i, const glm::dvec3& v) {
     return 0.5 * world.mass[i] * glm::dot(v, v);  // J
 }
 
-// A sphere the passes brought into contact joins that cluster: a falling sphere projected
-// onto a struck pile gives it energy (300 spheres landing under lcp: the struck clusters'
-// kinetic energy rose 0.02 % in a step while the whole world's fell). Each candidate pair
-// whose two spheres' velocities the step changed unites their clusters, flags merged,
-// wherever the pair ends: the later passes' projections may carry a pair that met in the
-// passes far apart (the fast gas, overlaps of up to 200 % of r: a pair that met in the
-// second pass ended beyond the margin, and a cluster the world's exact exchange of energy
-// and momentum had passed through read "✗ momentum ✗ energy" at step 685). Two clusters
-// joined that did not meet keep together what each keeps; the momentum of the pair is
-// then not measured if either touched a wall.
-void joinWhatTheStepJoined(World& world, ImpactScratch& scratch) {
-    const auto changed = [&](std::uint32_t i) { return world.velocity[i] != scratch.velocityBefore[i]; };
-    for (const SpherePair& pair : world.workspace.visitOrder) {
-        std::uint32_t a = root(scratch.cluster, pair.i), b = root(scratch.cluster, pair.j);
-        if (a == b || !changed(pair.i) || !changed(pair.j)) continue;
-        scratch.cluster[a] = b;
-        scratch.clusterFlags[b] |= scratch.clusterFlags[a];
-    }
+// The clusters of a and b become one, their flags merged.
+void join(ImpactScratch& scratch, std::uint32_t a, std::uint32_t b) {
+    a = root(scratch.cluster, a);
+    b = root(scratch.cluster, b);
+    if (a == b) return;
+    scratch.cluster[a] = b;
+    scratch.clusterFlags[b] |= scratch.clusterFlags[a];
 }
 
 }  // namespace
 
+// Every response the step makes joins the clusters of its two spheres, wherever they end:
+// a falling sphere projected onto a struck pile and answered there gives it energy (300
+// spheres landing under lcp: counted apart, the struck clusters' kinetic energy rose 0.02 %
+// in a step while the whole world's fell), and in the fast gas (overlaps of up to 200 % of r)
+// the later passes' projections carried a pair that met in the second pass beyond the margin
+// (joined by distance at the step's end, a cluster the world's exact exchange had passed
+// through read "✗ momentum ✗ energy" at step 685).
+void noteAnswered(World& world, std::uint32_t i, std::int64_t other) {
+    ImpactScratch& scratch = world.workspace.impacts;
+    if (!scratch.open) return;
+    if (other >= 0) {
+        join(scratch, i, std::uint32_t(other));
+    } else {
+        scratch.clusterFlags[root(scratch.cluster, i)] |= kTouchesPlane;
+    }
+}
+
 void beginMeasuringImpacts(World& world, const Params& params) {
+    world.workspace.impacts.open = false;
     if (!world.measureImpacts) return;
     ImpactScratch& scratch = world.workspace.impacts;
+    scratch.open = true;
     scratch.velocityBefore = world.velocity;
     findTouching(world, scratch);
     scratch.cluster.resize(world.size());
@@ -112,14 +120,14 @@ void beginMeasuringImpacts(World& world, const Params& params) {
 }
 
 void endMeasuringImpacts(World& world, StepStats& stats) {
-    if (!world.measureImpacts) return;
+    if (!world.workspace.impacts.open) return;
     ImpactScratch& scratch = world.workspace.impacts;
+    scratch.open = false;
     // A sphere the passes pushed into a wall took an impulse from it: its cluster is not free.
     // (Within the margin: one projected out of a wall ends touching it.)
     for (std::uint32_t i = 0; i < world.size(); ++i) {
         if (nearAPlane(world, i, world.workspace.margin)) scratch.clusterFlags[root(scratch.cluster, i)] |= kTouchesPlane;
     }
-    joinWhatTheStepJoined(world, scratch);
     ImpactProperties p;
     p.contacts = scratch.contacts.size();
     glm::dvec3 momentum(0.0);  // kg m/s

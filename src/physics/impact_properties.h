@@ -49,6 +49,7 @@ struct ImpactScratch {
     std::vector<MeasuredContact> contacts;
     std::vector<std::uint32_t> cluster;      // per sphere, its cluster's root (union-find)
     std::vector<std::uint8_t> clusterFlags;  // per root: 1 touches a plane, 2 struck
+    bool open = false;  // between beginMeasuringImpacts and endMeasuringImpacts
 };
 
 }  // namespace physics

@@ -20,7 +20,7 @@ void particlesVelocityAndPosition(World& world, const Params& params, StepStats&
                                   int pass, PositionResponse response, bool respond) {
     std::vector<double>& clearance = world.workspace.wallClearance;  // m
     const bool byWavefronts = passesByWavefronts(world, params);
-    const bool inLanes = byWavefronts || (params.order == PairOrder::Colored && !world.recordContacts);
+    const bool inLanes = byWavefronts || (params.order == PairOrder::Colored && !world.answersOneAtATime());
     const auto visit = [&](const SpherePair* pairs, std::uint32_t first, std::uint32_t last, StepStats& s) {
         std::uint32_t k = first;
         if (inLanes) {  // a wavefront's or a colour's pairs, several side by side (colored_lanes.cpp)

@@ -93,7 +93,7 @@ class Sweep {
     // that order, so the result is the same bit for bit), several side by side.
     void insideFirstRound(std::uint32_t k) {
         static const bool wideLanes = laneWidths().back() >= 4;
-        if (!wideLanes || !clearanceKept() || world_.recordContacts) {
+        if (!wideLanes || !clearanceKept() || world_.answersOneAtATime()) {
             forEachPairInside(k, [&](const SpherePair& pair) { inside(pair, true); });
             return;
         }
@@ -284,7 +284,7 @@ class Sweep {
 
     // Whether the first round off the frozen level goes several spheres side by side: in the
     // position stages, without the contact log (else one sphere at a time, in byLevel's order).
-    bool frozenInLanes() const { return moves_ && !world_.recordContacts; }
+    bool frozenInLanes() const { return moves_ && !world_.answersOneAtATime(); }
 
     // spheres[0, count) into `out` by how many frozen spheres each has below, fewest first
     // (a counting sort): the pushes off the frozen level then run as many turns in each

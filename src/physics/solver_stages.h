@@ -22,7 +22,7 @@ int solverThreads(const World& world, const Params& params);
 
 // The threads a stage may use: one while contacts are logged (the log is in pass order).
 inline int threadsFor(const World& world, const Params& params) {
-    return world.recordContacts ? 1 : solverThreads(world, params);
+    return world.answersOneAtATime() ? 1 : solverThreads(world, params);
 }
 
 // [0, n) cut into `tasks` ranges of nearly equal size: range t is [begin, end).
@@ -726,6 +726,10 @@ bool contactsStillApproach(World& world, const Params& params);
 // no-op without it.
 void beginMeasuringImpacts(World& world, const Params& params);
 void endMeasuringImpacts(World& world, StepStats& stats);
+// Between the two: a response changed the velocity of sphere i and of `other` (a sphere; < 0
+// a plane, or nothing else moved): their clusters are one for the measures (a plane's: not
+// free). Every response calls it while World::measureImpacts (one at a time: answersOneAtATime).
+void noteAnswered(World& world, std::uint32_t i, std::int64_t other);
 
 template <class Pass>
 void runPasses(World& world, const Params& params, StepStats& stats, const Pass& pass) {

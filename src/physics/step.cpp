@@ -419,6 +419,7 @@ Response respondToContact(World& world, const SpherePair& pair, const SphereCont
     record(world, pair.i, response);
     record(world, pair.j, response);
     count(stats, response);
+    if (world.measureImpacts && response != Response::None) noteAnswered(world, pair.i, pair.j);
     stats.sphereContacts += pass == 0;
     if (world.recordContacts && response != Response::None) {
         ContactEvent event{pair.i, static_cast<std::int32_t>(pair.j), pass,
@@ -439,6 +440,7 @@ Response respondToContact(World& world, std::uint32_t i, std::size_t planeIndex,
     const Response response = respondToPlane(world.velocity[i], face.normal, params);
     record(world, i, response);
     count(stats, response);
+    if (world.measureImpacts && response != Response::None) noteAnswered(world, i, -1);
     stats.wallContacts += pass == 0;
     if (world.recordContacts && response != Response::None) {
         const double distance = glm::dot(world.position[i] - face.point, face.normal);  // m
@@ -459,6 +461,7 @@ Response respondToFrozenContact(World& world, std::uint32_t i, std::uint32_t fro
     const Response response = respondToFrozenSphere(world.velocity[i], world.velocity[frozen], contact.u, params);
     record(world, i, response);
     count(stats, response);
+    if (world.measureImpacts && response != Response::None) noteAnswered(world, i, frozen);
     if (world.recordContacts && response != Response::None) {  // the frozen sphere: infinitely heavy
         ContactEvent event{i, static_cast<std::int32_t>(frozen), params.passes, response == Response::Bounce,
                            contact.u, world.position[i] - world.radius[i] * contact.u, contact.depth,
@@ -555,8 +558,9 @@ StepStats step(World& world, const Params& params) {
     const double h = params.solverStep();
     AutomaticThreads& automatic = world.workspace.automaticThreads;
     for (int s = 0; s < params.substeps; ++s) {
-        // A step that logs its contacts runs on one thread whatever the choice: not timed.
-        const bool timed = threadsChosenAutomatically(world, params) && !world.recordContacts;
+        // A step that logs its contacts or measures its impacts runs on one thread whatever
+        // the choice: not timed.
+        const bool timed = threadsChosenAutomatically(world, params) && !world.answersOneAtATime();
         if (timed) automatic.next(automaticMany());
         const auto start = std::chrono::steady_clock::now();
         std::fill(world.contactState.begin(), world.contactState.end(), ContactState::Free);

@@ -15,7 +15,7 @@ bool passesByWavefronts(const World& world, const Params& params) {
     static const bool wideLanes = laneWidths().back() >= 4;
     const bool positionStage = params.method == Method::PositionBased || params.method == Method::Reflection;
     return wideLanes && positionStage && params.order != PairOrder::Colored && !solvesTogether(params.solver) &&
-           !world.recordContacts;
+           !world.answersOneAtATime();
 }
 
 namespace {

@@ -364,6 +364,9 @@ struct World {
     // Measure the velocity stage's impact properties (impact_properties.h) into
     // StepStats::impacts (costs a pass over the candidate pairs: off unless shown).
     bool measureImpacts = false;
+    // The contact log and the impact measures follow every response as it is made: the step
+    // then answers its contacts on one thread, one at a time (the same state bit for bit).
+    bool answersOneAtATime() const { return recordContacts || measureImpacts; }
 
     Workspace workspace;
 
