@@ -422,7 +422,8 @@ TEST(SideBySide, PresentedLabelsSayWhatEachSolverBreaks) {
     ASSERT_EQ(session.runCount(), 4);
     while (simulation.world().time < 0.5) session.advance(1.0 / 30.0);
     const auto labels = app::comparisonReadouts(simulation, *session.comparison(), app::LabelLines::Presented);
-    const std::vector<std::string> expected{"\u2717 symmetry", "\u2717 energy", "\u2713 nothing broken", "\u2713 nothing broken"};
+    const std::vector<std::string> expected{"\u2717\u00a0symmetry", "\u2717\u00a0energy", "\u2713\u00a0nothing broken",
+                                            "\u2713\u00a0nothing broken"};
     for (std::size_t k = 0; k < 4; ++k) {
         ASSERT_FALSE(labels[k].empty());
         EXPECT_EQ(labels[k].back(), expected[k]) << k;
@@ -471,7 +472,7 @@ TEST(SideBySide, PresentedLabelsUnderTheContinuousMethodSayWhatIsNotMeasured) {
     const auto full = app::comparisonReadouts(simulation, *session.comparison(), app::LabelLines::Full);
     for (std::size_t k = 0; k < 4; ++k) {
         ASSERT_FALSE(presented[k].empty());
-        EXPECT_EQ(presented[k].back(), std::string(k == 0 ? "\u2717" : "\u2713") + " symmetry, others not measured (continuous)") << k;
+        EXPECT_EQ(presented[k].back(), std::string(k == 0 ? "\u2717" : "\u2713") + "\u00a0symmetry, others not measured (continuous)") << k;
         ASSERT_FALSE(full[k].empty());
         EXPECT_EQ(full[k].back(), "others not measured (continuous)") << k;
     }

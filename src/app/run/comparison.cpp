@@ -136,16 +136,18 @@ std::string namesMarked(const std::string& marks, const std::string& mark) {
 }
 
 std::string brokenProperties(const std::string& marks) {
+    // A mark stays with its first word (a no-break space, U+00A0): four narrow labels on a
+    // projector had "✗" alone above "break-away".
     const std::string broken = namesMarked(marks, "\u2717\u00a0");
     if (marks.find("not measured") == std::string::npos) {
-        if (!broken.empty()) return "\u2717 " + broken;
-        return marks.find("\u2713") != std::string::npos ? "\u2713 nothing broken" : "\u2013 none tested yet";
+        if (!broken.empty()) return "\u2717\u00a0" + broken;
+        return marks.find("\u2713") != std::string::npos ? "\u2713\u00a0nothing broken" : "\u2013\u00a0none tested yet";
     }
     // The continuous method measures the symmetry alone: what it found, and that the others
     // are not measured ("nothing broken" would claim five properties from the symmetry).
-    if (!broken.empty()) return "\u2717 " + broken + ", " + kOthersNotMeasured;
+    if (!broken.empty()) return "\u2717\u00a0" + broken + ", " + kOthersNotMeasured;
     const std::string kept = namesMarked(marks, "\u2713\u00a0");
-    return kept.empty() ? "\u2013 not measured (continuous)" : "\u2713 " + kept + ", " + kOthersNotMeasured;
+    return kept.empty() ? "\u2013\u00a0not measured (continuous)" : "\u2713\u00a0" + kept + ", " + kOthersNotMeasured;
 }
 
 }  // namespace
