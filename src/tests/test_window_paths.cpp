@@ -344,6 +344,24 @@ TEST(WindowPaths, AClickThatMissesASphereKeepsTheExplanation) {
 }
 
 
+// F12's confirmation lies over the lower views' spheres: it goes after 2 s, where a result
+// or a refusal stays 8 (in front of a class, it stayed in the next screenshot too).
+TEST(WindowPaths, AScreenshotsConfirmationGoesSoonerThanARefusal) {
+    app::Simulation simulation(scenes::loadScene(scenes::presetPath("09_column")));
+    app::Session session(simulation);
+    app::InteractionInput input(session);
+    input.sayBriefly(10.0, "saved screenshot_0001.png");
+    input.expireMessage(11.5);
+    EXPECT_EQ(input.tools().message, "saved screenshot_0001.png");
+    input.expireMessage(12.5);
+    EXPECT_EQ(input.tools().message, "");
+    input.say(20.0, "cannot %s", "shoot here");
+    input.expireMessage(27.0);
+    EXPECT_EQ(input.tools().message, "cannot shoot here") << "a refusal stays as long as before";
+    input.expireMessage(28.5);
+    EXPECT_EQ(input.tools().message, "");
+}
+
 // The unfolded claims' list holds still while the pointer is over the panel (a new line
 // would push the sliders under it), and then says how many it will add: a teacher who left
 // the pointer on the panel read "9 of 9 measured" above a list of 4 and "5 more are measured

@@ -16,10 +16,17 @@ void InteractionInput::say(double now, const char* format, ...) {
     va_end(args);
     tools_.message = text;
     messageTime_ = now;
+    messageSeconds_ = kMessageSeconds;
+}
+
+void InteractionInput::sayBriefly(double now, const std::string& text) {
+    tools_.message = text;
+    messageTime_ = now;
+    messageSeconds_ = kBriefMessageSeconds;
 }
 
 void InteractionInput::expireMessage(double now) {
-    if (!tools_.message.empty() && now - messageTime_ > kMessageSeconds) tools_.message.clear();
+    if (!tools_.message.empty() && now - messageTime_ > messageSeconds_) tools_.message.clear();
 }
 
 bool InteractionInput::takeFoldReadouts() {

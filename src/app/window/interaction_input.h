@@ -15,6 +15,7 @@ namespace app {
 class InteractionInput {
 public:
     static constexpr double kMessageSeconds = 8.0;  // s a result or refusal stays on screen
+    static constexpr double kBriefMessageSeconds = 2.0;  // s a confirmation stays (F12's)
     static constexpr float kClickPixels = 5.0f;     // a press that moves less is a click (select)
 
     explicit InteractionInput(Session& session) : session_(session), suggested_(tools_.compareText) {
@@ -58,6 +59,9 @@ public:
 
     // The message centred above the timeline bar, for a few seconds from `now`.
     void say(double now, const char* format, ...) __attribute__((format(printf, 3, 4)));
+    // A confirmation, over the views for kBriefMessageSeconds only: it lies over the lower
+    // views' spheres (F12's, in front of a class, stayed 8 s, in the next screenshot too).
+    void sayBriefly(double now, const std::string& text);
 
 private:
 
@@ -66,6 +70,7 @@ private:
     std::string suggested_;       // the bar's last offer: while it shows it, the next scene's replaces it
     bool comparingSuggestion_ = false;  // side by side with the bar's offer: the next scene's replaces it
     double messageTime_ = 0.0;    // s, window time of tools_.message
+    double messageSeconds_ = kMessageSeconds;  // s it stays
     bool pressInScene_ = false;   // the left button went down over the scene, not over a window
     int dragView_ = 0;
     bool foldReadouts_ = false;

@@ -558,7 +558,9 @@ void WindowApp::frame(double dt) {
     if (screenshotRequested_) {
         const std::string path = writeOutput(ui::PanelState::FileButton::Screenshot, "screenshot", "png",
                                              [&](const std::string& p) { return saveScreenshot(p); });
-        if (!path.empty()) input_.say(window_->time(), "screenshot: %s", path.c_str());  // F12: the panel may be folded
+        // F12: the panel may be folded or presented, so the views say it, briefly; the folder is
+        // the Screenshot button's note.
+        if (!path.empty()) input_.sayBriefly(window_->time(), "saved " + std::filesystem::path(path).filename().string());
         screenshotRequested_ = false;
     }
 }
