@@ -603,6 +603,7 @@ bool labelsAboveSliders(const std::vector<const scenes::Parameter*>& sliders) {
 struct UnderText {
     std::vector<std::string> notes;   // the view-A note (once), the numbers the texts point at
     std::string status;               // "t = 3.450 s, paused (P runs, O steps)"
+    std::string statusRoom;           // the status as it reads paused: the room it keeps
     std::vector<std::string> alarms;  // the lit alarms' headlines
     float restitutionHeight = 0.0f;   // under β, its measured apex ratios (measuredRestitution)
     const char* keys = "Esc: all controls  P: pause  R: restart  [ ]: preset  Tab: views only";
@@ -619,7 +620,7 @@ float heightUnderText(const std::vector<const scenes::Parameter*>& sliders, cons
         if (withRefusal && state.refusedName == p->name && !state.refusal.empty()) below += lines(state.refusal.c_str());
     }
     for (const std::string& note : under.notes) below += lines(note.c_str());
-    below += lines(under.status.c_str()) + under.restitutionHeight;
+    below += std::max(lines(under.status.c_str()), lines(under.statusRoom.c_str())) + under.restitutionHeight;
     for (const std::string& alarm : under.alarms) below += lines(alarm.c_str());
     return below;
 }
@@ -668,16 +669,24 @@ UnderText underPresentedText(const std::vector<const scenes::Parameter*>& slider
     under.notes.push_back(numbers);
     std::snprintf(numbers, sizeof numbers, "|p|\u00a0%.4g\u00a0kg\u00a0m/s", glm::length(r.diagnostics.momentum));
     under.notes.push_back(numbers);
-    char status[128];
-    std::snprintf(status, sizeof status, "t = %.3f s, %s", r.time, r.paused ? "paused (P runs, O steps)" : "running");
-    under.status = status;
-    if (r.timeScale != 1.0) {  // the class should know that what it sees is slowed down (or sped up)
-        std::snprintf(status, sizeof status, r.timeScale < 1.0 ? ", slow motion %.3g\u00d7" : ", %.3g\u00d7 real time", r.timeScale);
-        under.status += status;
-    }
-    // The full layout says why in orange; the texts quote times, so the class should know
-    // that this computer draws them slower than they pass.
-    if (r.behindRealTime) under.status += ", behind real time";
+    // The status as it reads now, and paused: its room is the larger, so that P does not
+    // move the sliders above it when the line gets shorter (a teacher saw them jump a line).
+    const auto statusLine = [&](bool paused) {
+        char status[128];
+        std::snprintf(status, sizeof status, "t = %.3f s, %s", r.time, paused ? "paused (P runs, O steps)" : "running");
+        std::string line = status;
+        if (r.timeScale != 1.0) {  // the class should know that what it sees is slowed down (or sped up)
+            std::snprintf(status, sizeof status, r.timeScale < 1.0 ? ", slow motion %.3g\u00d7" : ", %.3g\u00d7 real time",
+                          r.timeScale);
+            line += status;
+        }
+        // The full layout says why in orange; the texts quote times, so the class should know
+        // that this computer draws them slower than they pass.
+        if (r.behindRealTime) line += ", behind real time";
+        return line;
+    };
+    under.status = statusLine(r.paused);
+    under.statusRoom = statusLine(true);
     for (const Readouts::Alarm& alarm : alarms) {
         if (alarm.lit) under.alarms.push_back(alarm.text);
     }
@@ -732,7 +741,10 @@ void presentedPanel(const scenes::Scene& scene, const Readouts& readouts, const 
     // slide's item spacings.
     const float room = ImGui::GetContentRegionAvail().y - below;  // px
     const float font = ImGui::GetFontSize(), spacings = (scene.slide.empty() ? 1.0f : 2.0f) * ImGui::GetStyle().ItemSpacing.y;
-    const float cut = room > spacings + font ? std::fmod(room - spacings, font) : 0.0f;  // px, left under the fold
+    // Where all of it fits (as it did in the last frame) there is no fold: the claims' line
+    // under a short text was cut in half by the fold set for the text's lines.
+    const bool fits = state.presentedContentHeight <= room;
+    const float cut = !fits && room > spacings + font ? std::fmod(room - spacings, font) : 0.0f;  // px, under the fold
     ImGui::BeginChild("presented", ImVec2(0.0f, room - cut));
     scrollToTopIfAsked(state);
     sceneText(scene);
@@ -741,6 +753,7 @@ void presentedPanel(const scenes::Scene& scene, const Readouts& readouts, const 
         ImGui::Separator();
         drawSliders(inSight, sliders.size(), !restitutionInSight);
     }
+    state.presentedContentHeight = ImGui::GetCursorPosY();  // px, the scrolled content's, whatever its scroll
     ImGui::EndChild();
     ImGui::SetCursorPosY(ImGui::GetCursorPosY() + cut);  // the keys stay at the bottom (a Dummy adds a spacing)
     ImGui::Separator();
@@ -750,6 +763,10 @@ void presentedPanel(const scenes::Scene& scene, const Readouts& readouts, const 
     const ImVec4 white = ImGui::GetStyleColorVec4(ImGuiCol_Text), grey = ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled);
     for (const std::string& note : under.notes) wrappedColored(note == kOnlyViewA ? grey : white, note);
     wrappedColored(readouts.paused || readouts.behindRealTime ? kNoteOrange : white, under.status);
+    const float wrap = ImGui::GetContentRegionAvail().x;
+    const float spare = ImGui::CalcTextSize(under.statusRoom.c_str(), nullptr, false, wrap).y -
+                        ImGui::CalcTextSize(under.status.c_str(), nullptr, false, wrap).y;  // px: running, a line shorter
+    if (spare > 0.0f) ImGui::SetCursorPosY(ImGui::GetCursorPosY() + spare);
     for (const std::string& alarm : under.alarms) wrappedColored(kAlarmLit, alarm);
     wrappedColored(ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled), under.keys);
 }
