@@ -20,7 +20,8 @@ namespace physics {
 // The threads the solver uses for this world (params.threads resolved).
 int solverThreads(const World& world, const Params& params);
 
-// The threads a stage may use: one while contacts are logged (the log is in pass order).
+// The threads a stage may use: one while contacts are logged (the log is in pass order) or
+// the impacts measured (World::answersOneAtATime).
 inline int threadsFor(const World& world, const Params& params) {
     return world.answersOneAtATime() ? 1 : solverThreads(world, params);
 }

@@ -314,7 +314,9 @@ std::vector<Parameter> makeTable() {
                             "waiting, runs of sphere numbers, or from 40 960 spheres places of the world, then "
                             "the pairs between blocks by wavefronts and strips). Otherwise each thread takes the pairs of its "
                             "slab of the box, and waits where a sphere met another thread's pair last. "
-                            "Scenes under 4096 spheres use one thread whatever the count. "
+                            "Scenes under 4096 spheres use one thread whatever the count, and while the contacts "
+                            "are logged or the impacts measured (the window's and the page's scenes up to 2000 "
+                            "spheres) the contacts are answered one pair at a time, in the pair order. "
                             "A count set by hand is kept when other programs take the cores: then each stage "
                             "waits for a thread that has no core (10k spheres beside a busy program: 2 threads "
                             "4.5 times one's time); auto falls back to one.",
