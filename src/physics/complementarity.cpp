@@ -73,8 +73,8 @@ void gatherContacts(World& world, const Params& params, bool withSeparating, std
         // A contact that separates faster than epsilon takes no part: held at c+ >= 0 it
         // could be pushed to 0, and gain lambda c / 2 of energy from nowhere. Separating by
         // rounding is not separating (kConvergedApproachSpeed, at epsilon = 0): 18's row of
-        // three, which the first solve left 2e-15 m/s apart, met the far wall as one spring of
-        // three contacts less one, and lcp's next pass lost 3.6 % of the energy.
+        // three, which the first solve left 2e-15 m/s apart, met the far wall with one of its
+        // two contacts left out, and lcp's next pass lost 3.6 % of the energy.
         if (!withSeparating && relativeNormal(world, c) > std::max(params.epsilon, kConvergedApproachSpeed)) return;
         contacts.push_back(c);
     };

@@ -109,7 +109,7 @@ void beginMeasuringImpacts(World& world, const Params& params) {
     scratch.clusterFlags.assign(world.size(), 0);
     for (MeasuredContact& c : scratch.contacts) {
         c.approachBefore = approach(world, c);
-        if (c.j >= 0) scratch.cluster[root(scratch.cluster, c.i)] = root(scratch.cluster, std::uint32_t(c.j));
+        if (c.j >= 0) join(scratch, c.i, std::uint32_t(c.j));
     }
     for (const MeasuredContact& c : scratch.contacts) {
         std::uint8_t& flags = scratch.clusterFlags[root(scratch.cluster, c.i)];
