@@ -1,6 +1,6 @@
 // What a machine without a GPU can show: the time to draw N spheres headless
 // (OSMesa's llvmpipe, or EGL), 1280x720, Renderer::draw + glFinish, median of several
-// frames after a warm-up, with and without MSAA. The spheres are the pile preset's
+// frames after a warm-up, with hard outlines, blended ones (the window's) and MSAA. The spheres are the pile preset's
 // lattice as generated (radius 5 cm x (1000/N)^(1/3), the volume of the pile), seen
 // by the default camera fitted to the box, coloured by id. Also prints the time to
 // copy the world into a FrameSnapshot (the demo does it every frame) and how much of
@@ -34,17 +34,27 @@ const bench::Usage kUsage{"spheres_bench_render",
     "Times drawing N spheres headless at 1280x720 (draw + glFinish); prints a markdown table.\n"
     "  --backend B    auto (OSMesa, else EGL), osmesa or egl (default auto)\n"
     "  --n LIST       sphere counts (default 1k,10k,100k,1M)\n"
-    "  --samples LIST MSAA samples per pixel, 0 for none (default 0,4: the window's 4)\n"
+    "  --outlines LIST how the spheres' outlines are drawn: hard, blended (one sample: the window's\n"
+    "                 up to 5000 spheres) or a number of MSAA samples (alpha to coverage)\n"
+    "                 (default hard,blended,4)\n"
     "  --frames F     timed frames per row, after 2 untimed ones (default 7)\n"
     "  --quick        --n 1k,10k,100k --frames 3\n"
-    "  --save DIR     also write each drawn frame as DIR/render_<N>_<samples>.png\n"};
+    "  --save DIR     also write each drawn frame as DIR/render_<N>_<outlines>.png\n"};
 
 [[noreturn]] void usageError(const std::string& why) { bench::usageError(kUsage, why); }
+
+// One way of drawing the outlines: samples per pixel (0: none), and with none, whether
+// they are blended (RenderStyle::antialiasEdges).
+struct Outlines {
+    int samples = 0;
+    bool blended = false;
+    std::string name() const { return samples > 0 ? std::to_string(samples) + "×" : blended ? "blended" : "hard"; }
+};
 
 struct Options {
     platform::HeadlessBackend backend = platform::HeadlessBackend::Auto;
     std::vector<int> counts{1000, 10000, 100000, 1000000};
-    std::vector<int> samples{0, 4};
+    std::vector<Outlines> outlines{{0, false}, {0, true}, {4, true}};
     int frames = 7;
     std::string saveDirectory;  // empty: write no images
 };
@@ -70,17 +80,21 @@ Options parseOptions(int argc, char** argv) {
             for (int count : o.counts) {
                 if (count > scenes::kMaxGeneratedCount) usageError("--n: at most 1M spheres");
             }
-        } else if (option == "--samples") {
-            o.samples.clear();
+        } else if (option == "--outlines") {
+            o.outlines.clear();
             std::size_t start = 0;
             while (start <= value.size()) {
                 const std::size_t comma = std::min(value.find(',', start), value.size());
                 const std::string part = value.substr(start, comma - start);
                 char* end = nullptr;
                 const long n = std::strtol(part.c_str(), &end, 10);
-                if (part.empty() || *end != '\0' || n < 0 || n > 16)
-                    usageError("--samples: expected numbers from 0 to 16, e.g. 0,4");
-                o.samples.push_back(int(n));
+                if (part == "hard" || part == "blended") {
+                    o.outlines.push_back({0, part == "blended"});
+                } else if (!part.empty() && *end == '\0' && n >= 1 && n <= 16) {
+                    o.outlines.push_back({int(n), true});
+                } else {
+                    usageError("--outlines: expected hard, blended or samples from 1 to 16, e.g. hard,blended,4");
+                }
                 start = comma + 1;
             }
         } else if (option == "--save") {
@@ -142,7 +156,7 @@ int main(int argc, char** argv) {
     std::printf("GL: %s backend, %s, %s%s%s\n\n", context->name(), glText(GL_RENDERER),
                 glText(GL_VERSION), threads ? ", LP_NUM_THREADS=" : "", threads ? threads : "");
     std::printf(
-        "| N | MSAA | ms per frame, every sphere | ms per frame, hidden ones left out | "
+        "| N | outlines | ms per frame, every sphere | ms per frame, hidden ones left out | "
         "frames per second | spheres drawn | same image | snapshot ms | covered |\n"
         "|---:|---:|---:|---:|---:|---:|:---:|---:|---:|\n");
     std::fflush(stdout);
@@ -169,12 +183,13 @@ int main(int argc, char** argv) {
         camera.reset(glm::vec3(-half.x, -half.y, 0.0f), glm::vec3(half.x, half.y, 2.0f * half.z),
                      float(kWidth) / float(kHeight));
 
-        for (int samples : o.samples) {
-            if (const std::string why = target.resize(kWidth, kHeight, samples); !why.empty()) {
-                std::fprintf(stderr, "spheres_bench_render: %d samples: %s\n", samples,
+        for (const Outlines& outlines : o.outlines) {
+            if (const std::string why = target.resize(kWidth, kHeight, outlines.samples); !why.empty()) {
+                std::fprintf(stderr, "spheres_bench_render: %d samples: %s\n", outlines.samples,
                              why.c_str());
                 return 2;
             }
+            renderer.style.antialiasEdges = outlines.samples > 0 || outlines.blended;
             // Every sphere sent, and the hidden ones left out, frame after frame.
             std::vector<double> frames[2];
             for (int frame = 0; frame < 2 + o.frames; ++frame) {
@@ -195,7 +210,7 @@ int main(int argc, char** argv) {
             const render::Image whole = target.read();
             if (!o.saveDirectory.empty()) {
                 const std::string path = o.saveDirectory + "/render_" + std::to_string(count) +
-                                         "_" + std::to_string(samples) + ".png";
+                                         "_" + outlines.name() + ".png";
                 if (!render::writePng(path, culled.width, culled.height, culled.rgba))
                     std::fprintf(stderr, "spheres_bench_render: cannot write %s\n", path.c_str());
             }
@@ -204,7 +219,7 @@ int main(int argc, char** argv) {
             const double all = bench::median(frames[0]), seen = bench::median(frames[1]);
             std::printf("| %s | %s | %.1f | %.1f | %.1f | %.1f %% | %s | %.2f | %.0f %% |\n",
                         bench::grouped(count).c_str(),
-                        samples > 0 ? (std::to_string(samples) + "×").c_str() : "off",
+                        outlines.name().c_str(),
                         1e3 * all, 1e3 * seen, 1.0 / seen, 100.0 * double(drawn) / count,
                         differingPixels(culled, whole) == 0 ? "yes" : "**no**",
                         1e3 * bench::median(snapshotSeconds), 100.0 * differingPixels(whole, empty));

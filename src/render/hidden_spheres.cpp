@@ -19,11 +19,11 @@ constexpr float kShaderDepthNoise = 1e-3f;
 
 // Pixels' widths (at the sphere) by which sphere.frag's edge may differ from the
 // outline. Without samples a fragment is kept while its centre ray meets the sphere:
-// the margin is for rounding. With alpha to coverage, coverage is 1 from half of
+// the margin is for rounding. With soft edges (alpha to coverage or blending), coverage is 1 from half of
 // fwidth(miss) inside the outline and 0 from as far outside; fwidth adds two
 // finite differences of at most a pixel's width each.
 constexpr float kEdgeMarginPixels = 0.25f;
-constexpr float kEdgeMarginSampledPixels = 1.0f;
+constexpr float kEdgeMarginSoftPixels = 1.0f;
 // Pixels by which the spans of pixels within a distance of a centre are narrowed
 // (covered) or widened (tested), for the rounding of the ray through a pixel centre.
 constexpr float kSpanSlackPixels = 0.02f;
@@ -249,14 +249,14 @@ std::size_t HiddenSphereFinder::findCovers(const std::vector<ViewSphere>& sphere
 }
 
 void HiddenSphereFinder::find(std::vector<ViewSphere>& spheres, const FrameContext& frame,
-                              bool multisampled, int depthBits, int threadsAsked) {
+                              bool softEdges, int depthBits, int threadsAsked) {
     for (ViewSphere& sphere : spheres) sphere.hidden = false;
     covered_ = false;
     width_ = int(frame.viewportSize.x);
     height_ = int(frame.viewportSize.y);
     if (width_ <= 0 || height_ <= 0 || depthBits <= 0) return;
     const int threads = threadsFor(spheres.size(), threadsAsked);
-    const float margin = multisampled ? kEdgeMarginSampledPixels : kEdgeMarginPixels;
+    const float margin = softEdges ? kEdgeMarginSoftPixels : kEdgeMarginPixels;
     // Spheres too small on the screen to cover a pixel whole (a million under MSAA):
     // few could be hidden, and testing them all would cost more than it saves.
     if (findCovers(spheres, frame, margin, threads) < spheres.size() / kFewestCovering) return;

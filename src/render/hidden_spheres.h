@@ -36,11 +36,13 @@ struct ViewSphere {
 
 class HiddenSphereFinder {
   public:
-    // Sets `hidden` on the point-sprite spheres that no pixel can show. multisampled:
-    // the target has samples and edges use alpha to coverage; depthBits: of the
+    // Sets `hidden` on the point-sprite spheres that no pixel can show. softEdges:
+    // sphere.frag's alpha is the edge's coverage (alpha to coverage on a multisampled
+    // target, or blended over what is behind, the spheres drawn farthest first;
+    // either way a pixel is the sphere's alone where its coverage is 1); depthBits: of the
     // target's depth buffer (0: none, nothing is hidden); threads: 0 for the hardware's
     // (one below a few thousand spheres). The result is the same on any number.
-    void find(std::vector<ViewSphere>& spheres, const FrameContext& frame, bool multisampled,
+    void find(std::vector<ViewSphere>& spheres, const FrameContext& frame, bool softEdges,
               int depthBits, int threads = 0);
 
     // After find(), for the same frame: whether an overlay mark no pixel can show is hidden

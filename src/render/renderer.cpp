@@ -160,75 +160,6 @@ int floorPlaneIndex(const FrameSnapshot& snapshot) {
     return best;
 }
 
-glm::ivec4 Renderer::contentRect(const FrameSnapshot& snapshot, const Camera& camera, int width,
-                                 int height) const {
-    glm::vec3 lo(std::numeric_limits<float>::max());
-    glm::vec3 hi(-std::numeric_limits<float>::max());
-    const auto add = [&](const glm::vec3& point, float radius) {
-        lo = glm::min(lo, point - radius);
-        hi = glm::max(hi, point + radius);
-    };
-    for (const Polygon& polygon : planePolygons(snapshot)) {
-        for (const glm::vec3& corner : polygon) add(corner, 0.0f);
-    }
-    const std::size_t spheres = std::min(snapshot.centers.size(), snapshot.radii.size());
-    for (std::size_t i = 0; i < spheres; ++i) add(snapshot.centers[i], snapshot.radii[i]);
-    float widest = style.edgeWidth;  // px before lineScale: lines and dots reach this far out
-    for (const OverlayLine& line : snapshot.lines) {
-        add(line.a, 0.0f);
-        add(line.b, 0.0f);
-        widest = std::max(widest, line.width);
-    }
-    for (const OverlayPoint& point : snapshot.points) {
-        add(point.position, 0.0f);
-        widest = std::max(widest, point.size);
-    }
-    if (width <= 0 || height <= 0 || !(lo.x <= hi.x)) return glm::ivec4(0);
-    // The box of it all, projected: its eight corners bound the content's pixels while
-    // they are all in front of the near plane.
-    const glm::vec2 size(static_cast<float>(width), static_cast<float>(height));
-    const glm::mat4 clip = camera.projection(size.x / size.y) * camera.view();
-    glm::vec2 pixelLo(std::numeric_limits<float>::max());
-    glm::vec2 pixelHi(-std::numeric_limits<float>::max());
-    for (int k = 0; k < 8; ++k) {
-        const glm::vec3 corner((k & 1) ? hi.x : lo.x, (k & 2) ? hi.y : lo.y, (k & 4) ? hi.z : lo.z);
-        const glm::vec4 c = clip * glm::vec4(corner, 1.0f);
-        if (!(c.w >= camera.nearPlane())) return glm::ivec4(0, 0, width, height);
-        const glm::vec2 pixel = (glm::vec2(c) / c.w * 0.5f + 0.5f) * size;
-        pixelLo = glm::min(pixelLo, pixel);
-        pixelHi = glm::max(pixelHi, pixel);
-    }
-    // Half the widest line or dot, and the anti-aliased fringes (lines, sphere outlines).
-    const float margin = 0.5f * widest * style.lineScale + 2.0f;  // px
-    const glm::vec2 from = glm::clamp(glm::floor(pixelLo - margin), glm::vec2(0.0f), size);
-    const glm::vec2 to = glm::clamp(glm::ceil(pixelHi + margin), glm::vec2(0.0f), size);
-    if (to.x <= from.x || to.y <= from.y) return glm::ivec4(0);
-    return glm::ivec4(glm::ivec2(from), glm::ivec2(to - from));
-}
-
-void Renderer::drawBackground(int x, int y, int width, int height, const glm::ivec4& except) {
-    if (!passes_ || width <= 0 || height <= 0) return;
-    FrameContext frame;
-    frame.viewport = glm::vec4(x, y, width, height);
-    frame.style = &style;
-    glViewport(x, y, width, height);
-    glEnable(GL_SCISSOR_TEST);
-    // Below and above the part left out, then left and right of it (all of the
-    // viewport when that part is empty).
-    const int top = except.y + except.w, right = except.x + except.z;
-    const glm::ivec4 around[] = {{0, 0, width, except.y},
-                                 {0, top, width, height - top},
-                                 {0, except.y, except.x, except.w},
-                                 {right, except.y, width - right, except.w}};
-    for (const glm::ivec4& part : around) {
-        if (part.z <= 0 || part.w <= 0) continue;
-        glScissor(x + part.x, y + part.y, part.z, part.w);
-        passes_->background.draw(frame);
-    }
-    glDisable(GL_SCISSOR_TEST);
-    glUseProgram(0);
-}
-
 bool isNearPlane(const Plane& plane, const glm::vec3& cameraPosition) {
     return glm::dot(cameraPosition - plane.point, plane.normal) < 0.0f;
 }
@@ -245,7 +176,10 @@ void Renderer::draw(const FrameSnapshot& snapshot, const Camera& camera, int x, 
     glGetIntegerv(GL_SAMPLE_BUFFERS, &sampleBuffers);
     passes_->planes.draw(planes.farFaces, frame, true);
     passes_->spheres.cullHidden = cullHiddenSpheres;
-    passes_->spheres.draw(snapshot, frame, style.antialiasEdges && sampleBuffers > 0);
+    const SphereEdges edges = !style.antialiasEdges ? SphereEdges::Hard
+                              : sampleBuffers > 0   ? SphereEdges::AlphaToCoverage
+                                                    : SphereEdges::Blended;
+    passes_->spheres.draw(snapshot, frame, edges);
     passes_->planes.draw(planes.extraFaces, frame, false);
     passes_->lines.draw(planes.edges, frame, true, kLineDepthBias);
 

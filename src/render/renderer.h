@@ -30,7 +30,7 @@ struct RenderStyle {
     float edgeWidth = 2.0f;      // px, box edges
     float lineScale = 1.0f;      // multiplies every width: the content scale on HiDPI
     bool overlayOnTop = false;   // overlay lines ignore depth (seen through spheres)
-    bool antialiasEdges = true;  // sphere outlines by alpha-to-coverage on MSAA targets
+    bool antialiasEdges = true;  // sphere outlines: alpha to coverage on MSAA targets, else blended
 };
 
 class Renderer {
@@ -50,17 +50,6 @@ class Renderer {
     // scissor test disabled.
     void draw(const FrameSnapshot& snapshot, const Camera& camera, int x, int y, int width,
               int height);
-
-    // The part of a width x height view that draw() may paint with more than the
-    // background: (x, y, width, height) in pixels from the view's lower-left corner.
-    // The whole view when something is near or behind the eye; width or height 0
-    // when only the background shows. Drawing the view with its viewport moved by
-    // (-x, -y) into a target of this size gives these pixels of the view.
-    glm::ivec4 contentRect(const FrameSnapshot& snapshot, const Camera& camera, int width,
-                           int height) const;
-    // Paints only the background gradient into a viewport, as draw() does first, but for
-    // the part `except` of it (x, y, width, height from the viewport's lower-left corner).
-    void drawBackground(int x, int y, int width, int height, const glm::ivec4& except = glm::ivec4(0));
 
     RenderStyle style;
 

@@ -14,8 +14,9 @@ constexpr float kCorners[] = {-1.0f, -1.0f, 1.0f, -1.0f, -1.0f, 1.0f, 1.0f, 1.0f
 
 static_assert(sizeof(SphereInstance) == 20, "SphereInstance must stay tightly packed");
 
-// The sphere attributes at locations 1..3, from a SphereInstance buffer.
-void sphereAttributes(GLuint buffer, GLuint divisor) {
+// The sphere attributes at locations 1..3, from a SphereInstance buffer, starting at
+// instance `first`.
+void sphereAttributes(GLuint buffer, GLuint divisor, std::size_t first = 0) {
     glBindBuffer(GL_ARRAY_BUFFER, buffer);
     const struct {
         GLuint location;
@@ -29,7 +30,7 @@ void sphereAttributes(GLuint buffer, GLuint divisor) {
     for (const auto& a : attributes) {
         glEnableVertexAttribArray(a.location);
         glVertexAttribPointer(a.location, a.size, a.type, a.normalized, sizeof(SphereInstance),
-                              reinterpret_cast<const void*>(a.offset));
+                              reinterpret_cast<const void*>(first * sizeof(SphereInstance) + a.offset));
         glVertexAttribDivisor(a.location, divisor);
     }
 }
@@ -135,8 +136,15 @@ void SpherePass::destroy() {
     pointArray_ = quadArray_ = cornerBuffer_ = pointBuffer_ = quadBuffer_ = 0;
 }
 
+// Distance from the eye, squared, less the radius squared (m^2): the power of the eye
+// with respect to the sphere. Spheres that do not overlap are seen in front of each
+// other in the order of it, whatever their radii.
+float powerFromEye(const ViewSphere& sphere) {
+    return glm::dot(sphere.center, sphere.center) - sphere.radius * sphere.radius;
+}
+
 void SpherePass::partition(const FrameSnapshot& snapshot, const FrameContext& frame,
-                           float marginPixels, bool coverageAlpha) {
+                           float marginPixels, SphereEdges edges) {
     inView_.clear();
     const std::size_t count =
         std::min({snapshot.centers.size(), snapshot.radii.size(), snapshot.colors.size()});
@@ -145,14 +153,29 @@ void SpherePass::partition(const FrameSnapshot& snapshot, const FrameContext& fr
         if (viewCenter.z + snapshot.radii[i] >= 0.0f) continue;  // wholly behind the eye
         inView_.push_back(viewSphere(std::uint32_t(i), viewCenter, snapshot.radii[i], frame, marginPixels));
     }
-    if (cullHidden) hiddenSpheres_.find(inView_, frame, coverageAlpha, depthBitsOfTarget());
+    if (cullHidden) hiddenSpheres_.find(inView_, frame, edges != SphereEdges::Hard, depthBitsOfTarget());
+    if (edges == SphereEdges::Blended) {
+        // The power's order is a strict one on distinct spheres; equal keys keep the
+        // snapshot's order, so the image does not depend on the sort.
+        std::stable_sort(inView_.begin(), inView_.end(), [](const ViewSphere& a, const ViewSphere& b) {
+            return powerFromEye(a) > powerFromEye(b);
+        });
+    }
     points_.clear();
     quads_.clear();
+    batches_.clear();
+    const bool inOrder = edges == SphereEdges::Blended;
     for (const ViewSphere& sphere : inView_) {
         if (sphere.hidden) continue;
+        std::vector<SphereInstance>& instances = sphere.pointSprite ? points_ : quads_;
+        if (inOrder && (batches_.empty() || batches_.back().pointSprites != sphere.pointSprite)) {
+            batches_.push_back({sphere.pointSprite, instances.size(), 0});
+        }
+        if (inOrder) ++batches_.back().count;
         const std::uint32_t i = sphere.index;
-        (sphere.pointSprite ? points_ : quads_).push_back({snapshot.centers[i], snapshot.radii[i], snapshot.colors[i]});
+        instances.push_back({snapshot.centers[i], snapshot.radii[i], snapshot.colors[i]});
     }
+    if (!inOrder) batches_ = {{true, 0, points_.size()}, {false, 0, quads_.size()}};
 }
 
 bool SpherePass::hidesMark(const OverlayLine& line, const FrameContext& frame, float depthBias) const {
@@ -176,11 +199,21 @@ void SpherePass::setUniforms(const Program& p, const FrameContext& frame, float 
     glUniform1i(p.coverageAlpha, coverageAlpha ? 1 : 0);
 }
 
-void SpherePass::draw(const FrameSnapshot& snapshot, const FrameContext& frame,
-                      bool coverageAlpha) {
+void SpherePass::drawBatch(bool pointSprites, std::size_t first, std::size_t count) {
+    if (count == 0) return;
+    if (pointSprites) {
+        glDrawArrays(GL_POINTS, GLint(first), GLsizei(count));
+    } else {  // GL 3.3 has no base instance: the attributes start at the first
+        sphereAttributes(quadBuffer_, 1, first);
+        glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(count));
+    }
+}
+
+void SpherePass::draw(const FrameSnapshot& snapshot, const FrameContext& frame, SphereEdges edges) {
     // Coverage needs fragments up to a pixel and a half outside the outline, px.
-    const float marginPixels = coverageAlpha ? 1.5f : 0.5f;
-    partition(snapshot, frame, marginPixels, coverageAlpha);
+    const bool coverage = edges != SphereEdges::Hard;
+    const float marginPixels = coverage ? 1.5f : 0.5f;
+    partition(snapshot, frame, marginPixels, edges);
     if (points_.empty() && quads_.empty()) return;
     glEnable(GL_DEPTH_TEST);
     glDepthMask(GL_TRUE);
@@ -188,28 +221,27 @@ void SpherePass::draw(const FrameSnapshot& snapshot, const FrameContext& frame,
 #ifndef __EMSCRIPTEN__  // WebGL 2: a vertex shader always sets the point size
     glEnable(GL_PROGRAM_POINT_SIZE);
 #endif
-    if (coverageAlpha) {
-        // Alpha becomes the sample mask; the target keeps the background's alpha of 1.
-        glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
-        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
+    // The target keeps the background's alpha of 1.
+    if (coverage) glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
+    if (edges == SphereEdges::AlphaToCoverage) glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+    if (edges == SphereEdges::Blended) {
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     }
-    if (!points_.empty()) {
-        upload(pointBuffer_, points_);
-        setUniforms(pointProgram_, frame, marginPixels, coverageAlpha);
-        glBindVertexArray(pointArray_);
-        glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(points_.size()));
-    }
-    if (!quads_.empty()) {
-        upload(quadBuffer_, quads_);
-        setUniforms(quadProgram_, frame, marginPixels, coverageAlpha);
-        glBindVertexArray(quadArray_);
-        glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(quads_.size()));
+    upload(pointBuffer_, points_);
+    upload(quadBuffer_, quads_);
+    for (const Batch& batch : batches_) {
+        const Program& program = batch.pointSprites ? pointProgram_ : quadProgram_;
+        setUniforms(program, frame, marginPixels, coverage);
+        glBindVertexArray(batch.pointSprites ? pointArray_ : quadArray_);
+        drawBatch(batch.pointSprites, batch.first, batch.count);
     }
     glBindVertexArray(0);
 #ifndef __EMSCRIPTEN__
     glDisable(GL_PROGRAM_POINT_SIZE);
 #endif
     glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+    glDisable(GL_BLEND);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
 

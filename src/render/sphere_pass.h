@@ -21,12 +21,20 @@ struct SphereInstance {
     glm::u8vec4 color;
 };
 
+// How a sphere's outline meets what is behind it. The fragment shader's alpha is the
+// share of the pixel the sphere covers, up to a pixel and a half outside the outline.
+enum class SphereEdges {
+    Hard,             // a pixel is the sphere's or not (jagged outlines)
+    AlphaToCoverage,  // a multisampled target: the alpha picks the samples
+    Blended,          // one sample: the alpha blends over what is behind, so the
+                      // spheres are drawn from the farthest to the nearest
+};
+
 class SpherePass {
   public:
     std::string init();
     void destroy();
-    // coverageAlpha: the target is multisampled and edges use alpha-to-coverage.
-    void draw(const FrameSnapshot& snapshot, const FrameContext& frame, bool coverageAlpha);
+    void draw(const FrameSnapshot& snapshot, const FrameContext& frame, SphereEdges edges);
     // Spheres sent to the GL by the last draw (the others were hidden or behind the eye).
     std::size_t drawnSpheres() const { return points_.size() + quads_.size(); }
 
@@ -46,7 +54,8 @@ class SpherePass {
     std::string buildProgram(Program& program, std::string_view label,
                              std::string_view vertexSource);
     void partition(const FrameSnapshot& snapshot, const FrameContext& frame, float marginPixels,
-                   bool coverageAlpha);
+                   SphereEdges edges);
+    void drawBatch(bool pointSprites, std::size_t first, std::size_t count);
     void setUniforms(const Program& program, const FrameContext& frame, float marginPixels,
                      bool coverageAlpha);
 
@@ -61,6 +70,13 @@ class SpherePass {
     HiddenSphereFinder hiddenSpheres_;
     std::vector<SphereInstance> points_;
     std::vector<SphereInstance> quads_;
+    // Runs of the drawing order, each of point sprites or of squares (with Blended,
+    // the farthest first; else all points, then all squares).
+    struct Batch {
+        bool pointSprites = true;
+        std::size_t first = 0, count = 0;  // in points_ or quads_
+    };
+    std::vector<Batch> batches_;
 };
 
 }  // namespace render

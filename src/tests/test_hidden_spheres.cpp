@@ -180,6 +180,16 @@ render::FrameSnapshot pile(int across = 25, int high = 10) {
     return snapshot;
 }
 
+// The three ways the spheres' outlines are drawn (render::SphereEdges).
+struct Edges {
+    int samples;
+    bool antialiased;
+    const char* name;
+};
+constexpr Edges kHard{0, false, "hard outlines"}, kBlended{0, true, "blended outlines"},
+    kSampled{4, true, "4 samples"};
+std::ostream& operator<<(std::ostream& out, const Edges& edges) { return out << edges.name; }
+
 class HiddenSpheresDrawn : public ::testing::Test {
   protected:
     void SetUp() override {
@@ -195,9 +205,10 @@ class HiddenSpheresDrawn : public ::testing::Test {
         std::size_t marks = 0;    // overlay lines and dots sent to the GL
     };
     Drawn draw(const render::FrameSnapshot& snapshot, const render::Camera& camera, glm::ivec2 size,
-               int samples, bool cull, bool cullMarks = true) {
-        EXPECT_EQ(target_.resize(size.x, size.y, samples), "");
+               const Edges& edges, bool cull, bool cullMarks = true) {
+        EXPECT_EQ(target_.resize(size.x, size.y, edges.samples), "");
         target_.bind();
+        renderer_.style.antialiasEdges = edges.antialiased;
         renderer_.cullHiddenSpheres = cull;
         renderer_.cullHiddenMarks = cullMarks;
         renderer_.draw(snapshot, camera, 0, 0, size.x, size.y);
@@ -242,12 +253,12 @@ TEST_F(HiddenSpheresDrawn, LeavingOutTheHiddenSpheresKeepsEveryPixel) {
     views[7].size = {1920, 1080};
     std::size_t mostHidden = 0;
     for (std::size_t v = 0; v < views.size(); ++v) {
-        for (int samples : {0, 4}) {
-            const Drawn all = draw(snapshot, views[v].camera, views[v].size, samples, false);
-            const Drawn seen = draw(snapshot, views[v].camera, views[v].size, samples, true);
-            EXPECT_EQ(differingPixels(all.image, seen.image), 0) << "view " << v << ", " << samples << " samples";
+        for (const Edges& edges : {kHard, kBlended, kSampled}) {
+            const Drawn all = draw(snapshot, views[v].camera, views[v].size, edges, false);
+            const Drawn seen = draw(snapshot, views[v].camera, views[v].size, edges, true);
+            EXPECT_EQ(differingPixels(all.image, seen.image), 0) << "view " << v << ", " << edges;
             EXPECT_LE(seen.spheres, all.spheres);
-            if (samples == 0) mostHidden = std::max(mostHidden, all.spheres - seen.spheres);
+            if (!edges.antialiased) mostHidden = std::max(mostHidden, all.spheres - seen.spheres);
         }
     }
     // From above only the top layer or two show: most of the pile is left out.
@@ -280,13 +291,13 @@ TEST_F(HiddenSpheresDrawn, LeavingOutTheHiddenOverlayMarksKeepsEveryPixel) {
     std::size_t leftOutFromAbove = 0;
     const std::size_t marks = snapshot.lines.size() + snapshot.points.size();
     for (std::size_t v = 0; v < cameras.size(); ++v) {
-        for (int samples : {0, 4}) {
-            const Drawn every = draw(snapshot, cameras[v], {480, 270}, samples, true, false);
-            const Drawn seen = draw(snapshot, cameras[v], {480, 270}, samples, true, true);
-            EXPECT_EQ(differingPixels(every.image, seen.image), 0) << "view " << v << ", " << samples << " samples";
+        for (const Edges& edges : {kHard, kBlended, kSampled}) {
+            const Drawn every = draw(snapshot, cameras[v], {480, 270}, edges, true, false);
+            const Drawn seen = draw(snapshot, cameras[v], {480, 270}, edges, true, true);
+            EXPECT_EQ(differingPixels(every.image, seen.image), 0) << "view " << v << ", " << edges;
             EXPECT_EQ(every.marks, marks);
             EXPECT_LE(seen.marks, every.marks);
-            if (v == 1 && samples == 0) leftOutFromAbove = every.marks - seen.marks;
+            if (v == 1 && !edges.antialiased) leftOutFromAbove = every.marks - seen.marks;
         }
     }
     EXPECT_GT(leftOutFromAbove, marks / 2);
@@ -302,13 +313,13 @@ TEST_F(HiddenSpheresDrawn, OnSeveralThreadsEveryPixelIsKeptToo) {
     camera.reset({-0.5f, -0.5f, 0}, {0.5f, 0.5f, 1}, 16.0f / 9.0f);
     for (float elevation : {camera.elevation, 1.5f}) {
         camera.elevation = elevation;
-        for (int samples : {0, 4}) {
-            const Drawn all = draw(snapshot, camera, {640, 360}, samples, false);
-            const Drawn seen = draw(snapshot, camera, {640, 360}, samples, true);
-            EXPECT_EQ(differingPixels(all.image, seen.image), 0) << "elevation " << elevation << ", " << samples << " samples";
-            // Without samples most of the pile is left out (under MSAA its spheres of a few
-            // pixels are too small to hide others).
-            if (samples == 0) {
+        for (const Edges& edges : {kHard, kBlended, kSampled}) {
+            const Drawn all = draw(snapshot, camera, {640, 360}, edges, false);
+            const Drawn seen = draw(snapshot, camera, {640, 360}, edges, true);
+            EXPECT_EQ(differingPixels(all.image, seen.image), 0) << "elevation " << elevation << ", " << edges;
+            // With hard outlines most of the pile is left out (with soft ones its spheres
+            // of a few pixels are too small to hide others).
+            if (!edges.antialiased) {
                 EXPECT_LT(seen.spheres, all.spheres / 2) << "elevation " << elevation;
             }
             EXPECT_LE(seen.spheres, all.spheres);

@@ -543,106 +543,76 @@ TEST_P(Headless, DrawTouchesOnlyItsViewport) {
     expectShadedVersionOf(image.pixel(50, 50), kBlue);
 }
 
-TEST_P(Headless, MultisampledTargetResolvesSmoothSphereEdges) {
+// A white sphere on black, a row through its centre: the pixels at each edge are
+// blends, darker than their inner neighbour and brighter than the background.
+int blendedEdgePixels(int samples, bool antialiasEdges = true) {
     render::FrameSnapshot snapshot;
     snapshot.addSphere({0, 0, 0}, 0.5f, {255, 255, 255, 255});
-    render::RenderStyle style;
-    style.backgroundTop = style.backgroundBottom = glm::vec3(0.0f);
     render::OffscreenTarget target;
-    ASSERT_EQ(target.resize(160, 160, 4), "");
+    if (!target.resize(160, 160, samples).empty()) return -1;
     render::Renderer renderer;
-    ASSERT_EQ(renderer.init(), "");
-    renderer.style = style;
+    if (!renderer.init().empty()) return -1;
+    renderer.style.backgroundTop = renderer.style.backgroundBottom = glm::vec3(0.0f);
+    renderer.style.antialiasEdges = antialiasEdges;
     renderer.draw(snapshot, frontCamera({0, 0, 0}, 4.0f), 0, 0, 160, 160);
     const render::Image image = target.read();
-    // Along a row through the centre, each edge pixel is a blend: clearly darker
-    // than its inner neighbour, brighter than the black background. Alpha stays 1.
     int blended = 0;
     for (int x = 1; x + 1 < 160; ++x) {
         const glm::u8vec4 p = image.pixel(x, 80);
-        EXPECT_EQ(p.w, 255) << x;
+        EXPECT_EQ(p.w, 255) << x << ": alpha stays 1";
         const int inner = std::max(image.pixel(x - 1, 80).x, image.pixel(x + 1, 80).x);
         if (p.x > 10 && p.x < 0.85f * static_cast<float>(inner)) ++blended;
     }
-    EXPECT_EQ(blended, 2) << "one blended pixel at each edge";
+    return blended;
 }
 
-// The window draws only a view's content rectangle multisampled (with the viewport
-// moved) and the rest as background: together they must make the same image.
-TEST_P(Headless, AViewIsItsBackgroundOutsideItsContentRectAndTheSameInside) {
-    render::FrameSnapshot snapshot = boxSnapshot();
-    snapshot.addSphere({0.3f, 0.2f, 0.4f}, 0.25f, kRed);
-    snapshot.addSphere({-0.7f, -0.5f, 1.9f}, 0.1f, kBlue);
-    snapshot.addLine({0.0f, 0.0f, 1.0f}, {0.0f, 0.0f, 2.6f}, {255, 0, 255, 255}, 6.0f);  // out of the box
-    snapshot.addPoint({1.0f, -1.0f, 0.0f}, {0, 255, 0, 255}, 16.0f);
-    render::Camera camera;
-    camera.target = {0.0f, 0.0f, 1.0f};
-    camera.distance = 9.0f;
-    const int width = 240, height = 180, samples = 4;
-    render::Renderer renderer;
-    ASSERT_EQ(renderer.init(), "");
-    render::OffscreenTarget target;
-    ASSERT_EQ(target.resize(width, height, samples), "");
-    renderer.draw(snapshot, camera, 0, 0, width, height);
-    const render::Image whole = target.read();
-    renderer.drawBackground(0, 0, width, height);
-    const render::Image background = target.read();
-    renderer.draw(render::FrameSnapshot{}, camera, 0, 0, width, height);
-    const render::Image empty = target.read();
-    EXPECT_EQ(background.rgba, empty.rgba) << "drawBackground paints what draw() paints first";
-    // Without samples (as the window): llvmpipe's scissor lets a sample of the pixels
-    // past its edge through.
-    render::OffscreenTarget single;
-    ASSERT_EQ(single.resize(width, height), "");
-    glClearColor(1.0f, 0.0f, 1.0f, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT);
-    renderer.drawBackground(0, 0, width, height, glm::ivec4(50, 40, 100, 60));  // but there
-    const render::Image around = single.read();
-    target.bind();
-    for (int y = 0; y < height; ++y) {
-        for (int x = 0; x < width; ++x) {
-            const bool left = x >= 50 && x < 150 && height - 1 - y >= 40 && height - 1 - y < 100;
-            ASSERT_EQ(around.pixel(x, y), left ? glm::u8vec4(255, 0, 255, 255) : background.pixel(x, y)) << x << ", " << y;
-        }
-    }
+// Alpha to coverage on a multisampled target, blending on one without samples (the
+// window's views); and hard outlines when the style asks for them.
+TEST_P(Headless, SphereOutlinesAreBlendedWithAndWithoutSamples) {
+    EXPECT_EQ(blendedEdgePixels(4), 2) << "one blended pixel at each edge, 4 samples";
+    EXPECT_EQ(blendedEdgePixels(0), 2) << "one blended pixel at each edge, no samples";
+    EXPECT_EQ(blendedEdgePixels(0, false), 0) << "hard outlines";
+}
 
-    const glm::ivec4 rect = renderer.contentRect(snapshot, camera, width, height);
-    ASSERT_GT(rect.z, 0);
-    ASSERT_GT(rect.w, 0);
-    EXPECT_LT(rect.z * rect.w, width * height / 2) << "the box far away covers a small part";
-    const auto inside = [&](int x, int yDown) {
-        const int y = height - 1 - yDown;
-        return x >= rect.x && x < rect.x + rect.z && y >= rect.y && y < rect.y + rect.w;
+// Without samples an outline blends over what was drawn before it, so the spheres are
+// drawn from the farthest to the nearest whatever their order in the snapshot (a nearer
+// sphere drawn first would blend its outline over the background and hide the farther
+// one there: a dark ring). Large and small, near and far, squares and point sprites.
+TEST_P(Headless, BlendedOutlinesDoNotDependOnTheSpheresOrder) {
+    const render::Camera camera = frontCamera({0, 0, 0}, 4.0f);
+    std::vector<std::pair<glm::vec3, float>> spheres = {
+        {{0.0f, 0.0f, 0.0f}, 0.5f},      {{0.45f, -0.6f, 0.1f}, 0.3f},  {{-0.3f, -1.2f, -0.2f}, 0.15f},
+        {{-0.6f, 0.8f, 0.3f}, 0.6f},     {{0.3f, -1.5f, 0.35f}, 0.08f}, {{-1.9f, 0.0f, 0.0f}, 0.4f},
+        {{0.05f, -0.9f, -0.05f}, 0.12f}, {{0.9f, 0.5f, -0.4f}, 0.5f}};
+    const glm::u8vec4 colors[] = {kRed, kBlue, {40, 200, 60, 255}, {230, 220, 40, 255}};
+    const auto drawInOrder = [&](bool reversed) {
+        render::FrameSnapshot snapshot;
+        for (std::size_t k = 0; k < spheres.size(); ++k) {
+            const std::size_t i = reversed ? spheres.size() - 1 - k : k;
+            snapshot.addSphere(spheres[i].first, spheres[i].second, colors[i % 4]);
+        }
+        render::RenderStyle black;
+        black.backgroundTop = black.backgroundBottom = glm::vec3(0.0f);
+        return draw(snapshot, camera, 200, 160, black);
     };
-    int outsideChanged = 0, insideChanged = 0;
-    for (int y = 0; y < height; ++y) {
-        for (int x = 0; x < width; ++x) {
-            if (channelSpread(whole.pixel(x, y), background.pixel(x, y)) == 0) continue;
-            ++(inside(x, y) ? insideChanged : outsideChanged);
-        }
-    }
-    EXPECT_GT(insideChanged, 1000);
-    EXPECT_EQ(outsideChanged, 0);
-
-    // From even pixels: the shader's derivatives (the edges' anti-aliasing) come from
-    // blocks of 2 x 2 pixels, aligned on the target.
-    const glm::ivec4 even(rect.x / 2 * 2, rect.y / 2 * 2, rect.z + rect.x % 2, rect.w + rect.y % 2);
-    ASSERT_EQ(target.resize(even.z, even.w, samples), "");
-    renderer.draw(snapshot, camera, -even.x, -even.y, width, height);
-    const render::Image part = target.read();
+    const render::Image forward = drawInOrder(false), backward = drawInOrder(true);
     int differ = 0;
-    for (int y = 0; y < even.w; ++y) {
-        for (int x = 0; x < even.z; ++x) {
-            const int yDown = height - even.y - even.w + y;
-            if (channelSpread(part.pixel(x, y), whole.pixel(even.x + x, yDown)) > 2) ++differ;
-        }
+    for (int y = 0; y < 160; ++y) {
+        for (int x = 0; x < 200; ++x) differ += forward.pixel(x, y) != backward.pixel(x, y);
     }
     EXPECT_EQ(differ, 0);
-
-    EXPECT_EQ(renderer.contentRect(render::FrameSnapshot{}, camera, width, height), glm::ivec4(0));
-    camera.distance = 0.5f;  // the eye inside the box: all of the view
-    EXPECT_EQ(renderer.contentRect(snapshot, camera, width, height), glm::ivec4(0, 0, width, height));
-    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+    // Where the blue sphere's outline crosses the red one (the row of the blue centre),
+    // the pixels are blends of blue and red, not of blue and the black between.
+    const glm::vec2 size(200, 160);
+    const vec3 blue = camera.project({0.45f, -0.6f, 0.1f}, size);
+    const vec3 red = camera.project({0.0f, 0.0f, 0.0f}, size);
+    const int row = static_cast<int>(blue.y);
+    for (const render::Image* image : {&forward, &backward}) {
+        for (int x = static_cast<int>(red.x); x < static_cast<int>(blue.x); ++x) {
+            const glm::u8vec4 p = image->pixel(x, row);
+            EXPECT_GT(p.x + p.z, 120) << x << ": no dark ring between the red and the blue sphere";
+        }
+    }
 }
 
 // Renders one ImGui frame with a window at (20, 30) of size 100 x 80 (ImGui
