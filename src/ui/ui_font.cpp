@@ -42,6 +42,10 @@ void applyStyle(float uiScale) {
     // An open list covers the controls under it: ImGui's dark popups are 94 % opaque, and
     // the labels behind showed through its choices ("k propagation" amid "lecture").
     style.Colors[ImGuiCol_PopupBg].w = 1.0f;
+    // Secondary text (subtitles, "view A only", hints): ImGui's grey of 0.5 is 4.8:1 against
+    // the panel, which a projector's washed-out black brings under 3:1 (a teacher's review
+    // at 1080p found it hard to read); 0.65 is 8:1 and still plainly not the white text.
+    style.Colors[ImGuiCol_TextDisabled] = ImVec4(0.65f, 0.65f, 0.65f, 1.0f);
     style.ScaleAllSizes(uiScale);
     ImGui::GetStyle() = style;
 }
