@@ -20,6 +20,7 @@
 #include "scenes/presets.h"
 #include "scenes/scene_json.h"
 #include "ui/control_panel.h"
+#include "ui/ui_font.h"
 
 namespace {
 
@@ -400,6 +401,50 @@ TEST(WindowPaths, TheHeldClaimsListSaysHowManyMoreWereMeasured) {
     EXPECT_EQ(state.claimLinesShown[shown].first.rfind(more, 0), 0u) << state.claimLinesShown[shown].first;
     frame(ImVec2(900.0f, 400.0f), false);  // the pointer leaves: the list shows them
     EXPECT_EQ(state.claimsMeasuredShown, simulation.claimsWatched());
+    ImGui::DestroyContext(context);
+}
+
+// Presenting, the texts of 14 and 18-22 are longer than the panel: their conclusions are
+// below the fold. Page Down (what a presenter's remote sends) moves the text on by a page
+// less a line, in whole lines, so that the line under the fold comes to the top; Page Up
+// goes back; the scroll stops at the text's end.
+TEST(WindowPaths, PageDownMovesThePresentedTextOnByAPageInWholeLines) {
+    // A low window (a projector's 1024 x 576 at the 720 lines' type), so that the text is
+    // more than two pages.
+    ImGuiContext* context = headlessImGui(ImVec2(1024.0f, 576.0f));
+    ui::applyStyle(ui::presentedScale(1.0f, 576.0f));  // the presented type, as the window sets it
+    unsigned char* pixels = nullptr;
+    int width = 0, height = 0;
+    ImGui::GetIO().Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);
+    app::Simulation simulation(scenes::loadScene(scenes::presetPath("22_shock_pyramid")));
+    ui::PanelState state;
+    state.present = true;
+    double timeScale = 1.0;
+    const auto frame = [&] {
+        ImGui::GetIO().DeltaTime = 1.0f / 60.0f;
+        ImGui::NewFrame();
+        ui::drawControlPanel(simulation.scene(), timeScale, app::makeReadouts(simulation, ui::FrameTimes{}), state, {});
+        ImGui::EndFrame();
+    };
+    const auto pages = [&](int count) {
+        state.pagesToScroll = count;
+        frame();
+        frame();  // ImGui moves the scroll at the next frame's start
+        EXPECT_EQ(state.pagesToScroll, 0);
+        return state.textScrollY;
+    };
+    for (int k = 0; k < 3; ++k) frame();
+    ASSERT_EQ(state.textScrollY, 0.0f);
+    const float line = ImGui::GetFontSize();
+    const float first = pages(1);
+    EXPECT_GT(first, 4.0f * line) << "a page is several lines";
+    EXPECT_LT(std::abs(first - std::round(first / line) * line), 1.0f) << "whole lines (ImGui scrolls by whole pixels)";
+    EXPECT_LT(first, state.presentedContentHeight);
+    EXPECT_EQ(pages(-1), 0.0f);
+    float last = 0.0f;
+    for (int k = 0; k < 20; ++k) last = pages(1);  // far past the end: it stops there
+    EXPECT_GT(last, first);
+    EXPECT_EQ(pages(1), last) << "no page past the text's end";
     ImGui::DestroyContext(context);
 }
 

@@ -582,6 +582,20 @@ void scrollToTopIfAsked(PanelState& state) {
     state.scrollToTop = false;
 }
 
+// Page Down / Page Up: the scroll moves by the region's height less a line, in whole lines
+// (the presented text's fold lies between two lines: a page on, the line under the fold is
+// the top one), so that the class reads on from the line it last saw.
+void scrollByPagesIfAsked(PanelState& state) {
+    if (state.pagesToScroll != 0) {
+        const float line = ImGui::GetFontSize();  // px: the text's lines, one font size apart
+        const float page = std::max(1.0f, std::floor(ImGui::GetWindowHeight() / line) - 1.0f) * line;
+        const float to = ImGui::GetScrollY() + float(state.pagesToScroll) * page;
+        ImGui::SetScrollY(std::clamp(to, 0.0f, ImGui::GetScrollMaxY()));
+        state.pagesToScroll = 0;
+    }
+    state.textScrollY = ImGui::GetScrollY();
+}
+
 // Room for the widest label beside each control ("ε static-contact speed (m/s)").
 float itemWidth() { return std::min(ImGui::GetFontSize() * 9.5f, 0.4f * ImGui::GetContentRegionAvail().x); }
 void pushItemWidth() { ImGui::PushItemWidth(itemWidth()); }
@@ -747,6 +761,7 @@ void presentedPanel(const scenes::Scene& scene, const Readouts& readouts, const 
     const float cut = !fits && room > spacings + font ? std::fmod(room - spacings, font) : 0.0f;  // px, under the fold
     ImGui::BeginChild("presented", ImVec2(0.0f, room - cut));
     scrollToTopIfAsked(state);
+    scrollByPagesIfAsked(state);
     sceneText(scene);
     measuredClaims(readouts, state);
     if (inSight < sliders.size()) {
@@ -821,6 +836,7 @@ PanelActions drawControlPanel(const scenes::Scene& scene, double& timeScale, con
         return actions;
     }
     scrollToTopIfAsked(state);
+    scrollByPagesIfAsked(state);
     pushItemWidth();
     sceneText(scene);
     measuredClaims(readouts, state);

@@ -68,6 +68,10 @@ struct PanelState {
     std::string scenePath;     // the load field
     int presetIndex = -1;      // into the preset list; -1: a file
     bool scrollToTop = false;  // a new scene: show its title and text
+    // Page Down (+1) and Page Up (-1), as a presenter's remote sends them: the scene's text
+    // (presenting) or the panel moves by this many pages in the next frame.
+    int pagesToScroll = 0;
+    float textScrollY = 0.0f;  // px: where the text's scroll stood at the end of the last frame
     // A restart parameter while its slider is held: the value shown, applied on release.
     std::string pendingName;
     double pendingValue = 0.0;

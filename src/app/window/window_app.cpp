@@ -323,6 +323,8 @@ void WindowApp::handleKey(int key, int mods) {
         case GLFW_KEY_F5: togglePresentation(); break;
         case GLFW_KEY_F12: screenshotRequested_ = true; break;
         case GLFW_KEY_C: resetCamera(); break;
+        case GLFW_KEY_PAGE_DOWN: ++panel_.pagesToScroll; break;
+        case GLFW_KEY_PAGE_UP: --panel_.pagesToScroll; break;
         case GLFW_KEY_ESCAPE: backOut(); break;
         default: break;
     }
