@@ -23,6 +23,7 @@ void addEnergies(const World& world, const Params& params, Diagnostics& d) {
         d.potential -= m * glm::dot(g, world.position[i]);
         d.modified += m * (-glm::dot(g, world.position[i]) + 0.5 * glm::dot(vHalf, vHalf));
         d.momentum += m * v;
+        d.momentumScale += m * glm::length(v);
     }
     d.total = d.kinetic + d.potential;
 }
@@ -81,6 +82,15 @@ Diagnostics measure(const World& world, const Params& params) {
     addWallContacts(world, d);
     d.hash = stateHash(world);
     return d;
+}
+
+glm::dvec3 momentumShown(const Diagnostics& d) {
+    constexpr double kRounding = 1e-12;  // of sum m |v|
+    glm::dvec3 shown = d.momentum;
+    for (int k = 0; k < 3; ++k) {
+        if (std::abs(shown[k]) <= kRounding * d.momentumScale) shown[k] = 0.0;
+    }
+    return shown;
 }
 
 namespace {

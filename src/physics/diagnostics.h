@@ -13,6 +13,7 @@ struct Diagnostics {
     double total = 0.0;       // J, kinetic + potential
     double modified = 0.0;    // J, E~ = sum m (-g.p + 1/2 |v + (h/2) g|^2), exact for free flight
     glm::dvec3 momentum{0.0}; // kg m/s
+    double momentumScale = 0.0;  // kg m/s, sum m |v|: what the momentum's rounding is relative to
     std::uint64_t sphereContacts = 0;  // overlapping pairs now
     std::uint64_t wallContacts = 0;    // spheres touching or crossing a plane now
     double maxPenetration = 0.0;       // deepest overlap divided by the smaller radius
@@ -20,6 +21,11 @@ struct Diagnostics {
 };
 
 Diagnostics measure(const World& world, const Params& params);
+
+// The momentum as the readouts show it: a component within rounding of zero (1e-12 of
+// sum m |v|, far below anything a readout or a property check can tell) reads 0, so that a
+// symmetric answer's reads p (0, 0, 2), not (5.55e-17, 0, 2).
+glm::dvec3 momentumShown(const Diagnostics& d);
 
 // The energy semi-implicit Euler conserves exactly in free flight (physics.md), J.
 double modifiedEnergy(const World& world, const Params& params);

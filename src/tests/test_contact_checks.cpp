@@ -271,3 +271,21 @@ TEST(ContactChecks, NonFiniteSpheresMeetNothingAndTheGridStillWorks) {
     physics::step(world, params);  // returns: no hang, no throw
     EXPECT_TRUE(std::isnan(world.position[3].x));
 }
+
+// The readouts' momentum: a symmetric answer's rounding (0.1 + 0.2 against 0.3: 5.55e-17
+// kg m/s) reads 0, where a student read "|p| 5.551e-17" as momentum not kept; a momentum
+// a property check could tell (1e-9 of sum m |v|) is shown as it is.
+TEST(ContactChecks, TheMomentumShownReadsRoundingAsZero) {
+    physics::World world;
+    world.addSphere({-1, 0, 0}, {0.1 + 0.2, 0, 2.0}, 0.1, 1.0);
+    world.addSphere({1, 0, 0}, {-0.3, 1e-9, 0}, 0.1, 1.0);
+    physics::Params params;
+    params.gravity = dvec3(0.0);
+    const physics::Diagnostics d = physics::measure(world, params);
+    ASSERT_NE(d.momentum.x, 0.0) << "the rounding this test is about";
+    EXPECT_NEAR(d.momentumScale, std::sqrt(0.09 + 4.0) + std::hypot(0.3, 1e-9), 1e-12);
+    const dvec3 shown = physics::momentumShown(d);
+    EXPECT_EQ(shown.x, 0.0);
+    EXPECT_EQ(shown.y, 1e-9);
+    EXPECT_EQ(shown.z, 2.0);
+}

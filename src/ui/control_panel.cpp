@@ -424,10 +424,12 @@ void readoutsBody(const Readouts& r, const PanelState& state, PanelActions& acti
     tooltip("E~ = sum m (-g.p + |v + tau g/2|^2 / 2), tau = h / substeps the solver step: the energy the time "
             "integration keeps exactly in free flight. "
             "Use it for bounce heights: the naive total wobbles by O(g v h).");
-    ImGui::Text("p (%.2g, %.2g, %.2g) kg m/s", d.momentum.x, d.momentum.y, d.momentum.z);
+    const glm::dvec3 p = physics::momentumShown(d);  // kg m/s
+    ImGui::Text("p (%.2g, %.2g, %.2g) kg m/s", p.x, p.y, p.z);
     tooltip("Total momentum, sum m v. Gravity changes it; the walls too. Between spheres alone it is kept by the "
             "momentum-conserving response for every alpha, beta, mu, and by the lecture's only when alpha = beta = 1 "
-            "and no static contact damps it (slide 13's v <- mu v scales each sphere's own velocity).");
+            "and no static contact damps it (slide 13's v <- mu v scales each sphere's own velocity). A component "
+            "within 1e-12 of sum m |v| of zero is rounding and reads 0.");
     ImGui::Text("deepest penetration %.2f %% of r", 100.0 * d.maxPenetration);
     ImGui::Text("state hash %016llx", static_cast<unsigned long long>(d.hash));
     tooltip("Same scene, same seed, same parameters: same hash. Compare runs with it.");
@@ -681,7 +683,7 @@ UnderText underPresentedText(const std::vector<const scenes::Parameter*>& slider
     std::snprintf(numbers, sizeof numbers, "kinetic\u00a0%.4g\u00a0J   E~\u00a0%.5g\u00a0J", r.diagnostics.kinetic,
                   r.diagnostics.modified);
     under.notes.push_back(numbers);
-    std::snprintf(numbers, sizeof numbers, "|p|\u00a0%.4g\u00a0kg\u00a0m/s", glm::length(r.diagnostics.momentum));
+    std::snprintf(numbers, sizeof numbers, "|p|\u00a0%.4g\u00a0kg\u00a0m/s", glm::length(physics::momentumShown(r.diagnostics)));
     under.notes.push_back(numbers);
     // The status as it reads now, and paused: its room is the larger, so that P does not
     // move the sliders above it when the line gets shorter (a teacher saw them jump a line).

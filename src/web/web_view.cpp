@@ -585,7 +585,7 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_overlays() {
 
 // The run now: {"time_s", "steps", "spheres", "hash", "paused" (by the page, or by an
 // alarm: a value not finite), "time_scale", "camera": {"azimuth_rad", "elevation_rad",
-// "distance_m"}, "kinetic_J", "potential_J", "momentum_kg_m_s" ([x, y, z]), "penetration_r",
+// "distance_m"}, "kinetic_J", "potential_J", "momentum_kg_m_s" ([x, y, z], physics::momentumShown), "penetration_r",
 // "behind_real_time", "views" (side by side: each view's label lines and its presented ones, viewsOf), "only_view_a"
 // (side by side: the parameters every other view sets, Comparison::setInEveryView), "selected"
 // (selectedOf), "timeline" (timelineOf), "claims" (claimsOf), "suggested_compare" (what the
@@ -596,6 +596,7 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_state() {
     if (!v.simulation || !v.session) return answer(Json::object());
     const physics::World& world = v.simulation->world();
     const physics::Diagnostics& d = v.session->diagnostics(0);
+    const glm::dvec3 shown = physics::momentumShown(d);  // kg m/s, rounding read as 0
     return answer({{"time_s", world.time},
                    {"steps", world.stepCount},
                    {"spheres", world.size()},
@@ -606,7 +607,7 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_state() {
                                {"distance_m", v.camera.distance}}},
                    {"kinetic_J", d.kinetic},
                    {"potential_J", d.potential},
-                   {"momentum_kg_m_s", {d.momentum.x, d.momentum.y, d.momentum.z}},
+                   {"momentum_kg_m_s", {shown.x, shown.y, shown.z}},  // as the window's readouts show it
                    {"penetration_r", d.maxPenetration},
                    {"behind_real_time", v.simulation->behindRealTime()},
                    {"views", viewsOf(v)},

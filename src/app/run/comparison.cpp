@@ -160,7 +160,8 @@ std::vector<std::string> viewReadoutLines(const ViewReadout& view) {
     // between the readouts, not inside one ("t" / "4.367 s").
     std::snprintf(line, sizeof line, "E\u00a0%.6g\u00a0J   E~\u00a0%.6g\u00a0J", d.total, d.modified);
     lines.emplace_back(line);
-    std::snprintf(line, sizeof line, "p (%.3g, %.3g, %.3g) kg m/s", d.momentum.x, d.momentum.y, d.momentum.z);
+    const glm::dvec3 p = physics::momentumShown(d);  // kg m/s
+    std::snprintf(line, sizeof line, "p (%.3g, %.3g, %.3g) kg m/s", p.x, p.y, p.z);
     lines.emplace_back(line);
     std::snprintf(line, sizeof line, "penetration %.2f\u00a0%%\u00a0r   t\u00a0%.3f\u00a0s",
                   100.0 * d.maxPenetration, view.time);
