@@ -264,7 +264,7 @@ TEST(Alarms, DeepOverlapFires) {
     EXPECT_NEAR(sim.alarms().worst(AlarmKind::Penetration), 0.6, 1e-9);
     const auto lines = sim.alarms().lines(sim.world().time);
     ASSERT_EQ(lines.size(), 1u);
-    EXPECT_TRUE(contains(lines[0].text, "PENETRATION: up to 60.0 % of r")) << lines[0].text;
+    EXPECT_TRUE(contains(lines[0].text, "PENETRATION: 60.0 % of r at the deepest so far")) << lines[0].text;
     EXPECT_TRUE(contains(lines[0].hint, "response-only")) << lines[0].hint;
     EXPECT_FALSE(sim.paused);
 }

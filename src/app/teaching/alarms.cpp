@@ -294,7 +294,8 @@ std::vector<AlarmLine> Alarms::lines(double now) const {
     }
     if (const State& s = state(AlarmKind::Penetration); s.count > 0) {
         lines.push_back({AlarmKind::Penetration,
-                         formatted("PENETRATION: up to %.1f %% of r (alarm above %.0f %%), last at t = %.3f s",
+                         // The deepest so far, which the views' labels (the deepest now) may no longer show.
+                         formatted("PENETRATION: %.1f %% of r at the deepest so far (alarm above %.0f %%), last above it at t = %.3f s",
                                    100.0 * s.worst, 100.0 * kPenetrationTolerance, s.lastTime),
                          s.hint, lit(AlarmKind::Penetration)});
     }
