@@ -47,12 +47,6 @@ constexpr int kViewGap = 4;  // px between the two views side by side
 // ("behind real time") at 30 frames a second rather than in real time at 16 (the 10k
 // pile: one step of 10 ms a frame instead of four).
 constexpr double kSlowestFrameSeconds = 1.0 / 30.0;
-// A view of more spheres than this is drawn with hard outlines: blending them over
-// what is behind costs a software GL more than the spheres (llvmpipe, 1280 x 720, 10k
-// spheres: 11 ms a frame hard, 16-18 ms blended), and the window is to keep 30 frames
-// per second there.
-constexpr std::size_t kMostSpheresAntialiased = 5000;
-
 class WindowApp {
 public:
     WindowApp(std::unique_ptr<platform::Window> window, scenes::Scene scene, const WindowAppOptions& options);
@@ -503,7 +497,7 @@ void WindowApp::drawScene(const ViewLayout& views) {
         buildSnapshot(session_.run(k), panel_, snapshots_[k]);
         session_.appendSelection(k, camera_, snapshots_[k], explainedPartner(session_, input_.tools()));
         // Straight into the window, which has no samples: the spheres' outlines are blended.
-        renderer_.style.antialiasEdges = snapshots_[k].sphereCount() <= kMostSpheresAntialiased;
+        renderer_.style.antialiasEdges = outlinesAntialiased(snapshots_[k].sphereCount());
         if (!renderer_.style.antialiasEdges) timing_.antialiasedUpTo = kMostSpheresAntialiased;
         renderer_.draw(snapshots_[k], camera_, view.x, view.y, view.z, view.w);
     }
