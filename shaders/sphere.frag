@@ -10,7 +10,9 @@ uniform mat4 uProjection;
 uniform vec4 uViewport;        // x, y, width, height in framebuffer pixels
 uniform vec3 uLightDirection;  // view space, unit, towards the light
 uniform vec3 uUpDirection;     // world +z in view space, for the sky/ground ambient
-uniform bool uCoverageAlpha;   // multisampled target: alpha is the edge coverage
+uniform bool uCoverageAlpha;   // alpha is the edge coverage (alpha to coverage, or blended)
+uniform int uPart;             // 0: every fragment; 1: where the sphere covers the pixel whole;
+                               // 2: its edge only (coverage below 1)
 
 out vec4 fragColor;
 
@@ -23,10 +25,11 @@ void main() {
     vec3 offset = vCenter - ray * along;
     float miss2 = dot(offset, offset);
     float miss = sqrt(max(miss2, 0.0));
-    // Inside the outline > 0, in pixels: the anti-aliased edge under MSAA.
+    // Inside the outline > 0, in pixels: the anti-aliased edge.
     float edge = (vRadius - miss) / max(fwidth(miss), 1e-7);
     float coverage = clamp(edge + 0.5, 0.0, 1.0);
     if (uCoverageAlpha ? coverage <= 0.0 : edge < 0.0) discard;
+    if ((uPart == 1 && coverage < 1.0) || (uPart == 2 && coverage >= 1.0)) discard;
 
     float t = along - sqrt(max(vRadius * vRadius - miss2, 0.0));
     vec3 hit = ray * t;

@@ -48,7 +48,10 @@ const bench::Usage kUsage{"spheres_bench_render",
 struct Outlines {
     int samples = 0;
     bool blended = false;
-    std::string name() const { return samples > 0 ? std::to_string(samples) + "×" : blended ? "blended" : "hard"; }
+    // In the table; `x` in file names.
+    std::string name(const char* times = "×") const {
+        return samples > 0 ? std::to_string(samples) + times : blended ? "blended" : "hard";
+    }
 };
 
 struct Options {
@@ -210,7 +213,7 @@ int main(int argc, char** argv) {
             const render::Image whole = target.read();
             if (!o.saveDirectory.empty()) {
                 const std::string path = o.saveDirectory + "/render_" + std::to_string(count) +
-                                         "_" + outlines.name() + ".png";
+                                         "_" + outlines.name("x") + ".png";
                 if (!render::writePng(path, culled.width, culled.height, culled.rgba))
                     std::fprintf(stderr, "spheres_bench_render: cannot write %s\n", path.c_str());
             }

@@ -1,6 +1,7 @@
 #include "physics/diagnostics.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <numeric>
 

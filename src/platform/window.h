@@ -17,8 +17,8 @@ struct WindowOptions {
     bool growToScreen = false;
     std::string title = "Rigid Spheres";
     bool vsync = true;
-    // MSAA samples of the default framebuffer, 0 for none: the app draws its views
-    // multisampled offscreen and the panel needs none.
+    // MSAA samples of the default framebuffer, 0 for none: the app's views blend the
+    // spheres' outlines themselves, and the panel needs none.
     int samples = 0;
 };
 

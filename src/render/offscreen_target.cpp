@@ -96,13 +96,6 @@ Image OffscreenTarget::read() const {
     return image;
 }
 
-void OffscreenTarget::copyTo(GLuint framebuffer, int x, int y) const {
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_);
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer);
-    glBlitFramebuffer(0, 0, width_, height_, x, y, x + width_, y + height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-}
-
 std::vector<std::uint8_t> readPixelsRGBA(int width, int height) {
     const std::size_t rowBytes = static_cast<std::size_t>(width) * 4;
     std::vector<std::uint8_t> bottomUp(rowBytes * static_cast<std::size_t>(height));

@@ -24,9 +24,6 @@ class OffscreenTarget {
     void bind() const;
     // Resolves MSAA if needed and returns the pixels, rows top-down. Leaves it bound.
     Image read() const;
-    // Copies all of it, resolving MSAA, into `framebuffer` (0: the window's) with its
-    // lower-left corner at (x, y) there. Leaves `framebuffer` bound.
-    void copyTo(GLuint framebuffer, int x, int y) const;
     void destroy();
 
     int width() const { return width_; }

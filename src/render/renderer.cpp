@@ -179,8 +179,15 @@ void Renderer::draw(const FrameSnapshot& snapshot, const Camera& camera, int x, 
     const SphereEdges edges = !style.antialiasEdges ? SphereEdges::Hard
                               : sampleBuffers > 0   ? SphereEdges::AlphaToCoverage
                                                     : SphereEdges::Blended;
-    passes_->spheres.draw(snapshot, frame, edges);
+    // The translucent planes (an incline, a thin wall) go between the edges of the spheres
+    // behind them and the edges of the others (SpherePass::draw).
+    std::vector<glm::vec4> translucent;  // (n, d), m
+    for (const PlaneFace& face : planes.extraFaces) {
+        if (!face.polygon.empty()) translucent.emplace_back(face.normal, -glm::dot(face.normal, face.polygon[0]));
+    }
+    passes_->spheres.draw(snapshot, frame, edges, translucent);
     passes_->planes.draw(planes.extraFaces, frame, false);
+    passes_->spheres.drawFrontEdges();
     passes_->lines.draw(planes.edges, frame, true, kLineDepthBias);
 
     // Depth-tested marks that no pixel can show (contacts deep in a pile) are left out,

@@ -1,6 +1,7 @@
 #include "render/sphere_pass.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <glm/gtc/type_ptr.hpp>
 
@@ -9,6 +10,10 @@
 
 namespace render {
 namespace {
+
+// Drawing in the order of distance, the runs of point sprites and squares at most this many
+// (each a draw call); beyond, every sphere is drawn as a square.
+constexpr std::size_t kMostBatches = 64;
 
 constexpr float kCorners[] = {-1.0f, -1.0f, 1.0f, -1.0f, -1.0f, 1.0f, 1.0f, 1.0f};
 
@@ -94,6 +99,7 @@ std::string SpherePass::buildProgram(Program& p, std::string_view label,
     p.lightDirection = p.program.uniform("uLightDirection");
     p.upDirection = p.program.uniform("uUpDirection");
     p.coverageAlpha = p.program.uniform("uCoverageAlpha");
+    p.part = p.program.uniform("uPart");
     return {};
 }
 
@@ -139,12 +145,15 @@ void SpherePass::destroy() {
 // Distance from the eye, squared, less the radius squared (m^2): the power of the eye
 // with respect to the sphere. Spheres that do not overlap are seen in front of each
 // other in the order of it, whatever their radii.
+// A sphere not finite (a blow-up, paused by its alarm) goes first: a NaN key would break
+// the sort's order for the others.
 float powerFromEye(const ViewSphere& sphere) {
-    return glm::dot(sphere.center, sphere.center) - sphere.radius * sphere.radius;
+    const float power = glm::dot(sphere.center, sphere.center) - sphere.radius * sphere.radius;
+    return std::isfinite(power) ? power : INFINITY;
 }
 
 void SpherePass::partition(const FrameSnapshot& snapshot, const FrameContext& frame,
-                           float marginPixels, SphereEdges edges) {
+                           float marginPixels, SphereEdges edges, const std::vector<glm::vec4>& translucent) {
     inView_.clear();
     const std::size_t count =
         std::min({snapshot.centers.size(), snapshot.radii.size(), snapshot.colors.size()});
@@ -154,21 +163,32 @@ void SpherePass::partition(const FrameSnapshot& snapshot, const FrameContext& fr
         inView_.push_back(viewSphere(std::uint32_t(i), viewCenter, snapshot.radii[i], frame, marginPixels));
     }
     if (cullHidden) hiddenSpheres_.find(inView_, frame, edges != SphereEdges::Hard, depthBitsOfTarget());
-    if (edges == SphereEdges::Blended) {
+    const bool inOrder = edges == SphereEdges::Blended;
+    if (inOrder) {
         // The power's order is a strict one on distinct spheres; equal keys keep the
         // snapshot's order, so the image does not depend on the sort.
         std::stable_sort(inView_.begin(), inView_.end(), [](const ViewSphere& a, const ViewSphere& b) {
             return powerFromEye(a) > powerFromEye(b);
         });
     }
+    // Behind a translucent plane: the eye and the centre on its two sides. Those first.
+    const auto behind = [&](const ViewSphere& sphere) {
+        const glm::vec4 c(snapshot.centers[sphere.index], 1.0f), eye(frame.cameraPosition, 1.0f);
+        return std::any_of(translucent.begin(), translucent.end(),
+                           [&](const glm::vec4& plane) { return glm::dot(plane, c) * glm::dot(plane, eye) < 0.0f; });
+    };
+    const auto firstInFront =
+        inOrder ? std::stable_partition(inView_.begin(), inView_.end(), behind) : inView_.end();
     points_.clear();
     quads_.clear();
     batches_.clear();
-    const bool inOrder = edges == SphereEdges::Blended;
-    for (const ViewSphere& sphere : inView_) {
+    frontBatches_ = 0;
+    for (auto it = inView_.begin(); it != inView_.end(); ++it) {
+        if (it == firstInFront) frontBatches_ = batches_.size();
+        const ViewSphere& sphere = *it;
         if (sphere.hidden) continue;
         std::vector<SphereInstance>& instances = sphere.pointSprite ? points_ : quads_;
-        if (inOrder && (batches_.empty() || batches_.back().pointSprites != sphere.pointSprite)) {
+        if (inOrder && (batches_.empty() || batches_.back().pointSprites != sphere.pointSprite || it == firstInFront)) {
             batches_.push_back({sphere.pointSprite, instances.size(), 0});
         }
         if (inOrder) ++batches_.back().count;
@@ -176,6 +196,21 @@ void SpherePass::partition(const FrameSnapshot& snapshot, const FrameContext& fr
         instances.push_back({snapshot.centers[i], snapshot.radii[i], snapshot.colors[i]});
     }
     if (!inOrder) batches_ = {{true, 0, points_.size()}, {false, 0, quads_.size()}};
+    if (firstInFront == inView_.end()) frontBatches_ = batches_.size();
+    if (batches_.size() > kMostBatches) {
+        // Points and squares alternate in the order (a close view, spheres across the
+        // viewport's edge): every sphere a square, in the same order, in two draws at most.
+        quads_.clear();
+        std::size_t behindCount = 0;
+        for (auto it = inView_.begin(); it != inView_.end(); ++it) {
+            if (it->hidden) continue;
+            behindCount += it < firstInFront;
+            quads_.push_back({snapshot.centers[it->index], snapshot.radii[it->index], snapshot.colors[it->index]});
+        }
+        batches_ = {{false, 0, behindCount}, {false, behindCount, quads_.size() - behindCount}};
+        frontBatches_ = 1;
+        points_.clear();
+    }
 }
 
 bool SpherePass::hidesMark(const OverlayLine& line, const FrameContext& frame, float depthBias) const {
@@ -197,6 +232,7 @@ void SpherePass::setUniforms(const Program& p, const FrameContext& frame, float 
     glUniform3fv(p.lightDirection, 1, glm::value_ptr(frame.lightView));
     glUniform3fv(p.upDirection, 1, glm::value_ptr(frame.upView));
     glUniform1i(p.coverageAlpha, coverageAlpha ? 1 : 0);
+    glUniform1i(p.part, 0);
 }
 
 void SpherePass::drawBatch(bool pointSprites, std::size_t first, std::size_t count) {
@@ -209,12 +245,18 @@ void SpherePass::drawBatch(bool pointSprites, std::size_t first, std::size_t cou
     }
 }
 
-void SpherePass::draw(const FrameSnapshot& snapshot, const FrameContext& frame, SphereEdges edges) {
-    // Coverage needs fragments up to a pixel and a half outside the outline, px.
-    const bool coverage = edges != SphereEdges::Hard;
-    const float marginPixels = coverage ? 1.5f : 0.5f;
-    partition(snapshot, frame, marginPixels, edges);
-    if (points_.empty() && quads_.empty()) return;
+void SpherePass::drawBatches(int part, std::size_t first, std::size_t end) {
+    for (std::size_t b = first; b < end; ++b) {
+        const Batch& batch = batches_[b];
+        const Program& program = batch.pointSprites ? pointProgram_ : quadProgram_;
+        glUseProgram(program.program.id());
+        glUniform1i(program.part, part);
+        glBindVertexArray(batch.pointSprites ? pointArray_ : quadArray_);
+        drawBatch(batch.pointSprites, batch.first, batch.count);
+    }
+}
+
+void SpherePass::beginState(SphereEdges edges) const {
     glEnable(GL_DEPTH_TEST);
     glDepthMask(GL_TRUE);
     glDisable(GL_BLEND);
@@ -222,27 +264,55 @@ void SpherePass::draw(const FrameSnapshot& snapshot, const FrameContext& frame, 
     glEnable(GL_PROGRAM_POINT_SIZE);
 #endif
     // The target keeps the background's alpha of 1.
-    if (coverage) glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
+    if (edges != SphereEdges::Hard) glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
     if (edges == SphereEdges::AlphaToCoverage) glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
     if (edges == SphereEdges::Blended) {
         glEnable(GL_BLEND);
         glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     }
-    upload(pointBuffer_, points_);
-    upload(quadBuffer_, quads_);
-    for (const Batch& batch : batches_) {
-        const Program& program = batch.pointSprites ? pointProgram_ : quadProgram_;
-        setUniforms(program, frame, marginPixels, coverage);
-        glBindVertexArray(batch.pointSprites ? pointArray_ : quadArray_);
-        drawBatch(batch.pointSprites, batch.first, batch.count);
-    }
+}
+
+void SpherePass::endState() const {
     glBindVertexArray(0);
 #ifndef __EMSCRIPTEN__
     glDisable(GL_PROGRAM_POINT_SIZE);
 #endif
     glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
     glDisable(GL_BLEND);
+    glDepthMask(GL_TRUE);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+}
+
+void SpherePass::draw(const FrameSnapshot& snapshot, const FrameContext& frame, SphereEdges edges,
+                      const std::vector<glm::vec4>& translucent) {
+    // Coverage needs fragments up to a pixel and a half outside the outline, px.
+    const bool coverage = edges != SphereEdges::Hard;
+    const float marginPixels = coverage ? 1.5f : 0.5f;
+    const bool split = edges == SphereEdges::Blended && !translucent.empty();
+    partition(snapshot, frame, marginPixels, edges, split ? translucent : std::vector<glm::vec4>{});
+    if (!split) frontBatches_ = batches_.size();  // every edge now
+    if (points_.empty() && quads_.empty()) return;
+    beginState(edges);
+    upload(pointBuffer_, points_);
+    upload(quadBuffer_, quads_);
+    setUniforms(pointProgram_, frame, marginPixels, coverage);
+    setUniforms(quadProgram_, frame, marginPixels, coverage);
+    if (split) {
+        drawBatches(1, 0, batches_.size());  // the whole pixels, writing depth
+        glDepthMask(GL_FALSE);               // then the edges behind the planes, depth-tested only
+        drawBatches(2, 0, frontBatches_);
+    } else {
+        drawBatches(0, 0, batches_.size());
+    }
+    endState();
+}
+
+void SpherePass::drawFrontEdges() {
+    if (frontBatches_ >= batches_.size()) return;
+    beginState(SphereEdges::Blended);  // the uniforms stay set since draw()
+    glDepthMask(GL_FALSE);
+    drawBatches(2, frontBatches_, batches_.size());
+    endState();
 }
 
 }  // namespace render

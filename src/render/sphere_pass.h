@@ -34,7 +34,16 @@ class SpherePass {
   public:
     std::string init();
     void destroy();
-    void draw(const FrameSnapshot& snapshot, const FrameContext& frame, SphereEdges edges);
+    // translucent (Blended only): planes drawn after the spheres, translucent, each (n, d)
+    // with n.x + d = 0 (world, m). Then the spheres are drawn where they cover a pixel whole,
+    // writing depth, and only the edges of those behind such a plane (seen from the eye) are
+    // blended in: the plane goes over them as over the rest. drawFrontEdges, after the
+    // planes, blends the edges of the others over the planes. (Edges that wrote depth hid
+    // the plane behind them: a ring of the untinted background around a sphere on 07's
+    // incline.)
+    void draw(const FrameSnapshot& snapshot, const FrameContext& frame, SphereEdges edges,
+              const std::vector<glm::vec4>& translucent = {});
+    void drawFrontEdges();
     // Spheres sent to the GL by the last draw (the others were hidden or behind the eye).
     std::size_t drawnSpheres() const { return points_.size() + quads_.size(); }
 
@@ -49,13 +58,17 @@ class SpherePass {
     struct Program {
         GlProgram program;
         GLint view = -1, projection = -1, pixelSize = -1, viewportSize = -1, marginPixels = -1,
-              viewport = -1, lightDirection = -1, upDirection = -1, coverageAlpha = -1;
+              viewport = -1, lightDirection = -1, upDirection = -1, coverageAlpha = -1, part = -1;
     };
     std::string buildProgram(Program& program, std::string_view label,
                              std::string_view vertexSource);
     void partition(const FrameSnapshot& snapshot, const FrameContext& frame, float marginPixels,
-                   SphereEdges edges);
+                   SphereEdges edges, const std::vector<glm::vec4>& translucent);
     void drawBatch(bool pointSprites, std::size_t first, std::size_t count);
+    // Batches [first, end) with sphere.frag's uPart.
+    void drawBatches(int part, std::size_t first, std::size_t end);
+    void beginState(SphereEdges edges) const;
+    void endState() const;
     void setUniforms(const Program& program, const FrameContext& frame, float marginPixels,
                      bool coverageAlpha);
 
@@ -77,6 +90,9 @@ class SpherePass {
         std::size_t first = 0, count = 0;  // in points_ or quads_
     };
     std::vector<Batch> batches_;
+    // With translucent planes: the batches from here on hold the spheres in front of all of
+    // them (their edges wait for drawFrontEdges); batches_.size() without.
+    std::size_t frontBatches_ = 0;
 };
 
 }  // namespace render

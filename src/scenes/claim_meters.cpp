@@ -458,7 +458,7 @@ const std::vector<MeterEntry>& meterTable() {
          make<ChangeMeter>(true, +[](const World& w, const physics::Params& p) {
              return glm::dvec3(physics::modifiedEnergy(w, p), 0.0, 0.0);
          })},
-        {{"momentum", "kg m/s", "|P|, the length of the momentum readout"},
+        {{"momentum", "kg m/s", "|P|, the length of the total momentum (the readouts show rounding below 1e-12 of sum m |v| as 0)"},
          world([](const World& w, const Scene& s) { return glm::length(physics::measure(w, s.params).momentum); })},
         {{"momentum_change", "of |P| at t = 0", "|P - P at t = 0| / |P at t = 0|, the momentum readout"},
          make<ChangeMeter>(false, +[](const World& w, const physics::Params& p) {

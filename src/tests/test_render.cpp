@@ -344,9 +344,9 @@ class Headless : public ::testing::TestWithParam<platform::HeadlessBackend> {
 
     // Renders the snapshot into a fresh target of width x height pixels.
     render::Image draw(const render::FrameSnapshot& snapshot, const render::Camera& camera,
-                       int width, int height, const render::RenderStyle& style = {}) {
+                       int width, int height, const render::RenderStyle& style = {}, int samples = 0) {
         render::OffscreenTarget target;
-        EXPECT_EQ(target.resize(width, height), "");
+        EXPECT_EQ(target.resize(width, height, samples), "");
         render::Renderer renderer;
         EXPECT_EQ(renderer.init(), "");
         renderer.style = style;
@@ -574,18 +574,63 @@ TEST_P(Headless, SphereOutlinesAreBlendedWithAndWithoutSamples) {
     EXPECT_EQ(blendedEdgePixels(0, false), 0) << "hard outlines";
 }
 
+// A translucent plane (07's incline, 13's thin wall) is drawn after the spheres. Blended, a
+// sphere's edge must neither hide it (edges that wrote depth left a dark ring, the
+// background untinted, around every sphere in front of the incline: 98 pixels here) nor
+// escape the tint of a plane in front of it. A white sphere on black, a half-opaque red
+// plane behind the sphere or in front of it: around the outline, the picture without
+// samples is the 4-sample one's but for the samples' steps of a quarter (up to 64 of 255).
+// Returns the pixels there that differ by more.
+int edgePixelsUnlikeSampled(float planeY) {
+    render::FrameSnapshot snapshot;
+    snapshot.addSphere({0, 0, 0}, 0.5f, {255, 255, 255, 255});
+    snapshot.planes.push_back({{0, planeY, 0}, {0, -1, 0}});  // facing the eye
+    const render::Camera camera = frontCamera({0, 0, 0}, 4.0f);
+    const int width = 200, height = 160;
+    render::Renderer renderer;
+    if (!renderer.init().empty()) return -1;
+    renderer.style.backgroundTop = renderer.style.backgroundBottom = glm::vec3(0.0f);
+    renderer.style.extraPlaneColor = glm::vec4(1.0f, 0.0f, 0.0f, 0.5f);
+    render::Image images[2];
+    for (int samples : {0, 4}) {
+        render::OffscreenTarget target;
+        if (!target.resize(width, height, samples).empty()) return -1;
+        renderer.draw(snapshot, camera, 0, 0, width, height);
+        images[samples > 0] = target.read();
+    }
+    const glm::vec2 size(width, height);
+    const vec3 centre = camera.project({0, 0, 0}, size);
+    const float radius = camera.project({0.5f, 0, 0}, size).x - centre.x;  // px
+    int unlike = 0;
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+            const float off = std::hypot(x + 0.5f - centre.x, y + 0.5f - centre.y) - radius;  // px
+            if (std::abs(off) <= 1.0f) unlike += channelSpread(images[0].pixel(x, y), images[1].pixel(x, y)) > 64;
+        }
+    }
+    return unlike;
+}
+
+TEST_P(Headless, ASpheresBlendedEdgeMeetsATranslucentPlaneAsWithSamples) {
+    EXPECT_EQ(edgePixelsUnlikeSampled(0.8f), 0) << "the plane behind the sphere";
+    EXPECT_EQ(edgePixelsUnlikeSampled(-0.8f), 0) << "the plane in front of it";
+}
+
 // Without samples an outline blends over what was drawn before it, so the spheres are
 // drawn from the farthest to the nearest whatever their order in the snapshot (a nearer
 // sphere drawn first would blend its outline over the background and hide the farther
-// one there: a dark ring). Large and small, near and far, squares and point sprites.
+// one there: a dark ring). Large and small, near and far, squares (across the viewport's
+// edge, or large) and point sprites in turn: the picture is the 4-sample one's but for the
+// samples' steps.
 TEST_P(Headless, BlendedOutlinesDoNotDependOnTheSpheresOrder) {
     const render::Camera camera = frontCamera({0, 0, 0}, 4.0f);
     std::vector<std::pair<glm::vec3, float>> spheres = {
         {{0.0f, 0.0f, 0.0f}, 0.5f},      {{0.45f, -0.6f, 0.1f}, 0.3f},  {{-0.3f, -1.2f, -0.2f}, 0.15f},
         {{-0.6f, 0.8f, 0.3f}, 0.6f},     {{0.3f, -1.5f, 0.35f}, 0.08f}, {{-1.9f, 0.0f, 0.0f}, 0.4f},
-        {{0.05f, -0.9f, -0.05f}, 0.12f}, {{0.9f, 0.5f, -0.4f}, 0.5f}};
+        {{0.05f, -0.9f, -0.05f}, 0.12f}, {{0.9f, 0.5f, -0.4f}, 0.5f},  {{0.35f, -3.0f, -0.3f}, 0.25f},
+        {{1.15f, -1.0f, 0.3f}, 0.3f}};
     const glm::u8vec4 colors[] = {kRed, kBlue, {40, 200, 60, 255}, {230, 220, 40, 255}};
-    const auto drawInOrder = [&](bool reversed) {
+    const auto drawInOrder = [&](bool reversed, int samples = 0) {
         render::FrameSnapshot snapshot;
         for (std::size_t k = 0; k < spheres.size(); ++k) {
             const std::size_t i = reversed ? spheres.size() - 1 - k : k;
@@ -593,14 +638,18 @@ TEST_P(Headless, BlendedOutlinesDoNotDependOnTheSpheresOrder) {
         }
         render::RenderStyle black;
         black.backgroundTop = black.backgroundBottom = glm::vec3(0.0f);
-        return draw(snapshot, camera, 200, 160, black);
+        return draw(snapshot, camera, 200, 160, black, samples);
     };
-    const render::Image forward = drawInOrder(false), backward = drawInOrder(true);
-    int differ = 0;
+    const render::Image forward = drawInOrder(false), backward = drawInOrder(true), sampled = drawInOrder(false, 4);
+    int differ = 0, unlikeSampled = 0;
     for (int y = 0; y < 160; ++y) {
-        for (int x = 0; x < 200; ++x) differ += forward.pixel(x, y) != backward.pixel(x, y);
+        for (int x = 0; x < 200; ++x) {
+            differ += forward.pixel(x, y) != backward.pixel(x, y);
+            unlikeSampled += channelSpread(forward.pixel(x, y), sampled.pixel(x, y)) > 64;
+        }
     }
     EXPECT_EQ(differ, 0);
+    EXPECT_EQ(unlikeSampled, 0) << "pixels unlike the 4-sample picture by more than 64 of 255";
     // Where the blue sphere's outline crosses the red one (the row of the blue centre),
     // the pixels are blends of blue and red, not of blue and the black between.
     const glm::vec2 size(200, 160);

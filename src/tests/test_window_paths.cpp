@@ -445,6 +445,24 @@ TEST(WindowPaths, PageDownMovesThePresentedTextOnByAPageInWholeLines) {
     for (int k = 0; k < 20; ++k) last = pages(1);  // far past the end: it stops there
     EXPECT_GT(last, first);
     EXPECT_EQ(pages(1), last) << "no page past the text's end";
+    // A new scene opens at its top, whatever was pressed in the same frame.
+    state.scrollToTop = true;
+    EXPECT_EQ(pages(1), 0.0f);
+    // Hidden, the panel keeps no presses for later.
+    state.visible = false;
+    state.pagesToScroll = 3;
+    frame();
+    state.visible = true;
+    frame();
+    frame();
+    EXPECT_EQ(state.textScrollY, 0.0f);
+    // The full panel (all its controls: longer than the window) pages too.
+    state.present = false;
+    for (int k = 0; k < 3; ++k) frame();
+    const float full = pages(1);
+    EXPECT_GT(full, 4.0f * line);
+    EXPECT_LT(full, 576.0f) << "less than the window";
+    EXPECT_EQ(pages(-1), 0.0f);
     ImGui::DestroyContext(context);
 }
 

@@ -584,17 +584,19 @@ void scrollToTopIfAsked(PanelState& state) {
     state.scrollToTop = false;
 }
 
-// Page Down / Page Up: the scroll moves by the region's height less a line, in whole lines
-// (the presented text's fold lies between two lines: a page on, the line under the fold is
-// the top one), so that the class reads on from the line it last saw.
+// Page Down / Page Up: the scroll moves by the visible height less a line, in whole lines
+// (presenting, the text's lines lie a font size apart from the top and the fold falls
+// between two: a page on, the line that was last in sight is the top one), so that the
+// class reads on from it. A new scene's scroll to its top comes first.
 void scrollByPagesIfAsked(PanelState& state) {
-    if (state.pagesToScroll != 0) {
-        const float line = ImGui::GetFontSize();  // px: the text's lines, one font size apart
-        const float page = std::max(1.0f, std::floor(ImGui::GetWindowHeight() / line) - 1.0f) * line;
-        const float to = ImGui::GetScrollY() + float(state.pagesToScroll) * page;
+    if (state.pagesToScroll != 0 && !state.scrollToTop) {
+        const float line = ImGui::GetFontSize();  // px
+        const float visible = ImGui::GetWindowContentRegionMax().y - ImGui::GetWindowContentRegionMin().y;  // px
+        const float page = std::max(1.0f, std::floor(visible / line) - 1.0f) * line;
+        const float to = std::round((ImGui::GetScrollY() + float(state.pagesToScroll) * page) / line) * line;
         ImGui::SetScrollY(std::clamp(to, 0.0f, ImGui::GetScrollMaxY()));
-        state.pagesToScroll = 0;
     }
+    state.pagesToScroll = 0;
     state.textScrollY = ImGui::GetScrollY();
 }
 
@@ -753,18 +755,22 @@ void presentedPanel(const scenes::Scene& scene, const Readouts& readouts, const 
         ImGui::PopItemWidth();
     };
     // The fold between two of the text's lines, never through one (a class saw the last line
-    // cut in half): its lines lie a whole number of font sizes below the title's and the
-    // slide's item spacings.
+    // cut in half): the title, the slide and the text follow each other without item spacing,
+    // so that every line lies a whole number of font sizes from the top, scrolled by pages
+    // (scrollByPagesIfAsked) or not.
     const float room = ImGui::GetContentRegionAvail().y - below;  // px
-    const float font = ImGui::GetFontSize(), spacings = (scene.slide.empty() ? 1.0f : 2.0f) * ImGui::GetStyle().ItemSpacing.y;
+    const float font = ImGui::GetFontSize();
     // Where all of it fits (as it did in the last frame) there is no fold: the claims' line
     // under a short text was cut in half by the fold set for the text's lines.
     const bool fits = state.presentedContentHeight <= room;
-    const float cut = !fits && room > spacings + font ? std::fmod(room - spacings, font) : 0.0f;  // px, under the fold
+    const float cut = !fits && room > font ? std::fmod(room, font) : 0.0f;  // px, under the fold
     ImGui::BeginChild("presented", ImVec2(0.0f, room - cut));
-    scrollToTopIfAsked(state);
     scrollByPagesIfAsked(state);
+    scrollToTopIfAsked(state);
+    ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(ImGui::GetStyle().ItemSpacing.x, 0.0f));
     sceneText(scene);
+    ImGui::PopStyleVar();
+    ImGui::Spacing();
     measuredClaims(readouts, state);
     if (inSight < sliders.size()) {
         ImGui::Separator();
@@ -822,6 +828,7 @@ PanelActions drawControlPanel(const scenes::Scene& scene, double& timeScale, con
     PanelActions actions;
     if (!state.visible || state.yieldsToExplainer) {
         state.pendingName.clear();  // hidden while a restart slider was held: its drag is over
+        state.pagesToScroll = 0;    // nothing to page: the text does not jump when it comes back
         return actions;
     }
     const ImGuiViewport* viewport = ImGui::GetMainViewport();
@@ -837,8 +844,8 @@ PanelActions drawControlPanel(const scenes::Scene& scene, double& timeScale, con
         ImGui::End();
         return actions;
     }
-    scrollToTopIfAsked(state);
     scrollByPagesIfAsked(state);
+    scrollToTopIfAsked(state);
     pushItemWidth();
     sceneText(scene);
     measuredClaims(readouts, state);

@@ -580,6 +580,8 @@ render::Image Capturer::drawFrame() {
     const ui::PanelState view = captureView(colorBy_, plan_.overlays, options_.uiScale.value_or(1.0f),
                                               options_.present, plan_.size.y);
     renderer_.style.overlayOnTop = overlaysOnTop(view, simulation_.world().size());
+    // Without samples the outlines are blended as in the window: up to its count of spheres.
+    renderer_.style.antialiasEdges = target_.samples() > 0 || outlinesAntialiased(simulation_.world().size());
     buildSnapshot(simulation_, view, snapshot_);
     renderer_.draw(snapshot_, camera_, view_.x, view_.y, view_.z, view_.w);
     uiDrawn_.clear();

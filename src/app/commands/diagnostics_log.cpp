@@ -71,10 +71,11 @@ void DiagnosticsLog::write(std::uint64_t step, double time, const physics::Diagn
 }
 
 std::string summarize(const physics::Diagnostics& d) {
+    const glm::dvec3 p = physics::momentumShown(d);  // kg m/s, as the readouts show it (the JSON log: raw)
     return "E_kin " + format("%.6g", d.kinetic) + " J, E_pot " + format("%.6g", d.potential) +
            " J, E " + format("%.6g", d.total) + " J, E~ " + format("%.6g", d.modified) +
-           " J | p (" + format("%.3g", d.momentum.x) + ", " + format("%.3g", d.momentum.y) + ", " +
-           format("%.3g", d.momentum.z) + ") kg m/s | contacts " +
+           " J | p (" + format("%.3g", p.x) + ", " + format("%.3g", p.y) + ", " +
+           format("%.3g", p.z) + ") kg m/s | contacts " +
            std::to_string(d.sphereContacts) + " sphere + " + std::to_string(d.wallContacts) +
            " wall | max penetration " + format("%.2f", 100.0 * d.maxPenetration) + " % r | hash " +
            hexHash(d.hash);

@@ -12,7 +12,7 @@ void History::clear() {
 }
 
 void History::add(double time, const physics::Diagnostics& d, std::uint64_t inContact, std::uint64_t bounces) {
-    const float sample[] = {float(d.kinetic), float(d.potential), float(d.modified), float(glm::length(d.momentum)),
+    const float sample[] = {float(d.kinetic), float(d.potential), float(d.modified), float(glm::length(physics::momentumShown(d))),
                             float(inContact), float(d.maxPenetration), float(bounces)};
     static_assert(sizeof sample / sizeof sample[0] == static_cast<std::size_t>(Series::Count));
     // Kept in order (oldest first) so the plots read the vectors as they are; at
