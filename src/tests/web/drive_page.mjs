@@ -333,6 +333,20 @@ try {
   await until((s) => s.time_s > 0, 30000);
   const onlyA = await js("[...document.querySelectorAll('#controls label.only-a')].filter((l) => l.offsetParent).map((l) => l.dataset.name)");
   check('presented side by side, K and shock say they move view A only', JSON.stringify(onlyA) === '["passes","shock"]', JSON.stringify(onlyA));
+  // Its text is longer than its box: Page Down moves it on by the box's height less a line
+  // (a presenter's remote), Page Up back.
+  const scrolled = () => js(`(() => { const t = document.getElementById('text');
+    return { top: t.scrollTop, height: t.clientHeight, end: t.scrollHeight - t.clientHeight }; })()`);
+  const unpaged = await scrolled();
+  await key('PageDown', 'PageDown', 34);
+  await sleep(300);
+  const paged = await scrolled();
+  await key('PageUp', 'PageUp', 33);
+  await sleep(300);
+  const back = await scrolled();
+  check('Page Down moves the presented text on (a page, or to its end), Page Up back', unpaged.end > 1 &&
+        unpaged.top === 0 && paged.top >= Math.min(unpaged.height / 2, unpaged.end - 1) && back.top === 0,
+        JSON.stringify({ unpaged, paged, back }));
   // Four views on a narrow page (800 x 1000: four columns were 100 px wide) or a laptop's
   // (1280 x 720) go in two rows of two, each label over its quarter; on a wide and low page
   // (1600 x 600) in one row again.
