@@ -179,38 +179,44 @@ void SpherePass::partition(const FrameSnapshot& snapshot, const FrameContext& fr
     };
     const auto firstInFront =
         inOrder ? std::stable_partition(inView_.begin(), inView_.end(), behind) : inView_.end();
+    batch(snapshot, inOrder, firstInFront);
+}
+
+// points_, quads_ and batches_ from inView_'s spheres not hidden: in inView_'s order, in runs
+// of point sprites and squares (inOrder), else all the points, then all the squares.
+void SpherePass::batch(const FrameSnapshot& snapshot, bool inOrder, std::vector<ViewSphere>::const_iterator firstInFront) {
+    const auto instance = [&](const ViewSphere& sphere) {
+        return SphereInstance{snapshot.centers[sphere.index], snapshot.radii[sphere.index], snapshot.colors[sphere.index]};
+    };
     points_.clear();
     quads_.clear();
     batches_.clear();
     frontBatches_ = 0;
-    for (auto it = inView_.begin(); it != inView_.end(); ++it) {
+    for (auto it = inView_.cbegin(); it != inView_.cend(); ++it) {
         if (it == firstInFront) frontBatches_ = batches_.size();
-        const ViewSphere& sphere = *it;
-        if (sphere.hidden) continue;
-        std::vector<SphereInstance>& instances = sphere.pointSprite ? points_ : quads_;
-        if (inOrder && (batches_.empty() || batches_.back().pointSprites != sphere.pointSprite || it == firstInFront)) {
-            batches_.push_back({sphere.pointSprite, instances.size(), 0});
+        if (it->hidden) continue;
+        std::vector<SphereInstance>& instances = it->pointSprite ? points_ : quads_;
+        if (inOrder && (batches_.empty() || batches_.back().pointSprites != it->pointSprite || it == firstInFront)) {
+            batches_.push_back({it->pointSprite, instances.size(), 0});
         }
         if (inOrder) ++batches_.back().count;
-        const std::uint32_t i = sphere.index;
-        instances.push_back({snapshot.centers[i], snapshot.radii[i], snapshot.colors[i]});
+        instances.push_back(instance(*it));
     }
     if (!inOrder) batches_ = {{true, 0, points_.size()}, {false, 0, quads_.size()}};
-    if (firstInFront == inView_.end()) frontBatches_ = batches_.size();
-    if (batches_.size() > kMostBatches) {
-        // Points and squares alternate in the order (a close view, spheres across the
-        // viewport's edge): every sphere a square, in the same order, in two draws at most.
-        quads_.clear();
-        std::size_t behindCount = 0;
-        for (auto it = inView_.begin(); it != inView_.end(); ++it) {
-            if (it->hidden) continue;
-            behindCount += it < firstInFront;
-            quads_.push_back({snapshot.centers[it->index], snapshot.radii[it->index], snapshot.colors[it->index]});
-        }
-        batches_ = {{false, 0, behindCount}, {false, behindCount, quads_.size() - behindCount}};
-        frontBatches_ = 1;
-        points_.clear();
+    if (firstInFront == inView_.cend()) frontBatches_ = batches_.size();
+    if (batches_.size() <= kMostBatches) return;
+    // Points and squares alternate in the order (a close view, spheres across the viewport's
+    // edge): every sphere a square, in the same order, in two draws at most.
+    points_.clear();
+    quads_.clear();
+    std::size_t behindCount = 0;
+    for (auto it = inView_.cbegin(); it != inView_.cend(); ++it) {
+        if (it->hidden) continue;
+        behindCount += it < firstInFront;
+        quads_.push_back(instance(*it));
     }
+    batches_ = {{false, 0, behindCount}, {false, behindCount, quads_.size() - behindCount}};
+    frontBatches_ = 1;
 }
 
 bool SpherePass::hidesMark(const OverlayLine& line, const FrameContext& frame, float depthBias) const {

@@ -64,6 +64,7 @@ class SpherePass {
                              std::string_view vertexSource);
     void partition(const FrameSnapshot& snapshot, const FrameContext& frame, float marginPixels,
                    SphereEdges edges, const std::vector<glm::vec4>& translucent);
+    void batch(const FrameSnapshot& snapshot, bool inOrder, std::vector<ViewSphere>::const_iterator firstInFront);
     void drawBatch(bool pointSprites, std::size_t first, std::size_t count);
     // Batches [first, end) with sphere.frag's uPart.
     void drawBatches(int part, std::size_t first, std::size_t end);
