@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <string>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
