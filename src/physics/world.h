@@ -311,6 +311,7 @@ struct Workspace {
         // Wavefront w's pairs of strip s: wavefrontOrder[start[w * count + s], start[w * count + s + 1]).
         std::vector<std::uint32_t> start;
         std::uint32_t span = 0;  // the most strips between the two spheres of a pair
+        std::uint64_t foundAtStep = 0;  // the solver step (World::stepCount) ofSphere was found at
     };
     WavefrontStrips wavefrontStrips;
     // The colored order on several threads: the wavefronts above hold the border group's
