@@ -183,6 +183,25 @@ class ChangeMeter : public detail::Meter {
     std::optional<glm::dvec3> reference_;
 };
 
+// The momentum mark's number (app/teaching/impact_report.h): |change| / sum m|v| of the
+// clusters the last step struck that touch no plane (0 where it struck none).
+class StruckMomentumMeter : public detail::Meter {
+  public:
+    StruckMomentumMeter(const Claim& claim, const Scene& variant) : stretch_(stretchOf(claim, variant)) {}
+    bool needsImpacts() const override { return true; }
+    void stepped(const physics::StepStats& stats) override {
+        const physics::ImpactProperties& impacts = stats.impacts;
+        last_ = impacts.momentumScale > 0.0 ? impacts.momentumChange / impacts.momentumScale : 0.0;
+    }
+    void measure(const World& world) override {
+        if (stretch_.contains(world.time)) samples_.push_back(last_);
+    }
+
+  private:
+    Stretch stretch_;
+    double last_ = 0.0;  // before the first step: nothing struck
+};
+
 // The kinetic energy relative to its value at t = 0.
 class KineticRatioMeter : public detail::Meter {
   public:
@@ -464,6 +483,9 @@ const std::vector<MeterEntry>& meterTable() {
          make<ChangeMeter>(false, +[](const World& w, const physics::Params& p) {
              return physics::measure(w, p).momentum;
          })},
+        {{"struck_momentum_change", "of sum m|v|",
+          "the momentum mark's number: |change| / sum m|v| of the clusters a step struck that touch no plane"},
+         make<StruckMomentumMeter>()},
         {{"mean_speed", "m/s", "the spheres' mean speed"},
          world([](const World& w, const Scene&) {
              double sum = 0.0;

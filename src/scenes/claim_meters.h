@@ -5,6 +5,7 @@
 #include <memory>
 #include <vector>
 
+#include "physics/step.h"
 #include "physics/world.h"
 #include "scenes/claims.h"
 #include "scenes/scene.h"
@@ -19,6 +20,10 @@ class Meter {
         mostSpheres_ = std::max(mostSpheres_, world.size());
         measure(world);
     }
+    // Called after every time step, before observe(), with what the step did.
+    virtual void stepped(const physics::StepStats&) {}
+    // Whether the run must measure the contacts' properties for it (World::measureImpacts).
+    virtual bool needsImpacts() const { return false; }
     const std::vector<double>& samples() const { return samples_; }
     // The most spheres a world it observed held: a claim's sphere numbered beyond them was
     // never in the run (the claim fails and says so, rather than measuring the others).

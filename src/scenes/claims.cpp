@@ -116,10 +116,14 @@ class VariantRun {
 
     void run() {
         physics::World world = buildWorld(variant_);
+        world.measureImpacts = std::any_of(meters_.begin(), meters_.end(), [](const auto& m) { return m && m->needsImpacts(); });
         const double half = 0.5 * variant_.params.timeStep;
         observe(world);
         while (world.time < end_ - half) {
-            physics::step(world, variant_.params);
+            const physics::StepStats stats = physics::step(world, variant_.params);
+            for (const auto& meter : meters_) {
+                if (meter) meter->stepped(stats);
+            }
             emitDue(variant_, world);
             observe(world);
         }
@@ -405,10 +409,12 @@ double LiveClaims::lastMoment() const {
     return last;
 }
 
-void LiveClaims::observe(const physics::World& world) {
+void LiveClaims::observe(const physics::World& world, const physics::StepStats* stepped) {
     if (!watch_) return;
     for (const auto& meter : watch_->meters) {
-        if (meter) meter->observe(world);
+        if (!meter) continue;
+        if (stepped) meter->stepped(*stepped);
+        meter->observe(world);
     }
 }
 

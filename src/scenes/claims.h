@@ -37,6 +37,7 @@
 
 namespace physics {
 struct World;
+struct StepStats;
 }
 
 namespace scenes {
@@ -122,7 +123,8 @@ class LiveClaims {
 
     bool empty() const { return size() == 0; }
     std::size_t size() const;
-    void observe(const physics::World& world);
+    // The world as built (no `stepped`), then after each time step with what it did.
+    void observe(const physics::World& world, const physics::StepStats* stepped = nullptr);
     // The claims whose stretch has passed at `time` (s), judged, in the scene's order.
     std::vector<ClaimCheck> judged(double time) const;
     // s: when the last stretch ends (0 without claims): every claim is judged from then on.

@@ -144,6 +144,27 @@ TEST(Simulation, TheBehindNoteNamesWhatTookTheFrame) {
     EXPECT_EQ(ui::behindRealTimeLine(ui::FrameTimes{}), "behind real time");  // a capture keeps no times
 }
 
+// A claim on what a step did (21's ✗ momentum: the momentum mark's number, from the step's
+// measured impacts) is measured live as on the lab sheet: the window hands each step's
+// figures to the meters (without them, the 62 % read 0 and the panel showed a ✗).
+TEST(Simulation, AClaimOnWhatAStepDidIsMeasuredLiveAsOnTheLabSheet) {
+    const scenes::Scene preset = scenes::loadScene(scenes::presetPath("21_shock_column"));
+    app::Simulation sim(preset);
+    while (sim.world().time < 0.2) sim.singleStep();
+    const std::vector<scenes::ClaimCheck> sheet = scenes::checkClaims(preset);
+    std::size_t compared = 0;
+    for (const scenes::ClaimCheck& check : sim.measuredClaims()) {
+        if (check.claim->measure != "struck_momentum_change") continue;
+        EXPECT_TRUE(check.holds) << check.claim->says << ": " << check.measured;
+        for (const scenes::ClaimCheck& other : sheet) {
+            if (other.claim == nullptr || other.claim->says != check.claim->says) continue;
+            EXPECT_EQ(check.samples, other.samples) << check.claim->says;
+            ++compared;
+        }
+    }
+    EXPECT_EQ(compared, 1u) << "the 62 %, over 0 to 0.1 s (the others end at 10 s)";
+}
+
 // The panel's "the text, measured": the claims of the text whose settings the run has are
 // measured as it goes, give the lab sheet's values (the same run, bit for bit), and stop
 // when the run is changed by hand.

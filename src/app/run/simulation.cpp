@@ -266,7 +266,7 @@ void Simulation::afterStep() {
         // come out as it did then, else the run is not the one they measured.
         const std::uint64_t state = physics::stateHash(world_);
         if (world_.stepCount > claimsStates_.back().solverSteps) {
-            claims_.observe(world_);
+            claims_.observe(world_, &lastStats_);
             keepClaimsState(state);
         } else if (claimsStateAt(world_.stepCount) != state) {
             stopClaims();
