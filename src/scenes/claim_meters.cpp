@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <optional>
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
@@ -183,23 +184,26 @@ class ChangeMeter : public detail::Meter {
     std::optional<glm::dvec3> reference_;
 };
 
-// The momentum mark's number (app/teaching/impact_report.h): |change| / sum m|v| of the
-// clusters the last step struck that touch no plane (0 where it struck none).
+// What the momentum mark (app/teaching/impact_report.h) judges, step by step: |change| /
+// sum m|v| of the clusters a step struck that touch no plane. A sample only for a step that
+// struck one (the mark says "no free cluster struck" of the others): a claim that none is
+// struck counts the samples.
 class StruckMomentumMeter : public detail::Meter {
   public:
     StruckMomentumMeter(const Claim& claim, const Scene& variant) : stretch_(stretchOf(claim, variant)) {}
     bool needsImpacts() const override { return true; }
     void stepped(const physics::StepStats& stats) override {
         const physics::ImpactProperties& impacts = stats.impacts;
-        last_ = impacts.momentumScale > 0.0 ? impacts.momentumChange / impacts.momentumScale : 0.0;
+        if (impacts.momentumScale > 0.0) struck_ = impacts.momentumChange / impacts.momentumScale;
     }
     void measure(const World& world) override {
-        if (stretch_.contains(world.time)) samples_.push_back(last_);
+        if (struck_ && stretch_.contains(world.time)) samples_.push_back(*struck_);
+        struck_.reset();
     }
 
   private:
     Stretch stretch_;
-    double last_ = 0.0;  // before the first step: nothing struck
+    std::optional<double> struck_;  // the last step's, if it struck a free cluster
 };
 
 // The kinetic energy relative to its value at t = 0.
@@ -484,7 +488,8 @@ const std::vector<MeterEntry>& meterTable() {
              return physics::measure(w, p).momentum;
          })},
         {{"struck_momentum_change", "of sum m|v|",
-          "the momentum mark's number: |change| / sum m|v| of the clusters a step struck that touch no plane"},
+          "each step's |change| / sum m|v| of the clusters it struck that touch no plane (no sample where it "
+          "struck none; the momentum mark shows the largest since the restart)"},
          make<StruckMomentumMeter>()},
         {{"mean_speed", "m/s", "the spheres' mean speed"},
          world([](const World& w, const Scene&) {

@@ -401,6 +401,11 @@ LiveClaims::LiveClaims(const Scene& scene) : watch_(std::make_unique<Watch>()) {
 
 std::size_t LiveClaims::size() const { return watch_ ? watch_->claims.size() : 0; }
 
+bool LiveClaims::needsImpacts() const {
+    return watch_ && std::any_of(watch_->meters.begin(), watch_->meters.end(),
+                                 [](const auto& m) { return m && m->needsImpacts(); });
+}
+
 double LiveClaims::lastMoment() const {
     double last = 0.0;
     if (watch_) {

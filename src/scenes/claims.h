@@ -123,6 +123,8 @@ class LiveClaims {
 
     bool empty() const { return size() == 0; }
     std::size_t size() const;
+    // Whether a claim measures what the steps' contacts did (World::measureImpacts).
+    bool needsImpacts() const;
     // The world as built (no `stepped`), then after each time step with what it did.
     void observe(const physics::World& world, const physics::StepStats* stepped = nullptr);
     // The claims whose stretch has passed at `time` (s), judged, in the scene's order.

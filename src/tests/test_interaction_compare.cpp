@@ -3,6 +3,7 @@
 // it does; `spheres capture --compare` writes frames with the two views.
 #include <gtest/gtest.h>
 
+#include <set>
 #include <string>
 #include <vector>
 
@@ -408,9 +409,19 @@ TEST(SideBySide, EachViewMeasuresWhatTheTextSaysOfIt) {
         }
     }
     EXPECT_EQ(views, "ABCD");
-    // The four views are the text's four settings; what it says of response = momentum (that
-    // it keeps A's momentum) is measured elsewhere, as the panel says.
-    EXPECT_EQ(readouts.claimsElsewhere, 1u);
+    // The four views are the text's four settings; two claims about A's momentum mark are
+    // measured at a fifth and a sixth (mu = 1, response = momentum), which no view shows, as
+    // the panel says.
+    EXPECT_EQ(readouts.claimsElsewhere, 2u);
+    std::set<std::string> elsewhere;
+    for (const scenes::Claim& claim : simulation.scene().claims) {
+        if (claim.in != scenes::ClaimSource::Description) continue;
+        const bool shown = std::any_of(readouts.claims.begin(), readouts.claims.end(),
+                                       [&](const ui::Readouts::ClaimLine& line) { return line.says == claim.says; });
+        if (!shown) elsewhere.insert(claim.says);
+    }
+    EXPECT_EQ(elsewhere, (std::set<std::string>{"slide 13's static contact (v \u2190 \u03bc v",
+                                                "(response = momentum keeps it)"}));
     EXPECT_EQ(app::makeReadouts(simulation, ui::FrameTimes{}).claimsWatched, simulation.claimsWatched());
 }
 

@@ -131,9 +131,40 @@ TEST(Wavefronts, TheLecturesOrdersReachTheStateOfOnePairAtATime) {
                     << threads << " threads, step " << k;
             }
             EXPECT_EQ(physics::passesByWavefronts(wavefronts, scene.params), physics::laneWidths().back() >= 4);
-            if (std::string(threads) == "2") {  // the strips found at an earlier step served (wavefronts.cpp)
+            if (std::string(threads) == "2" && physics::passesByWavefronts(wavefronts, scene.params)) {
+                // the strips found at an earlier step served (wavefronts.cpp)
                 EXPECT_LT(wavefronts.workspace.wavefrontStrips.foundAtStep + 1, wavefronts.stepCount);
             }
+        }
+    }
+}
+
+// The strips only share a pass's wavefronts between threads: whichever strip a sphere is
+// placed in (they are kept for some steps while the spheres move), the state is that of one
+// thread. Each step here places every sphere in a strip at random, in the lecture's index
+// order (wavefronts, where the CPU has lanes of 4) and in the colored order's border.
+TEST(Wavefronts, WhicheverStripASphereIsPlacedInTheStateIsThatOfOneThread) {
+    for (const char* order : {"order=index", "order=colored"}) {
+        physics::World one = scenes::buildWorld(pile({"count=5000", "radius=0.029", order, "threads=1"}));
+        const scenes::Scene two = pile({"count=5000", "radius=0.029", order, "threads=2"});
+        physics::World scrambled = scenes::buildWorld(two);
+        const physics::Params oneParams = pile({"count=5000", "radius=0.029", order, "threads=1"}).params;
+        std::uint64_t placed = 0;
+        for (int k = 0; k < 30; ++k) {
+            physics::Workspace::WavefrontStrips& strips = scrambled.workspace.wavefrontStrips;
+            strips.count = 16;  // two threads' (kStripsPerThread 8 a thread)
+            strips.foundAtStep = scrambled.stepCount;
+            strips.ofSphere.resize(scrambled.size());
+            for (std::size_t i = 0; i < scrambled.size(); ++i) {
+                strips.ofSphere[i] = std::uint8_t((i * 2654435761u + std::uint64_t(k) * 40503u) >> 7 & 15u);
+            }
+            physics::step(scrambled, two.params);
+            physics::step(one, oneParams);
+            placed += scrambled.workspace.wavefrontStrips.threads == 2;
+            ASSERT_EQ(physics::stateHash(scrambled), physics::stateHash(one)) << order << ", step " << k;
+        }
+        if (std::string(order) == "order=colored" || physics::laneWidths().back() >= 4) {
+            EXPECT_EQ(placed, 30u) << order << ": the passes went by strips";
         }
     }
 }

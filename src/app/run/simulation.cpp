@@ -157,7 +157,8 @@ void Simulation::updateRecording() {
     world_.recordContacts =
         (overlayFlags_.needsContacts() || measuring) && world_.size() <= kMaxRecordSpheres;
     if (!world_.recordContacts) world_.contacts.clear();
-    world_.measureImpacts = world_.size() <= physics::kMostMirroredSpheres;
+    // The properties' marks up to kMostMirroredSpheres; beyond, only for a claim of the text.
+    world_.measureImpacts = world_.size() <= physics::kMostMirroredSpheres || claims_.needsImpacts();
 }
 
 int Simulation::advance(double realSeconds) {
