@@ -250,7 +250,7 @@ TEST(ClaimsCommandLine, ASettingIsNamedByItsValue) {
     for (const scenes::ClaimCheck& check : scenes::checkClaims(scene)) {
         if (check.claim->measure == "setting") measured.push_back(check.measured);
     }
-    EXPECT_EQ(measured, (std::vector<std::string>{"method = position", "passes = 1", "shock = off", "shock = on"}));
+    EXPECT_EQ(measured, (std::vector<std::string>{"method = position", "passes = 1", "shock = off", "shock = on", "mu = 0.5"}));
     scene.claims = {scene.claims[1]};  // "position based": method near 0
     scene.claims[0].near = 1.0;        // velocity
     const std::vector<scenes::ClaimCheck> wrong = scenes::checkClaims(scene);
