@@ -103,6 +103,11 @@ std::string range(const std::vector<double>& s, const std::string& unit) {
     return text;
 }
 
+// Whether a meter needs the steps' contacts measured (World::measureImpacts).
+bool anyNeedsImpacts(const std::vector<std::unique_ptr<detail::Meter>>& meters) {
+    return std::any_of(meters.begin(), meters.end(), [](const auto& m) { return m && m->needsImpacts(); });
+}
+
 // One run of one variant: every meter watches it until the last stretch ends.
 class VariantRun {
   public:
@@ -116,7 +121,7 @@ class VariantRun {
 
     void run() {
         physics::World world = buildWorld(variant_);
-        world.measureImpacts = std::any_of(meters_.begin(), meters_.end(), [](const auto& m) { return m && m->needsImpacts(); });
+        world.measureImpacts = anyNeedsImpacts(meters_);
         const double half = 0.5 * variant_.params.timeStep;
         observe(world);
         while (world.time < end_ - half) {
@@ -401,10 +406,7 @@ LiveClaims::LiveClaims(const Scene& scene) : watch_(std::make_unique<Watch>()) {
 
 std::size_t LiveClaims::size() const { return watch_ ? watch_->claims.size() : 0; }
 
-bool LiveClaims::needsImpacts() const {
-    return watch_ && std::any_of(watch_->meters.begin(), watch_->meters.end(),
-                                 [](const auto& m) { return m && m->needsImpacts(); });
-}
+bool LiveClaims::needsImpacts() const { return watch_ && anyNeedsImpacts(watch_->meters); }
 
 double LiveClaims::lastMoment() const {
     double last = 0.0;

@@ -144,9 +144,10 @@ TEST(Simulation, TheBehindNoteNamesWhatTookTheFrame) {
     EXPECT_EQ(ui::behindRealTimeLine(ui::FrameTimes{}), "behind real time");  // a capture keeps no times
 }
 
-// A claim on what a step did (21's ✗ momentum: the momentum mark's number, from the step's
-// measured impacts) is measured live as on the lab sheet: the window hands each step's
-// figures to the meters (without them, the 62 % read 0 and the panel showed a ✗).
+// A claim on what a step did (21's ✗ momentum: what the momentum mark judges, step by step,
+// from the step's measured impacts) is measured live as on the lab sheet: the window hands
+// each step's figures to the meters (without them, the 62 % went unmeasured and the panel
+// showed a ✗).
 TEST(Simulation, AClaimOnWhatAStepDidIsMeasuredLiveAsOnTheLabSheet) {
     const scenes::Scene preset = scenes::loadScene(scenes::presetPath("21_shock_column"));
     app::Simulation sim(preset);
