@@ -206,6 +206,25 @@ class StruckMomentumMeter : public detail::Meter {
     std::optional<double> struck_;  // the last step's, if it struck a free cluster
 };
 
+// What the positivity mark judges, step by step: the fastest approach a step left between
+// touching spheres, or a sphere and a plane (m/s). A sample only for a step with a contact.
+class ApproachLeftMeter : public detail::Meter {
+  public:
+    ApproachLeftMeter(const Claim& claim, const Scene& variant) : stretch_(stretchOf(claim, variant)) {}
+    bool needsImpacts() const override { return true; }
+    void stepped(const physics::StepStats& stats) override {
+        if (stats.impacts.contacts > 0) left_ = stats.impacts.fastestApproachAfter;
+    }
+    void measure(const World& world) override {
+        if (left_ && stretch_.contains(world.time)) samples_.push_back(*left_);
+        left_.reset();
+    }
+
+  private:
+    Stretch stretch_;
+    std::optional<double> left_;  // m/s, the last step's, if it had a contact
+};
+
 // The kinetic energy relative to its value at t = 0.
 class KineticRatioMeter : public detail::Meter {
   public:
@@ -491,6 +510,10 @@ const std::vector<MeterEntry>& meterTable() {
           "each step's |change| / sum m|v| of the clusters it struck that touch no plane (no sample where it "
           "struck none; the momentum mark shows the largest since the restart)"},
          make<StruckMomentumMeter>()},
+        {{"approach_left", "m/s",
+          "each step's fastest approach left between touching spheres or a sphere and a plane (no sample without a "
+          "contact; the positivity mark shows the largest since the restart)"},
+         make<ApproachLeftMeter>()},
         {{"mean_speed", "m/s", "the spheres' mean speed"},
          world([](const World& w, const Scene&) {
              double sum = 0.0;
