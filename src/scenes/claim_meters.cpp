@@ -184,45 +184,26 @@ class ChangeMeter : public detail::Meter {
     std::optional<glm::dvec3> reference_;
 };
 
-// What the momentum mark (app/teaching/impact_report.h) judges, step by step: |change| /
-// sum m|v| of the clusters a step struck that touch no plane. A sample only for a step that
-// struck one (the mark says "no free cluster struck" of the others): a claim that none is
-// struck counts the samples.
-class StruckMomentumMeter : public detail::Meter {
+// What a property's mark (app/teaching/impact_report.h) judges, step by step, from the step's
+// measured impacts: the readout's value for each step it applies to (none for the others, as
+// the mark says "no free cluster struck" or "no contact"), so that a claim that a step never
+// applied counts the samples.
+class ImpactMeter : public detail::Meter {
   public:
-    StruckMomentumMeter(const Claim& claim, const Scene& variant) : stretch_(stretchOf(claim, variant)) {}
+    using Readout = std::optional<double> (*)(const physics::ImpactProperties&);
+    ImpactMeter(const Claim& claim, const Scene& variant, Readout readout)
+        : stretch_(stretchOf(claim, variant)), readout_(readout) {}
     bool needsImpacts() const override { return true; }
-    void stepped(const physics::StepStats& stats) override {
-        const physics::ImpactProperties& impacts = stats.impacts;
-        if (impacts.momentumScale > 0.0) struck_ = impacts.momentumChange / impacts.momentumScale;
-    }
+    void stepped(const physics::StepStats& stats) override { last_ = readout_(stats.impacts); }
     void measure(const World& world) override {
-        if (struck_ && stretch_.contains(world.time)) samples_.push_back(*struck_);
-        struck_.reset();
+        if (last_ && stretch_.contains(world.time)) samples_.push_back(*last_);
+        last_.reset();
     }
 
   private:
     Stretch stretch_;
-    std::optional<double> struck_;  // the last step's, if it struck a free cluster
-};
-
-// What the positivity mark judges, step by step: the fastest approach a step left between
-// touching spheres, or a sphere and a plane (m/s). A sample only for a step with a contact.
-class ApproachLeftMeter : public detail::Meter {
-  public:
-    ApproachLeftMeter(const Claim& claim, const Scene& variant) : stretch_(stretchOf(claim, variant)) {}
-    bool needsImpacts() const override { return true; }
-    void stepped(const physics::StepStats& stats) override {
-        if (stats.impacts.contacts > 0) left_ = stats.impacts.fastestApproachAfter;
-    }
-    void measure(const World& world) override {
-        if (left_ && stretch_.contains(world.time)) samples_.push_back(*left_);
-        left_.reset();
-    }
-
-  private:
-    Stretch stretch_;
-    std::optional<double> left_;  // m/s, the last step's, if it had a contact
+    Readout readout_;
+    std::optional<double> last_;  // the last step's, where it applied
 };
 
 // The kinetic energy relative to its value at t = 0.
@@ -509,11 +490,15 @@ const std::vector<MeterEntry>& meterTable() {
         {{"struck_momentum_change", "of sum m|v|",
           "each step's |change| / sum m|v| of the clusters it struck that touch no plane (no sample where it "
           "struck none; the momentum mark shows the largest since the restart)"},
-         make<StruckMomentumMeter>()},
+         make<ImpactMeter>(+[](const physics::ImpactProperties& p) {
+             return p.momentumScale > 0.0 ? std::optional<double>(p.momentumChange / p.momentumScale) : std::nullopt;
+         })},
         {{"approach_left", "m/s",
           "each step's fastest approach left between touching spheres or a sphere and a plane (no sample without a "
           "contact; the positivity mark shows the largest since the restart)"},
-         make<ApproachLeftMeter>()},
+         make<ImpactMeter>(+[](const physics::ImpactProperties& p) {
+             return p.contacts > 0 ? std::optional<double>(p.fastestApproachAfter) : std::nullopt;  // m/s
+         })},
         {{"mean_speed", "m/s", "the spheres' mean speed"},
          world([](const World& w, const Scene&) {
              double sum = 0.0;
