@@ -118,7 +118,7 @@ TEST(Wavefronts, TheLecturesOrdersReachTheStateOfOnePairAtATime) {
         {"method=position", "order=index", "solver=until-converged", "passes=20"}};
     for (const std::vector<std::string>& settings : cases) {
         for (const char* threads : {"1", "2"}) {
-            scenes::Scene scene = pile({"count=10000", "radius=0.0232", std::string("threads=") + threads});
+            scenes::Scene scene = pile({"count=5000", "radius=0.029", std::string("threads=") + threads});
             for (const std::string& setting : settings) EXPECT_EQ(scenes::applySetting(scene, setting), "") << setting;
             physics::World wavefronts = scenes::buildWorld(scene), onePair = wavefronts;
             onePair.recordContacts = true;

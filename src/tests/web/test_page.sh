@@ -18,6 +18,7 @@ fi
 export NODE_PATH=/usr/share/nodejs  # emscripten's optimizer needs Debian's acorn
 log=$(mktemp)
 profile=$(mktemp -d)  # chromium's, for this run alone
+results=$(mktemp -d)  # what each check said
 if ! { cmake -S "$source" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
          -DCMAKE_TOOLCHAIN_FILE=/usr/share/emscripten/cmake/Modules/Platform/Emscripten.cmake &&
        cmake --build "$build"; } >"$log" 2>&1; then
@@ -29,19 +30,42 @@ fi
 port=$(python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
 python3 -m http.server "$port" --bind 127.0.0.1 --directory "$build/site" >/dev/null 2>&1 &
 server=$!
-trap 'kill $server 2>/dev/null; rm -rf "$profile" "$log"' EXIT
+trap 'kill $server 2>/dev/null; rm -rf "$profile" "$log" "$results"' EXIT
 for _ in $(seq 50); do python3 -c "import urllib.request; urllib.request.urlopen('http://127.0.0.1:$port/')" 2>/dev/null && break; sleep 0.1; done
+
+# The checks up to the driven page run in the background, two at a time: a headless
+# Chromium keeps about one core busy, and its virtual clock now and then stalls for
+# seconds. Each check prints its line and returns its verdict; `said_in_order` prints the
+# lines in the order the checks were started, and a check that failed fails the test.
+checks=0 pids=()
+in_background() {
+  while [ "$(jobs -rp | grep -cvx "$server" || true)" -ge 2 ]; do wait -n || true; done
+  checks=$((checks + 1))
+  { if "$@" </dev/null >"$results/$checks" 2>&1; then echo ok; else echo failed; fi >"$results/$checks.status"; } &
+  pids+=($!)
+}
+said_in_order() {
+  wait "${pids[@]}" || true
+  for k in $(seq "$checks"); do
+    cat "$results/$k"
+    [ "$(cat "$results/$k.status")" = ok ] || failed=1
+  done
+}
+# A profile of its own for each Chromium (two run at once), removed at the end.
+new_profile() { mktemp -d -p "$profile"; }
 
 # What the page at ?QUERY exports, as JSON text.
 page() {
-  { timeout 180 chromium --headless=new --no-sandbox --disable-gpu --user-data-dir="$profile" \
+  { timeout 180 chromium --headless=new --no-sandbox --disable-gpu --user-data-dir="$(new_profile)" \
     --virtual-time-budget=120000 --dump-dom "http://127.0.0.1:$port/index.html?$1" 2>/dev/null || true; } |
     python3 -c 'import html, re, sys; m = re.search(r"<pre id=\"state\"[^>]*>([^<]*)</pre>", sys.stdin.read()); print(html.unescape(m.group(1)) if m else "")'
 }
 
 failed=0
-# scene, steps, settings (name=value, space-separated): listed spheres, a generated pile, settings from the link.
-while read -r scene steps settings; do
+# The run a link asks for (scene, steps, settings: name=value, space-separated) against
+# `spheres simulate`'s.
+same_state() {
+  local scene=$1 steps=$2 settings=$3
   query="scene=$scene&steps=$steps"
   sets=()
   for setting in $settings; do query+="&$setting"; sets+=(--set "$setting"); done
@@ -63,8 +87,10 @@ print("same" if want == got else "differs: desktop %s, page %s" % (want, got))
 PY
 )
   echo "$query: $verdict"
-  [ "$verdict" = same ] || failed=1
-done <<'CASES'
+  [ "$verdict" = same ]
+}
+# Listed spheres, a generated pile, settings from the link.
+while read -r scene steps settings; do in_background same_state "$scene" "$steps" "$settings"; done <<'CASES'
 08_newtons_cradle 600
 03_head_on 600
 02_bounce_projection 600
@@ -74,10 +100,11 @@ head_on 300 order=reversed passes=1
 CASES
 
 # Refused links: one line naming the problem, never a silent default.
-while read -r query expected; do
-  said=$(page "$query")
-  if [[ "$said" == *"$expected"* ]]; then echo "$query: refused ($expected)"; else echo "$query: not refused: $said"; failed=1; fi
-done <<'CASES'
+refused() {
+  said=$(page "$1")
+  if [[ "$said" == *"$2"* ]]; then echo "$1: refused ($2)"; else echo "$1: not refused: $said"; return 1; fi
+}
+while read -r query expected; do in_background refused "$query" "$expected"; done <<'CASES'
 scene=nosuch&steps=10 no such preset
 scene=cradle&steps=10&beta=7 out of range
 scene=cradle&steps=10&methd=velocity unknown parameter 'methd'
@@ -86,18 +113,25 @@ scene=pile&steps=1&count=7483 holds only
 scene=cradle&steps=10&compare=order=reversed compare: for the live view
 CASES
 # A browser without WebGL 2: the page says so in one line.
-said=$(timeout 180 chromium --headless=new --no-sandbox --disable-3d-apis --user-data-dir="$profile" \
-  --virtual-time-budget=3000 --dump-dom "http://127.0.0.1:$port/index.html?scene=cradle" 2>/dev/null |
-  grep -o 'class="error">Cannot run it: [^<]*' | sed 's/^class="error">//' || true)
-echo "no WebGL 2: ${said:-nothing said}"
-[ "$said" = "Cannot run it: this browser has no WebGL 2" ] || failed=1
+without_webgl() {
+  said=$(timeout 180 chromium --headless=new --no-sandbox --disable-3d-apis --user-data-dir="$(new_profile)" \
+    --virtual-time-budget=3000 --dump-dom "http://127.0.0.1:$port/index.html?scene=cradle" 2>/dev/null |
+    grep -o 'class="error">Cannot run it: [^<]*' | sed 's/^class="error">//' || true)
+  echo "no WebGL 2: ${said:-nothing said}"
+  [ "$said" = "Cannot run it: this browser has no WebGL 2" ]
+}
+in_background without_webgl
+
+# The live view's page at ?QUERY after 3 s of virtual time, as HTML text.
+live_dom() {
+  timeout 180 chromium --headless=new --no-sandbox --use-angle=swiftshader --enable-unsafe-swiftshader \
+    --user-data-dir="$(new_profile)" --virtual-time-budget=3000 --dump-dom "http://127.0.0.1:$port/index.html?$1" 2>/dev/null || true
+}
 
 # The live view (no steps in the link): it runs (its clock advanced), and the settings
 # of the link took effect...
-dom=$(timeout 180 chromium --headless=new --no-sandbox --use-angle=swiftshader --enable-unsafe-swiftshader \
-  --user-data-dir="$profile" --virtual-time-budget=3000 --dump-dom \
-  "http://127.0.0.1:$port/index.html?scene=cradle&beta=0.5&method=velocity" 2>/dev/null || true)
-verdict=$(DOM="$dom" python3 -c '
+live_view_runs() {
+  verdict=$(DOM="$(live_dom "scene=cradle&beta=0.5&method=velocity")" python3 -c '
 import html, json, os, re
 dom = os.environ["DOM"]
 def exported(name):
@@ -112,19 +146,21 @@ timeline = run.get("timeline", {})  # its frames kept for stepping back, the new
 kept = timeline.get("frames", 0) > 1 and timeline.get("cursor") == timeline.get("frames", 0) - 1
 print("runs, took effect, keeps its frames" if took and live and kept else "live %s, time %s, beta %s, method %s, timeline %s" %
       (live, run.get("time_s"), table.get("beta", {}).get("value"), method.get("value"), timeline))')
-echo "live view, beta=0.5&method=velocity: $verdict"
-[ "$verdict" = "runs, took effect, keeps its frames" ] || failed=1
+  echo "live view, beta=0.5&method=velocity: $verdict"
+  [ "$verdict" = "runs, took effect, keeps its frames" ]
+}
+in_background live_view_runs
+
+# Prints "WHAT, QUERY: SAID" (and what was expected when it is not that); fails unless
+# SAID is EXPECTED. Usage: said_as WHAT QUERY SAID EXPECTED
+said_as() {
+  if [ "$3" = "$4" ]; then echo "$1, $2: $3"; else echo "$1, $2: $3 (expected $4)"; return 1; fi
+}
 
 # Side by side: the link's compare=..., or else the scene's own, opens the views, each
 # with its label; overrides the scene cannot take are refused in one line, one view left.
-# The live view's page at ?QUERY after 3 s of virtual time, as HTML text.
-live_dom() {
-  timeout 180 chromium --headless=new --no-sandbox --use-angle=swiftshader --enable-unsafe-swiftshader \
-    --user-data-dir="$profile" --virtual-time-budget=3000 --dump-dom "http://127.0.0.1:$port/index.html?$1" 2>/dev/null || true
-}
-while read -r query expected; do
-  dom=$(live_dom "$query")
-  said=$(DOM="$dom" python3 -c '
+side_by_side() {
+  said=$(DOM="$(live_dom "$1")" python3 -c '
 import html, json, os, re
 dom = os.environ["DOM"]
 m = re.search(r"<pre id=\"state\"[^>]*>([^<]*)</pre>", dom)
@@ -132,8 +168,9 @@ run = json.loads(html.unescape(m.group(1)) or "{}") if m else {}
 views = [" ".join(v["lines"][0].split()) for v in run.get("views", [])]
 refusal = re.search(r"<p class=\"refusal\" id=\"refusal\">([^<]*)</p>", dom)
 print(" | ".join(views) if views else html.unescape(refusal.group(1)) if refusal and refusal.group(1) else "nothing")')
-  if [ "$said" = "$expected" ]; then echo "side by side, $query: $said"; else echo "side by side, $query: $said (expected $expected)"; failed=1; fi
-done <<'CASES'
+  said_as "side by side" "$1" "$said" "$2"
+}
+while read -r query expected; do in_background side_by_side "$query" "$expected"; done <<'CASES'
 scene=cradle&compare=order=reversed A order = index | B order = reversed
 scene=shock_column A shock = off, passes = 1 | B shock = off, passes = 4 | C shock = on, passes = 1 | D shock = on, passes = 4
 scene=cradle&compare=order=sideways Cannot compare: order=sideways: order = 'sideways' is not a choice; choices: index, reversed, shuffled, colored
@@ -142,8 +179,8 @@ CASES
 # A live link with a setting the scene refuses opens the scene without it (the link's other
 # settings taken, one that needs another beside it too), the refusal said in one line under
 # the text (it had left the student on the front page); a refused colouring still said too.
-while read -r query expected; do
-  said=$(DOM="$(live_dom "$query")" python3 -c '
+live_link() {
+  said=$(DOM="$(live_dom "$1")" python3 -c '
 import html, json, os, re
 dom = os.environ["DOM"]
 def exported(name):
@@ -155,16 +192,17 @@ def shown(name):
     return "-" if p is None else p["choices"][int(p["value"])] if p.get("choices") else "%g" % p["value"]
 said = [html.unescape(m) for m in re.findall(r"<p class=\"refusal\" id=\"(?:link-)?refusal\">([^<]*)</p>", dom) if m]
 print("method %s, toi %s, beta %s: %s" % (shown("method"), shown("toi"), shown("beta"), " | ".join(said) or "nothing said"))')
-  if [ "$said" = "$expected" ]; then echo "live link, $query: $said"; else echo "live link, $query: $said (expected $expected)"; failed=1; fi
-done <<'CASES'
+  said_as "live link" "$1" "$said" "$2"
+}
+while read -r query expected; do in_background live_link "$query" "$expected"; done <<'CASES'
 scene=cradle&beta=7&method=velocity method velocity, toi -, beta 1: The link's beta=7: beta = 7 is out of range [0, 1]: opened without it.
 scene=cradle&method=continuous&toi=bisection&beta=7&color-by=foo method continuous, toi bisection, beta 1: The link's beta=7: beta = 7 is out of range [0, 1]: opened without it. | View: color-by foo: expected contact, speed, id or penetration
 CASES
 
 # What the view draws: the link's color-by=... and overlay=..., in the run's state; an
 # overlay it does not know is refused in one line.
-while read -r query expected; do
-  said=$(DOM="$(live_dom "$query")" python3 -c '
+look() {
+  said=$(DOM="$(live_dom "$1")" python3 -c '
 import html, json, os, re
 dom = os.environ["DOM"]
 m = re.search(r"<pre id=\"state\"[^>]*>([^<]*)</pre>", dom)
@@ -172,8 +210,9 @@ look = (json.loads(html.unescape(m.group(1)) or "{}") if m else {}).get("look", 
 refusal = re.search(r"<p class=\"refusal\" id=\"refusal\">([^<]*)</p>", dom)
 print(html.unescape(refusal.group(1)) if refusal and refusal.group(1) else
       "%s: %s" % (look.get("color_by"), ", ".join(look.get("overlays", [])) or "none"))')
-  if [ "$said" = "$expected" ]; then echo "look, $query: $said"; else echo "look, $query: $said (expected $expected)"; failed=1; fi
-done <<'CASES'
+  said_as "look" "$1" "$said" "$2"
+}
+while read -r query expected; do in_background look "$query" "$expected"; done <<'CASES'
 scene=cradle contact: none
 scene=shock_pyramid&color-by=speed&overlay=graph,velocity speed: velocity, graph
 scene=cradle&overlay=sparkles View: no overlay 'sparkles'; overlays: velocity, contacts, impulses, penetration, trails, graph
@@ -182,8 +221,8 @@ CASES
 # The inspector: a link's select=N (as a click on the sphere) shows its numbers and, after
 # its first contact, the slides' formulas with the numbers; a number the scene does not
 # have is refused in one line.
-while read -r query expected; do
-  said=$(DOM="$(live_dom "$query")" python3 -c '
+inspector() {
+  said=$(DOM="$(live_dom "$1")" python3 -c '
 import html, json, os, re
 dom = os.environ["DOM"]
 m = re.search(r"<pre id=\"state\"[^>]*>([^<]*)</pre>", dom)
@@ -198,8 +237,9 @@ elif sphere:
     print("%s, %s" % (shown.group(1) if shown else "no inspector", "explained" if explained else "nothing explained"))
 else:
     print("nothing selected")')
-  if [ "$said" = "$expected" ]; then echo "inspector, $query: $said"; else echo "inspector, $query: $said (expected $expected)"; failed=1; fi
-done <<'CASES'
+  said_as "inspector" "$1" "$said" "$2"
+}
+while read -r query expected; do in_background inspector "$query" "$expected"; done <<'CASES'
 scene=cradle&select=1 Sphere #1, explained
 scene=cradle&select=7 select=7: the scene has 5 spheres, numbered from 0
 CASES
@@ -209,16 +249,12 @@ CASES
 rm -f "$build/page.png" "$build/page_side_by_side.png"  # never an earlier run's
 shoot() {
   timeout 180 chromium --headless=new --no-sandbox --use-angle=swiftshader --enable-unsafe-swiftshader \
-    --user-data-dir="$profile" --virtual-time-budget=3000 --window-size=1280,720 \
+    --user-data-dir="$(new_profile)" --virtual-time-budget=3000 --window-size=1280,720 \
     --screenshot="$1" "http://127.0.0.1:$port/index.html?$2" >/dev/null 2>&1 || true
 }
-shoot "$build/page.png" "scene=cradle"
-# Side by side (the cradle and its reversed order): spheres in both columns of the canvas.
-shoot "$build/page_side_by_side.png" "scene=cradle&compare=order=reversed"
 # What a screenshot shows: PNG FILE single|side -> "panel and spheres" (and "in both
 # views" side by side), or what is missing.
-looks=$(mktemp)
-trap 'kill $server 2>/dev/null; rm -rf "$profile" "$log" "$looks"' EXIT
+looks="$results/looks.py"
 cat >"$looks" <<'PY'
 import struct, sys, zlib
 import os
@@ -263,20 +299,23 @@ if sys.argv[2] == "side":  # the canvas from x = 384 (24rem): two columns, a 4 p
     verdict += " in both views" if both else ", not two views: spheres %.4f and %.4f, gap %.2f" % (left, right, gap)
 print(verdict)
 PY
+# Usage: screenshot_shows WHAT FILE QUERY single|side EXPECTED
+screenshot_shows() {
+  shoot "$2" "$3"
+  said_as "$1" "screenshot" "$(python3 "$looks" "$2" "$4")" "$5"
+}
+in_background screenshot_shows "live view" "$build/page.png" "scene=cradle" single "panel and spheres"
+# Side by side (the cradle and its reversed order): spheres in both columns of the canvas.
+in_background screenshot_shows "live view side by side" "$build/page_side_by_side.png" \
+  "scene=cradle&compare=order=reversed" side "panel and spheres in both views"
+said_in_order
 
 # The live page driven with real mouse and key events (src/tests/web/drive_page.mjs): a
 # click selects, typed numbers move a sphere, Ctrl+drag throws, F shoots, Esc, ←, P, R;
-# the scene's text measured, and an invariant alarm.
+# the scene's text measured, and an invariant alarm. Alone: it waits on the real clock.
 rm -rf "$profile" && mkdir -p "$profile"
 if ! timeout 200 node "$source/src/tests/web/drive_page.mjs" "http://127.0.0.1:$port/index.html" "$profile"; then
   echo "the live page, driven: failed (above)"
   failed=1
 fi
-
-verdict=$(python3 "$looks" "$build/page.png" single)
-echo "live view, screenshot: $verdict"
-[ "$verdict" = "panel and spheres" ] || failed=1
-verdict=$(python3 "$looks" "$build/page_side_by_side.png" side)
-echo "live view side by side, screenshot: $verdict"
-[ "$verdict" = "panel and spheres in both views" ] || failed=1
 exit $failed
