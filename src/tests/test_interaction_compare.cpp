@@ -450,6 +450,19 @@ TEST(SideBySide, PresentedLabelsSayWhatEachSolverBreaks) {
     columns.sceneChanged();
     const auto twoNames = app::comparisonReadouts(column, *columns.comparison(), app::LabelLines::Presented);
     EXPECT_EQ(twoNames[0].front(), "A   shock = off, passes = 1") << "two names: both said";
+    // 21 compares the sweep: its text explains A's and B's marks, so its labels show them
+    // too (they showed them only where the views compared solvers).
+    while (column.world().time < 0.5) columns.advance(1.0 / 30.0);
+    const auto swept = app::comparisonReadouts(column, *columns.comparison(), app::LabelLines::Presented);
+    // A line a property: "✗ momentum, positivity" broke inside "momentum" in a quarter of 1280 px.
+    const std::vector<std::vector<std::string>> broken{{"\u2717\u00a0momentum", "\u2717\u00a0positivity"},
+                                                       {"\u2717\u00a0positivity"},
+                                                       {"\u2713\u00a0nothing broken"},
+                                                       {"\u2713\u00a0nothing broken"}};
+    for (std::size_t k = 0; k < 4; ++k) {
+        ASSERT_GT(swept[k].size(), broken[k].size());
+        EXPECT_EQ(std::vector<std::string>(swept[k].end() - std::ptrdiff_t(broken[k].size()), swept[k].end()), broken[k]) << k;
+    }
 }
 
 // 14's text counts its bounces ("0.47 at the fifth", "0.43 at the seventh"); the labels say

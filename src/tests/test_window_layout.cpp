@@ -223,6 +223,11 @@ TEST(WrappedText, KeepsNameEqualsValueWholeAndCutsAWordWiderThanTheLine) {
     EXPECT_EQ(ui::wrapAtSpaces("B method = reflection", ImGui::CalcTextSize("method = reflec").x),
               "B\nmethod =\nreflection");  // rather than clipped
     EXPECT_EQ(ui::wrapAtSpaces("c = -0.8660 m/s", ImGui::CalcTextSize("c = -0.8").x), "c =\n-0.8660\nm/s");  // not "-" / "0.8660"
+    // The widest word, as the wrapping sees words (what a label's type is made smaller for):
+    // "shock = off," is one, and so is a mark with its name.
+    EXPECT_EQ(ui::widestWord("A shock = off, passes = 1\n\u2717\u00a0pos"),
+              std::max(ImGui::CalcTextSize("shock = off,").x, ImGui::CalcTextSize("\u2717\u00a0pos").x));
+    EXPECT_EQ(ui::widestWord("hash bf78370cf05532d3"), ImGui::CalcTextSize("bf78370cf05532d3").x);
     ImGui::EndFrame();
     ImGui::DestroyContext(context);
 }

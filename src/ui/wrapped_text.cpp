@@ -107,6 +107,21 @@ std::string wrapAtSpaces(std::string_view text, float width) {
     return lines;
 }
 
+float widestWord(std::string_view text) {
+    float widest = 0.0f;
+    for (std::size_t start = 0; start < text.size();) {
+        const std::size_t newline = std::min(text.find('\n', start), text.size());
+        const std::string_view line = text.substr(start, newline - start);
+        for (std::size_t word = 0; word < line.size();) {
+            const std::size_t end = nextBreak(line, word + 1);
+            widest = std::max(widest, widthOf(line.substr(word, end - word)));
+            word = end + 1;
+        }
+        start = newline + 1;
+    }
+    return widest;
+}
+
 void textWrappedAtSpaces(std::string_view text) {
     const float width = std::max(ImGui::GetContentRegionAvail().x, ImGui::GetFontSize() * 4.0f);
     const std::string lines = wrapAtSpaces(text, width);  // drawn as one item: as close as ImGui's own wrapped text

@@ -121,33 +121,44 @@ bool differsIn(const ViewReadout& view, const char* name) {
     return std::any_of(view.settings.begin(), view.settings.end(), [&](const scenes::ShownSetting& s) { return s.name == name; });
 }
 
-// The marks' line as a projector shows it: what the solver breaks ("✗ symmetry, energy"),
-// "✓ nothing broken", or "– none tested yet" (five marks in large type broke inside their
-// words).
-// The names after each `mark` in the marks' line, joined by commas.
-std::string namesMarked(const std::string& marks, const std::string& mark) {
-    std::string names;
+// The names after each `mark` in the marks' line.
+std::vector<std::string> namesMarked(const std::string& marks, const std::string& mark) {
+    std::vector<std::string> names;
     for (std::size_t at = marks.find(mark); at != std::string::npos; at = marks.find(mark, at + 1)) {
         const std::size_t name = at + mark.size();
         const std::size_t end = std::min(marks.find_first_of(" \n", name), marks.size());
-        names += (names.empty() ? "" : ", ") + marks.substr(name, end - name);
+        names.push_back(marks.substr(name, end - name));
     }
     return names;
 }
 
-std::string brokenProperties(const std::string& marks) {
-    // A mark stays with its first word (a no-break space, U+00A0): four narrow labels on a
+std::string joined(const std::vector<std::string>& names) {
+    std::string text;
+    for (const std::string& name : names) text += (text.empty() ? "" : ", ") + name;
+    return text;
+}
+
+// The marks as a projector shows them: what the solver breaks, a line each ("✗ momentum",
+// "✗ positivity"), "✓ nothing broken", or "– none tested yet" (five marks in large type
+// broke inside their words, and so did "✗ momentum, positivity" in a quarter of the width).
+std::vector<std::string> brokenProperties(const std::string& marks) {
+    // A mark stays with its word (a no-break space, U+00A0): four narrow labels on a
     // projector had "✗" alone above "break-away".
-    const std::string broken = namesMarked(marks, "\u2717\u00a0");
+    const std::vector<std::string> broken = namesMarked(marks, "\u2717\u00a0");
     if (marks.find("not measured") == std::string::npos) {
-        if (!broken.empty()) return "\u2717\u00a0" + broken;
-        return marks.find("\u2713") != std::string::npos ? "\u2713\u00a0nothing broken" : "\u2013\u00a0none tested yet";
+        std::vector<std::string> lines;
+        for (const std::string& name : broken) lines.push_back("\u2717\u00a0" + name);
+        if (lines.empty()) {
+            lines.push_back(marks.find("\u2713") != std::string::npos ? "\u2713\u00a0nothing broken"
+                                                                      : "\u2013\u00a0none tested yet");
+        }
+        return lines;
     }
     // The continuous method measures the symmetry alone: what it found, and that the others
     // are not measured ("nothing broken" would claim five properties from the symmetry).
-    if (!broken.empty()) return "\u2717\u00a0" + broken + ", " + kOthersNotMeasured;
-    const std::string kept = namesMarked(marks, "\u2713\u00a0");
-    return kept.empty() ? "\u2013\u00a0not measured (continuous)" : "\u2713\u00a0" + kept + ", " + kOthersNotMeasured;
+    if (!broken.empty()) return {"\u2717\u00a0" + joined(broken) + ", " + kOthersNotMeasured};
+    const std::vector<std::string> kept = namesMarked(marks, "\u2713\u00a0");
+    return {kept.empty() ? "\u2013\u00a0not measured (continuous)" : "\u2713\u00a0" + joined(kept) + ", " + kOthersNotMeasured};
 }
 
 }  // namespace
@@ -185,16 +196,17 @@ std::vector<std::string> compactLines(const ViewReadout& view) {
 
 // Presented, a label is short lines in large type: what the slides compare, the energy
 // (slide 14's simultaneous solver makes it grow) and the deepest penetration (slide 7's
-// answers, slide 14's sweep); where the views compare solvers, the five properties too
-// (slide 14's lesson: sequential breaks the symmetry, simultaneous creates energy).
+// answers, slide 14's sweep); where the views compare solvers or the shock sweep, the five
+// properties too (slide 14's lesson: sequential breaks the symmetry, simultaneous creates
+// energy; one pass leaves contacts approaching that the sweep answers).
 std::vector<std::string> presentedLines(const ViewReadout& view) {
     char energy[64], penetration[64];  // a number and its unit joined by no-break spaces (U+00A0)
     std::snprintf(energy, sizeof energy, "E~ %.4g\u00a0J", view.diagnostics.modified);
     std::snprintf(penetration, sizeof penetration, "penetration %.2f\u00a0%%\u00a0r", 100.0 * view.diagnostics.maxPenetration);
     std::vector<std::string> lines{view.title, energy, penetration};
     if (view.bouncesMeasured) lines.push_back(apexRatioLine(view, "\u00a0"));
-    if (differsIn(view, "solver") && !view.properties.empty()) {
-        lines.push_back(brokenProperties(view.properties));
+    if ((differsIn(view, "solver") || differsIn(view, "shock")) && !view.properties.empty()) {
+        for (std::string& line : brokenProperties(view.properties)) lines.push_back(std::move(line));
     }
     return lines;
 }

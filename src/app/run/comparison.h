@@ -93,7 +93,7 @@ struct ViewReadout {
 // when there are any.
 std::vector<std::string> viewReadoutLines(const ViewReadout& view);
 // The presentation layout's: the title, E~, the penetration and the apex ratio, short lines,
-// and the properties' marks where the views compare solvers.
+// and the properties' marks where the views compare solvers or the shock sweep.
 std::vector<std::string> presentedLines(const ViewReadout& view);
 // Beside the dock (a sphere inspected or explained), where four full labels left thumbnails:
 // the title, E~ with the penetration, and the properties' marks.

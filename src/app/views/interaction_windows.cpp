@@ -320,8 +320,31 @@ float labelsHeight(const std::vector<ViewLabel>& labels, float width) {
     return std::ceil(tallest);
 }
 
+namespace {
+
+// Where a label's widest word is a little wider than its lines (a quarter of a projector
+// broke "✗ momentum" as "✗ momentu" / "m"), every label sets its type smaller, to 85 % at
+// the least, so that the word stays whole and the labels stay alike; a word much wider (a
+// hash) is cut as before. Measured in the type of the window drawing at the time (scale 1).
+float wholeWordsScale(const std::vector<ViewLabel>& labels) {
+    constexpr float kSmallestType = 0.85f;
+    float scale = 1.0f;
+    for (const ViewLabel& label : labels) {
+        const float width = std::min(viewLabelSize(label).x, label.room.x);
+        const float lineWidth = width - 2.0f * ImGui::GetStyle().WindowPadding.x;  // units
+        float widest = 0.0f;
+        for (const std::string& line : label.lines) widest = std::max(widest, ui::widestWord(line));
+        if (widest <= lineWidth || lineWidth < kSmallestType * widest) continue;
+        scale = std::min(scale, 0.99f * lineWidth / widest);  // a hair to spare for the widths' rounding
+    }
+    return scale;
+}
+
+}  // namespace
+
 int drawViewLabels(const std::vector<ViewLabel>& labels) {
     int cut = 0;
+    const float type = wholeWordsScale(labels);
     for (std::size_t k = 0; k < labels.size(); ++k) {
         const ViewLabel& label = labels[k];
         ImGui::SetNextWindowPos(ImVec2(label.topLeft.x, label.topLeft.y), ImGuiCond_Always);
@@ -335,6 +358,7 @@ int drawViewLabels(const std::vector<ViewLabel>& labels) {
         ImGui::Begin(name.c_str(), nullptr,
                      kFixed | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_AlwaysAutoResize |
                          ImGuiWindowFlags_NoInputs | ImGuiWindowFlags_NoBringToFrontOnFocus);
+        ImGui::SetWindowFontScale(type);
         for (std::size_t n = 0; n < label.lines.size(); ++n) {
             const ImVec4 color = n == 0 ? ImVec4(label.color.x / 255.0f, label.color.y / 255.0f, label.color.z / 255.0f, 1.0f)
                                         : ImGui::GetStyleColorVec4(ImGuiCol_Text);
