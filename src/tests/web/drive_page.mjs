@@ -338,6 +338,10 @@ try {
   const scrolled = () => js(`(() => { const t = document.getElementById('text');
     return { top: t.scrollTop, height: t.clientHeight, end: t.scrollHeight - t.clientHeight }; })()`);
   const unpaged = await scrolled();
+  const lines = await js(`(() => { const t = document.getElementById('text');
+    return t.clientHeight / parseFloat(getComputedStyle(t).lineHeight); })()`);
+  check('the presented text\'s box holds whole lines (no half line at its foot)', Math.abs(lines - Math.round(lines)) < 0.05,
+        'lines ' + lines);
   await key('PageDown', 'PageDown', 34);
   await sleep(300);
   const paged = await scrolled();
