@@ -343,6 +343,25 @@ TEST_F(CaptureCompare, WritesThreeViewsForSlideSevensAnswers) {
     }
 }
 
+// Presented on a 1024x768 projector, four narrow labels broke their words ("sequenti" /
+// "al", "penetrati" / "on", "✗ momentu" / "m"): their type is made smaller (every label
+// alike) until the widest word fits, and the views take the room the smaller labels leave.
+TEST_F(CaptureCompare, PresentedLabelsOnASmallProjectorKeepTheirWordsWhole) {
+    for (const char* preset : {"20_stacked_drop", "21_shock_column", "16_bernoulli"}) {
+        const std::string out = capture_test::freshFolder(std::string("compare_words_") + preset);
+        app::CaptureOptions options = capture_test::smallCapture(preset, out, platform::HeadlessBackend::Auto);
+        options.size = "1024x768";
+        options.withUi = true;
+        options.present = true;
+        options.at = "90";
+        ASSERT_EQ(app::runCapture(options), 0) << preset;
+        const nlohmann::json manifest = capture_test::readManifest(out);
+        ASSERT_EQ(manifest["frames"].size(), 1u);
+        EXPECT_EQ(manifest["frames"][0]["label_words_broken"], 0) << preset;
+        EXPECT_EQ(manifest["frames"][0]["labels_cut"], 0) << preset;
+    }
+}
+
 // 21's view C gains a label line at its first steps ("most in one step: 20 shock levels,
 // 80 rounds" wraps where "0 shock levels, 0 rounds" did not): the views make room for it at
 // the frame it appears, as the window's do, and no frame cuts a label (the README's

@@ -228,6 +228,7 @@ TEST(WrappedText, KeepsNameEqualsValueWholeAndCutsAWordWiderThanTheLine) {
     EXPECT_EQ(ui::widestWord("A shock = off, passes = 1\n\u2717\u00a0pos"),
               std::max(ImGui::CalcTextSize("shock = off,").x, ImGui::CalcTextSize("\u2717\u00a0pos").x));
     EXPECT_EQ(ui::widestWord("hash bf78370cf05532d3"), ImGui::CalcTextSize("bf78370cf05532d3").x);
+    EXPECT_EQ(ui::widestWord("generalized-reflections"), ImGui::CalcTextSize("generalized-").x);
     ImGui::EndFrame();
     ImGui::DestroyContext(context);
 }

@@ -114,7 +114,16 @@ float widestWord(std::string_view text) {
         const std::string_view line = text.substr(start, newline - start);
         for (std::size_t word = 0; word < line.size();) {
             const std::size_t end = nextBreak(line, word + 1);
-            widest = std::max(widest, widthOf(line.substr(word, end - word)));
+            // A hyphen between letters, or a '/', breaks a word as lineEnd breaks it.
+            for (std::size_t part = word; part < end;) {
+                std::size_t next = part + 1;
+                while (next < end && !(line[next - 1] == '/' || (line[next - 1] == '-' && next >= 2 &&
+                                                                  isLetter(line[next - 2]) && isLetter(line[next])))) {
+                    ++next;
+                }
+                widest = std::max(widest, widthOf(line.substr(part, next - part)));
+                part = next;
+            }
             word = end + 1;
         }
         start = newline + 1;

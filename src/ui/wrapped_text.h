@@ -17,7 +17,8 @@ void textWrappedAtSpaces(std::string_view text);
 // The same text broken into lines ('\n') that fit `width` (ImGui units, current font).
 std::string wrapAtSpaces(std::string_view text, float width);
 // The width of its widest word (ImGui units, current font): what no line narrower than
-// it holds whole. Words end where wrapAtSpaces may break ("passes = 1" is one).
+// it holds whole. Words end where wrapAtSpaces may break ("passes = 1" is one word,
+// "generalized-reflections" two).
 float widestWord(std::string_view text);
 
 }  // namespace ui

@@ -619,6 +619,7 @@ void Capturer::writeFrame(int index) {
         }
         frames_.back()["compare_hashes"] = hashes;
         frames_.back()["labels_cut"] = compare_->labelsCut();  // 0: every label's lines in its room
+        frames_.back()["label_words_broken"] = compare_->labelWordsBroken();  // 0: every word whole
         Json viewports = Json::array();  // the labels may have moved them since the frame before
         for (int k = 0; k <= compare_->comparison().count(); ++k) {
             const glm::ivec4& v = compare_->view(k);

@@ -41,6 +41,7 @@ public:
               const Simulation& primary);
     const std::vector<glm::vec4>& labelsDrawn() const { return labelsDrawn_; }  // px, top-left origin
     int labelsCut() const { return labels_.cut(); }  // the last draw's labels taller than their room
+    int labelWordsBroken() const { return labels_.wordsBroken(); }  // ...and with a word broken inside
 
     const Comparison& comparison() const { return comparison_; }
 

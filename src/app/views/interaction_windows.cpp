@@ -305,46 +305,54 @@ float labelsWidth(const std::vector<ViewLabel>& labels) {
     return std::ceil(width / font + 1.0f) * font;  // a font to spare: a mark's dash becomes a wider check
 }
 
+namespace {
+
+// The widest word of a label's lines (units, in the type of the window drawing at the time).
+float widestWord(const ViewLabel& label) {
+    float widest = 0.0f;
+    for (const std::string& line : label.lines) widest = std::max(widest, ui::widestWord(line));
+    return widest;
+}
+
+// The labels' type, as a share of the panel's: where a word is wider than a label's lines
+// `lineWidth` (units), smaller, down to kSmallestType, so that it stays whole (a quarter of
+// a 1024 px projector broke "penetrati" / "on" and "✗ momentu" / "m"); every label alike. A
+// word wider still (a hash in a very narrow label) is cut where the line is full.
+float wholeWordsScale(float widest, float lineWidth) {
+    constexpr float kSmallestType = 0.6f;
+    if (widest <= lineWidth) return 1.0f;
+    return std::max(kSmallestType, 0.99f * lineWidth / widest);  // a hair to spare for the widths' rounding
+}
+
+}  // namespace
+
 float labelsHeight(const std::vector<ViewLabel>& labels, float width) {
     const ImGuiStyle& style = ImGui::GetStyle();
-    const float text = std::max(width - 2.0f * style.WindowPadding.x, ImGui::GetFontSize() * 4.0f);
+    const float text = std::max(width - 2.0f * style.WindowPadding.x, ImGui::GetFontSize() * 4.0f);  // units
+    float widest = 0.0f;
+    for (const ViewLabel& label : labels) widest = std::max(widest, widestWord(label));
+    const float type = wholeWordsScale(widest, text);  // as drawViewLabels sets it at this width
     float tallest = 0.0f;
     for (const ViewLabel& label : labels) {
         // A line to spare: changing digits and marks (- to a check) may wrap one more.
-        float height = 2.0f * style.WindowPadding.y + ImGui::GetTextLineHeight();
+        float height = 2.0f * style.WindowPadding.y + type * ImGui::GetTextLineHeight();
         for (const std::string& line : label.lines) {
-            height += ImGui::CalcTextSize(ui::wrapAtSpaces(line, text).c_str()).y + style.ItemSpacing.y;
+            height += type * ImGui::CalcTextSize(ui::wrapAtSpaces(line, text / type).c_str()).y + style.ItemSpacing.y;
         }
         tallest = std::max(tallest, height);
     }
     return std::ceil(tallest);
 }
 
-namespace {
-
-// Where a label's widest word is a little wider than its lines (a quarter of a projector
-// broke "✗ momentum" as "✗ momentu" / "m"), every label sets its type smaller, to 85 % at
-// the least, so that the word stays whole and the labels stay alike; a word much wider (a
-// hash) is cut as before. Measured in the type of the window drawing at the time (scale 1).
-float wholeWordsScale(const std::vector<ViewLabel>& labels) {
-    constexpr float kSmallestType = 0.85f;
-    float scale = 1.0f;
-    for (const ViewLabel& label : labels) {
-        const float width = std::min(viewLabelSize(label).x, label.room.x);
-        const float lineWidth = width - 2.0f * ImGui::GetStyle().WindowPadding.x;  // units
-        float widest = 0.0f;
-        for (const std::string& line : label.lines) widest = std::max(widest, ui::widestWord(line));
-        if (widest <= lineWidth || lineWidth < kSmallestType * widest) continue;
-        scale = std::min(scale, 0.99f * lineWidth / widest);  // a hair to spare for the widths' rounding
-    }
-    return scale;
-}
-
-}  // namespace
-
-int drawViewLabels(const std::vector<ViewLabel>& labels) {
-    int cut = 0;
-    const float type = wholeWordsScale(labels);
+LabelsDrawn drawViewLabels(const std::vector<ViewLabel>& labels) {
+    LabelsDrawn drawn;
+    // Measured before any label's window sets its type (the window drawing now has the panel's).
+    const auto lineWidth = [](const ViewLabel& label) {  // units
+        return std::min(viewLabelSize(label).x, label.room.x) - 2.0f * ImGui::GetStyle().WindowPadding.x;
+    };
+    float type = 1.0f;
+    for (const ViewLabel& label : labels) type = std::min(type, wholeWordsScale(widestWord(label), lineWidth(label)));
+    for (const ViewLabel& label : labels) drawn.wordsBroken += type * widestWord(label) > lineWidth(label);
     for (std::size_t k = 0; k < labels.size(); ++k) {
         const ViewLabel& label = labels[k];
         ImGui::SetNextWindowPos(ImVec2(label.topLeft.x, label.topLeft.y), ImGuiCond_Always);
@@ -369,7 +377,7 @@ int drawViewLabels(const std::vector<ViewLabel>& labels) {
         // The lines' bottom and the padding under them, against the room the window got.
         const ImGuiStyle& style = ImGui::GetStyle();
         const float needed = ImGui::GetCursorPosY() - style.ItemSpacing.y + style.WindowPadding.y;  // units
-        cut += needed > ImGui::GetWindowHeight() + 0.5f;
+        drawn.cut += needed > ImGui::GetWindowHeight() + 0.5f;
         // The label takes no input (a drag across it turns the camera), but the pointer
         // resting on it explains its marks (ui::tooltipDue: not while a button is down, nor for
         // ever).
@@ -385,7 +393,7 @@ int drawViewLabels(const std::vector<ViewLabel>& labels) {
         }
         ImGui::End();
     }
-    return cut;
+    return drawn;
 }
 
 namespace {

@@ -125,9 +125,14 @@ glm::vec2 viewLabelSize(const ViewLabel& label);
 // a line to spare.
 float labelsWidth(const std::vector<ViewLabel>& labels);
 float labelsHeight(const std::vector<ViewLabel>& labels, float width);
-// Draws each label at its place, within its room; returns how many were cut (their lines
-// taller than the room).
-int drawViewLabels(const std::vector<ViewLabel>& labels);
+// What drawing the labels left out: labels cut (their lines taller than their room), and
+// labels with a word broken inside (wider than a line even in the smallest type).
+struct LabelsDrawn {
+    int cut = 0;
+    int wordsBroken = 0;
+};
+// Draws each label at its place, within its room.
+LabelsDrawn drawViewLabels(const std::vector<ViewLabel>& labels);
 
 // All of the above for the session's state, where `layout` puts them: the timeline
 // bar, the inspector and the explainer of the selected sphere in the dock, the views'

@@ -88,7 +88,7 @@ std::vector<glm::vec4> HeadlessViewLabels::draw(const std::vector<ViewLabel>& la
         impl_->renderer.newFrame();
         if (!impl_->renderer.error().empty()) throw std::runtime_error("ImGui: " + impl_->renderer.error());
         ImGui::NewFrame();
-        cut_ = drawViewLabels(labels);  // the second layout's count: the first measured the frame before
+        drawn_ = drawViewLabels(labels);  // the second layout's count: the first measured the frame before
         ImGui::Render();
     }
     impl_->renderer.render(ImGui::GetDrawData());

@@ -38,12 +38,13 @@ public:
     // measure the previous frame), so that a frame does not depend on the ones before.
     // Returns what it drew (ui::drawnRectangles).
     std::vector<glm::vec4> draw(const std::vector<ViewLabel>& labels);
-    int cut() const { return cut_; }  // how many labels the last draw cut (lines taller than their room)
+    int cut() const { return drawn_.cut; }  // how many labels the last draw cut (lines taller than their room)
+    int wordsBroken() const { return drawn_.wordsBroken; }  // ...and broke a word of (even in the smallest type)
 
 private:
     struct Impl;
     std::unique_ptr<Impl> impl_;
-    int cut_ = 0;
+    LabelsDrawn drawn_;
 };
 
 }  // namespace app
