@@ -60,6 +60,19 @@ double planeDepth(const World& world, std::size_t i) {
     return deepest;
 }
 
+// The smallest gap between two of `spheres` (m): their centres' distance less both radii,
+// < 0 where they overlap; +inf for fewer than two. Every pair: for a layer of spheres, not a pile.
+double closestGap(const World& world, const std::vector<std::size_t>& spheres) {
+    double closest = INFINITY;
+    for (std::size_t a = 0; a < spheres.size(); ++a) {
+        for (std::size_t b = a + 1; b < spheres.size(); ++b) {
+            const std::size_t i = spheres[a], j = spheres[b];
+            closest = std::min(closest, glm::distance(world.position[i], world.position[j]) - world.radius[i] - world.radius[j]);
+        }
+    }
+    return closest;
+}
+
 // --- instant meters: one sample per step in the stretch ---
 
 using WorldReadout = std::function<double(const World&)>;
@@ -553,6 +566,10 @@ const std::vector<MeterEntry>& meterTable() {
          planeReadout([](const physics::Plane& p) { return p.thickness; })},
         {{"gap", "m", "a sphere's gap to planes[plane]: the distance less r (< 0: inside it)"}, planeMeter(1.0)},
         {{"displacement", "m", "how far a sphere has moved since the stretch's start"}, make<DisplacementMeter>()},
+        {{"closest_gap", "m", "the smallest gap between two of the watched spheres: the distance less both radii (< 0: overlapping)"},
+         [](const Claim& c, const Scene& s) {
+             return std::make_unique<WorldMeter>(c, s, [&c](const World& w) { return closestGap(w, watched(c, w)); });
+         }},
         {{"apex", "m", "each apex of a sphere: its centre's highest z in a flight"}, make<ApexMeter>(ApexMeter::Sample::Apex)},
         {{"bounce_ratio", "", "each apex's (apex - r) / (the previous one - r), the first from the drop"},
          make<ApexMeter>(ApexMeter::Sample::Ratio)},

@@ -229,6 +229,9 @@ TEST(WrappedText, KeepsNameEqualsValueWholeAndCutsAWordWiderThanTheLine) {
               std::max(ImGui::CalcTextSize("shock = off,").x, ImGui::CalcTextSize("\u2717\u00a0pos").x));
     EXPECT_EQ(ui::widestWord("hash bf78370cf05532d3"), ImGui::CalcTextSize("bf78370cf05532d3").x);
     EXPECT_EQ(ui::widestWord("generalized-reflections"), ImGui::CalcTextSize("generalized-").x);
+    // Up to a width: a hash too wide for any type a label takes does not hide the words that fit.
+    EXPECT_EQ(ui::widestWord("hash bf78370cf05532d3 momentum", ImGui::CalcTextSize("momentum").x),
+              ImGui::CalcTextSize("momentum").x);
     ImGui::EndFrame();
     ImGui::DestroyContext(context);
 }

@@ -107,7 +107,7 @@ std::string wrapAtSpaces(std::string_view text, float width) {
     return lines;
 }
 
-float widestWord(std::string_view text) {
+float widestWord(std::string_view text, float upTo) {
     float widest = 0.0f;
     for (std::size_t start = 0; start < text.size();) {
         const std::size_t newline = std::min(text.find('\n', start), text.size());
@@ -121,7 +121,8 @@ float widestWord(std::string_view text) {
                                                                   isLetter(line[next - 2]) && isLetter(line[next])))) {
                     ++next;
                 }
-                widest = std::max(widest, widthOf(line.substr(part, next - part)));
+                const float width = widthOf(line.substr(part, next - part));
+                if (width <= upTo) widest = std::max(widest, width);
                 part = next;
             }
             word = end + 1;

@@ -19,6 +19,7 @@ std::string wrapAtSpaces(std::string_view text, float width);
 // The width of its widest word (ImGui units, current font): what no line narrower than
 // it holds whole. Words end where wrapAtSpaces may break ("passes = 1" is one word,
 // "generalized-reflections" two).
-float widestWord(std::string_view text);
+// With `upTo`: the widest no wider than that (0 where none is).
+float widestWord(std::string_view text, float upTo = 1e30f);
 
 }  // namespace ui

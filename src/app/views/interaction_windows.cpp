@@ -307,21 +307,24 @@ float labelsWidth(const std::vector<ViewLabel>& labels) {
 
 namespace {
 
-// The widest word of a label's lines (units, in the type of the window drawing at the time).
-float widestWord(const ViewLabel& label) {
+constexpr float kSmallestType = 0.6f;  // of the panel's type
+
+// The widest word of a label's lines no wider than `upTo` (units, in the type of the window
+// drawing at the time).
+float widestWord(const ViewLabel& label, float upTo = 1e30f) {
     float widest = 0.0f;
-    for (const std::string& line : label.lines) widest = std::max(widest, ui::widestWord(line));
+    for (const std::string& line : label.lines) widest = std::max(widest, ui::widestWord(line, upTo));
     return widest;
 }
 
-// The labels' type, as a share of the panel's: where a word is wider than a label's lines
-// `lineWidth` (units), smaller, down to kSmallestType, so that it stays whole (a quarter of
-// a 1024 px projector broke "penetrati" / "on" and "✗ momentu" / "m"); every label alike. A
-// word wider still (a hash in a very narrow label) is cut where the line is full.
-float wholeWordsScale(float widest, float lineWidth) {
-    constexpr float kSmallestType = 0.6f;
-    if (widest <= lineWidth) return 1.0f;
-    return std::max(kSmallestType, 0.99f * lineWidth / widest);  // a hair to spare for the widths' rounding
+// A label's type, as a share of the panel's: where a word is wider than its lines
+// `lineWidth` (units), smaller, down to kSmallestType, so that the word stays whole (a
+// quarter of a 1024 px projector broke "penetrati" / "on" and "✗ momentu" / "m"). A word
+// wider still (a hash in a very narrow label) is cut where the line is full, and does not
+// keep the others from being whole.
+float wholeWordsScale(const ViewLabel& label, float lineWidth) {
+    const float widest = widestWord(label, lineWidth / kSmallestType);
+    return widest <= lineWidth ? 1.0f : 0.99f * lineWidth / widest;  // a hair to spare for the widths' rounding
 }
 
 }  // namespace
@@ -329,9 +332,8 @@ float wholeWordsScale(float widest, float lineWidth) {
 float labelsHeight(const std::vector<ViewLabel>& labels, float width) {
     const ImGuiStyle& style = ImGui::GetStyle();
     const float text = std::max(width - 2.0f * style.WindowPadding.x, ImGui::GetFontSize() * 4.0f);  // units
-    float widest = 0.0f;
-    for (const ViewLabel& label : labels) widest = std::max(widest, widestWord(label));
-    const float type = wholeWordsScale(widest, text);  // as drawViewLabels sets it at this width
+    float type = 1.0f;  // as drawViewLabels sets it at this width: every label alike
+    for (const ViewLabel& label : labels) type = std::min(type, wholeWordsScale(label, text));
     float tallest = 0.0f;
     for (const ViewLabel& label : labels) {
         // A line to spare: changing digits and marks (- to a check) may wrap one more.
@@ -351,7 +353,7 @@ LabelsDrawn drawViewLabels(const std::vector<ViewLabel>& labels) {
         return std::min(viewLabelSize(label).x, label.room.x) - 2.0f * ImGui::GetStyle().WindowPadding.x;
     };
     float type = 1.0f;
-    for (const ViewLabel& label : labels) type = std::min(type, wholeWordsScale(widestWord(label), lineWidth(label)));
+    for (const ViewLabel& label : labels) type = std::min(type, wholeWordsScale(label, lineWidth(label)));  // all alike
     for (const ViewLabel& label : labels) drawn.wordsBroken += type * widestWord(label) > lineWidth(label);
     for (std::size_t k = 0; k < labels.size(); ++k) {
         const ViewLabel& label = labels[k];

@@ -30,26 +30,31 @@ fi
 port=$(python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
 python3 -m http.server "$port" --bind 127.0.0.1 --directory "$build/site" >/dev/null 2>&1 &
 server=$!
-trap 'kill $server 2>/dev/null; rm -rf "$profile" "$log" "$results"' EXIT
+trap 'kill $server ${pids[*]:-} 2>/dev/null; wait 2>/dev/null; rm -rf "$profile" "$log" "$results"' EXIT
 for _ in $(seq 50); do python3 -c "import urllib.request; urllib.request.urlopen('http://127.0.0.1:$port/')" 2>/dev/null && break; sleep 0.1; done
 
 # The checks up to the driven page run in the background, two at a time: a headless
 # Chromium keeps about one core busy, and its virtual clock now and then stalls for
-# seconds. Each check prints its line and returns its verdict; `said_in_order` prints the
-# lines in the order the checks were started, and a check that failed fails the test.
-checks=0 pids=()
+# seconds. Each check prints its line and returns its verdict; the lines are printed in
+# the order the checks were started, as soon as those before have finished (a run that
+# hangs shows how far it got), and a check that failed fails the test.
+checks=0 printed=0 pids=()
+print_finished() {  # the finished checks' lines, in order, up to the first still running
+  while [ "$printed" -lt "$checks" ] && [ -s "$results/$((printed + 1)).status" ]; do
+    printed=$((printed + 1))
+    cat "$results/$printed" 2>/dev/null || echo "check $printed said nothing"
+    [ "$(cat "$results/$printed.status")" = ok ] || failed=1
+  done
+}
 in_background() {
-  while [ "$(jobs -rp | grep -cvx "$server" || true)" -ge 2 ]; do wait -n || true; done
+  while [ "$(jobs -rp | grep -cvx "$server" || true)" -ge 2 ]; do wait -n || true; print_finished; done
   checks=$((checks + 1))
   { if "$@" </dev/null >"$results/$checks" 2>&1; then echo ok; else echo failed; fi >"$results/$checks.status"; } &
   pids+=($!)
 }
 said_in_order() {
   wait "${pids[@]}" || true
-  for k in $(seq "$checks"); do
-    cat "$results/$k"
-    [ "$(cat "$results/$k.status")" = ok ] || failed=1
-  done
+  print_finished
 }
 # A profile of its own for each Chromium (two run at once), removed at the end.
 new_profile() { mktemp -d -p "$profile"; }
