@@ -8,9 +8,11 @@
 #include <vector>
 
 #include <imgui.h>
+#include <imgui_internal.h>  // ImGui::FindWindowByName: the tooltip's window
 
 #include "app/views/window_layout.h"
 #include "app/window/short_key_presses.h"
+#include "ui/tooltip_timing.h"
 #include "ui/wrapped_text.h"
 
 namespace {
@@ -233,6 +235,40 @@ TEST(WrappedText, KeepsNameEqualsValueWholeAndCutsAWordWiderThanTheLine) {
     EXPECT_EQ(ui::widestWord("hash bf78370cf05532d3 momentum", ImGui::CalcTextSize("momentum").x),
               ImGui::CalcTextSize("momentum").x);
     ImGui::EndFrame();
+    ImGui::DestroyContext(context);
+}
+
+// A tooltip stays on the display: a view label's five properties, in a projector's large
+// type, ran off its right side and its foot. Wrapped at 45 % of the display's width at most,
+// and set in smaller type (to half) where it would be taller than 85 % of its height.
+TEST(Tooltips, ALongTextStaysWithinTheDisplay) {
+    EXPECT_EQ(ui::tooltipTypeFor(100.0f, 200.0f), 1.0f);
+    EXPECT_NEAR(ui::tooltipTypeFor(400.0f, 200.0f), 0.7071f, 1e-4f);
+    EXPECT_EQ(ui::tooltipTypeFor(8000.0f, 200.0f), 0.5f);
+    ImGuiContext* context = ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr;
+    io.DisplaySize = ImVec2(800.0f, 400.0f);
+    io.DeltaTime = 1.0f / 60.0f;
+    unsigned char* pixels = nullptr;
+    int width = 0, height = 0;
+    io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);
+    std::string text;
+    for (int k = 0; k < 30; ++k) text += "A property, what it measures and why the lecture's answers keep it or not. ";
+    for (int frame = 0; frame < 3; ++frame) {  // an auto-sized window takes its size from the frame before
+        ImGui::NewFrame();
+        ui::showTooltip(text);
+        ImGui::Render();
+    }
+    const ImGuiWindow* tooltip = ImGui::FindWindowByName("##Tooltip_00");
+    ASSERT_NE(tooltip, nullptr);
+    EXPECT_LE(tooltip->Size.x, 0.45f * 800.0f + 2.0f * ImGui::GetStyle().WindowPadding.x + 1.0f);
+    EXPECT_LE(tooltip->Size.y, 400.0f);
+    EXPECT_LT(tooltip->FontWindowScale, 1.0f) << "this text is taller than the display in the panel's type";
+    ImGui::NewFrame();  // a short one keeps the panel's type
+    ui::showTooltip("short");
+    ImGui::Render();
+    EXPECT_EQ(ImGui::FindWindowByName("##Tooltip_00")->FontWindowScale, 1.0f);
     ImGui::DestroyContext(context);
 }
 

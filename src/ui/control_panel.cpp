@@ -42,11 +42,7 @@ const ImVec4 kRefusalColor{1.0f, 0.62f, 0.30f, 1.0f};  // orange: refused, nothi
 // The item's tooltip, when tooltipDue says.
 void tooltip(std::string_view text) {
     if (!ImGui::IsItemHovered() || text.empty() || !tooltipDue(ImGui::GetItemRectMin())) return;
-    ImGui::BeginTooltip();
-    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 28.0f);
-    ImGui::TextUnformatted(text.data(), text.data() + text.size());
-    ImGui::PopTextWrapPos();
-    ImGui::EndTooltip();
+    showTooltip(text);
 }
 
 std::string labelOf(const scenes::Parameter& p) {

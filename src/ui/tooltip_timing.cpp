@@ -1,5 +1,8 @@
 #include "ui/tooltip_timing.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace ui {
 
 bool tooltipDue(ImVec2 corner) {
@@ -20,6 +23,24 @@ bool tooltipDue(ImVec2 corner) {
     clicked = clicked || ImGui::IsMouseDown(ImGuiMouseButton_Left) || ImGui::IsMouseDown(ImGuiMouseButton_Right);
     const double rested = ImGui::GetTime() - since;
     return !clicked && rested >= kTooltipAfter && rested <= kTooltipFor;
+}
+
+float tooltipTypeFor(float height, float room) {
+    return height <= room ? 1.0f : std::max(0.5f, std::sqrt(room / height));
+}
+
+void showTooltip(std::string_view text) {
+    ImGui::BeginTooltip();
+    ImGui::SetWindowFontScale(1.0f);  // measured in the panel's type (the window keeps its scale)
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    const float wrap = std::min(ImGui::GetFontSize() * 28.0f, 0.45f * display.x);  // units
+    const float height = ImGui::CalcTextSize(text.data(), text.data() + text.size(), false, wrap).y;
+    // Smaller type by s makes each line hold 1/s more and stand s as high: the height by s².
+    ImGui::SetWindowFontScale(tooltipTypeFor(height, 0.85f * display.y));
+    ImGui::PushTextWrapPos(wrap);
+    ImGui::TextUnformatted(text.data(), text.data() + text.size());
+    ImGui::PopTextWrapPos();
+    ImGui::EndTooltip();
 }
 
 }  // namespace ui

@@ -26,11 +26,7 @@ const ImVec4 kRingNoteColor{1.0f, 0.55f, 0.95f, 1.0f};  // the rings' legend, ma
 
 void tooltip(const char* text) {
     if (!ImGui::IsItemHovered()) return;
-    ImGui::BeginTooltip();
-    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 28.0f);
-    ImGui::TextUnformatted(text);
-    ImGui::PopTextWrapPos();
-    ImGui::EndTooltip();
+    ui::showTooltip(text);
 }
 
 void place(const Placement& placement) {
@@ -387,11 +383,7 @@ LabelsDrawn drawViewLabels(const std::vector<ViewLabel>& labels) {
         if (!label.tooltip.empty() && !ImGui::IsAnyItemHovered() &&
             ImGui::IsMouseHoveringRect(corner, ImVec2(corner.x + extent.x, corner.y + extent.y), false) &&
             ui::tooltipDue(corner)) {
-            ImGui::BeginTooltip();
-            ImGui::PushTextWrapPos(ImGui::GetFontSize() * 28.0f);
-            ImGui::TextUnformatted(label.tooltip.c_str());
-            ImGui::PopTextWrapPos();
-            ImGui::EndTooltip();
+            ui::showTooltip(label.tooltip);
         }
         ImGui::End();
     }
