@@ -240,36 +240,46 @@ TEST(WrappedText, KeepsNameEqualsValueWholeAndCutsAWordWiderThanTheLine) {
 
 // A tooltip stays on the display: a view label's five properties, in a projector's large
 // type, ran off its right side and its foot. Wrapped at 45 % of the display's width at most,
-// and set in smaller type (to half) where it would be taller than 85 % of its height.
+// and set in smaller type (to half) where it would be taller than 85 % of its height, as
+// measured in the lines it is drawn in: long paragraphs and short lines alike.
 TEST(Tooltips, ALongTextStaysWithinTheDisplay) {
-    EXPECT_EQ(ui::tooltipTypeFor(100.0f, 200.0f), 1.0f);
-    EXPECT_NEAR(ui::tooltipTypeFor(400.0f, 200.0f), 0.7071f, 1e-4f);
-    EXPECT_EQ(ui::tooltipTypeFor(8000.0f, 200.0f), 0.5f);
-    ImGuiContext* context = ImGui::CreateContext();
+    struct Context {
+        ImGuiContext* context = ImGui::CreateContext();
+        ~Context() { ImGui::DestroyContext(context); }
+    } guard;
     ImGuiIO& io = ImGui::GetIO();
     io.IniFilename = nullptr;
-    io.DisplaySize = ImVec2(800.0f, 400.0f);
+    io.DisplaySize = ImVec2(600.0f, 400.0f);
     io.DeltaTime = 1.0f / 60.0f;
+    io.MousePos = ImVec2(300.0f, 200.0f);  // so that the tooltip is placed by the pointer
     unsigned char* pixels = nullptr;
     int width = 0, height = 0;
     io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);
-    std::string text;
-    for (int k = 0; k < 30; ++k) text += "A property, what it measures and why the lecture's answers keep it or not. ";
-    for (int frame = 0; frame < 3; ++frame) {  // an auto-sized window takes its size from the frame before
-        ImGui::NewFrame();
-        ui::showTooltip(text);
-        ImGui::Render();
+    std::string paragraphs, lines;
+    for (int k = 0; k < 30; ++k) paragraphs += "A property, what it measures and why the lecture's answers keep it or not. ";
+    for (int k = 0; k < 40; ++k) lines += "property " + std::to_string(k) + ": 1.000 after/before\n";
+    for (const std::string& text : {paragraphs, lines}) {
+        float type = 1.0f;
+        for (int frame = 0; frame < 3; ++frame) {  // an auto-sized window takes its size from the frame before
+            ImGui::NewFrame();
+            type = ui::showTooltip(text);
+            ImGui::Render();
+        }
+        const ImGuiWindow* tooltip = ImGui::FindWindowByName("##Tooltip_00");
+        ASSERT_NE(tooltip, nullptr);
+        EXPECT_LT(type, 1.0f) << "taller than the display in the panel's type";
+        EXPECT_LE(tooltip->Size.x, 0.45f * 600.0f + ImGui::GetStyle().WindowPadding.x + 1.0f);
+        EXPECT_GE(tooltip->Pos.y, 0.0f);
+        EXPECT_LE(tooltip->Pos.y + tooltip->Size.y, 400.0f) << text.substr(0, 20);
+        EXPECT_LE(tooltip->Pos.x + tooltip->Size.x, 600.0f);
     }
-    const ImGuiWindow* tooltip = ImGui::FindWindowByName("##Tooltip_00");
-    ASSERT_NE(tooltip, nullptr);
-    EXPECT_LE(tooltip->Size.x, 0.45f * 800.0f + 2.0f * ImGui::GetStyle().WindowPadding.x + 1.0f);
-    EXPECT_LE(tooltip->Size.y, 400.0f);
-    EXPECT_LT(tooltip->FontWindowScale, 1.0f) << "this text is taller than the display in the panel's type";
-    ImGui::NewFrame();  // a short one keeps the panel's type
-    ui::showTooltip("short");
+    ImGui::NewFrame();  // ImGui's own tooltips share the window: the panel's type again
+    ImGui::SetTooltip("t = 1.000 s");
     ImGui::Render();
     EXPECT_EQ(ImGui::FindWindowByName("##Tooltip_00")->FontWindowScale, 1.0f);
-    ImGui::DestroyContext(context);
+    ImGui::NewFrame();  // a short one keeps the panel's type
+    EXPECT_EQ(ui::showTooltip("short"), 1.0f);
+    ImGui::Render();
 }
 
 #if IMGUI_VERSION_NUM < 18700  // ShortKeyPresses does nothing from 1.87 on

@@ -1,7 +1,6 @@
 #include "ui/tooltip_timing.h"
 
 #include <algorithm>
-#include <cmath>
 
 namespace ui {
 
@@ -25,22 +24,37 @@ bool tooltipDue(ImVec2 corner) {
     return !clicked && rested >= kTooltipAfter && rested <= kTooltipFor;
 }
 
-float tooltipTypeFor(float height, float room) {
-    return height <= room ? 1.0f : std::max(0.5f, std::sqrt(room / height));
+namespace {
+
+// The largest type, as a share of the panel's (to half at the least), in which `text`
+// wrapped `lineWidth` wide stands no taller than `room` (units). Measured in the panel's
+// type: in type s a line holds lineWidth / s of it, each s as tall.
+float tooltipType(std::string_view text, float lineWidth, float room) {
+    constexpr float kSmallest = 0.5f;
+    const auto height = [&](float s) {
+        return s * ImGui::CalcTextSize(text.data(), text.data() + text.size(), false, lineWidth / s).y;
+    };
+    float type = 1.0f;
+    while (type > kSmallest && height(type) > room) type = std::max(kSmallest, 0.95f * type);
+    return type;
 }
 
-void showTooltip(std::string_view text) {
+}  // namespace
+
+float showTooltip(std::string_view text) {
     ImGui::BeginTooltip();
-    ImGui::SetWindowFontScale(1.0f);  // measured in the panel's type (the window keeps its scale)
+    ImGui::SetWindowFontScale(1.0f);  // measured in the panel's type
     const ImVec2 display = ImGui::GetIO().DisplaySize;
-    const float wrap = std::min(ImGui::GetFontSize() * 28.0f, 0.45f * display.x);  // units
-    const float height = ImGui::CalcTextSize(text.data(), text.data() + text.size(), false, wrap).y;
-    // Smaller type by s makes each line hold 1/s more and stand s as high: the height by s².
-    ImGui::SetWindowFontScale(tooltipTypeFor(height, 0.85f * display.y));
+    const ImVec2 padding = ImGui::GetStyle().WindowPadding;
+    const float wrap = std::min(ImGui::GetFontSize() * 28.0f, 0.45f * display.x);  // from the window's left edge
+    const float type = tooltipType(text, wrap - padding.x, 0.85f * display.y - 2.0f * padding.y);
+    ImGui::SetWindowFontScale(type);
     ImGui::PushTextWrapPos(wrap);
     ImGui::TextUnformatted(text.data(), text.data() + text.size());
     ImGui::PopTextWrapPos();
+    ImGui::SetWindowFontScale(1.0f);  // the window is ImGui::SetTooltip's too
     ImGui::EndTooltip();
+    return type;
 }
 
 }  // namespace ui

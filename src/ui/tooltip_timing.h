@@ -17,10 +17,8 @@ bool tooltipDue(ImVec2 corner);
 
 // The tooltip itself: `text` wrapped at most 28 font sizes and 45 % of the display wide,
 // and set in smaller type (to half) where it would be taller than 85 % of the display: a
-// view label's five properties, in a projector's large type, ran off the screen.
-void showTooltip(std::string_view text);
-// Its type, as a share of the panel's, for a text `height` tall in the panel's type where
-// `room` is left (both units): 1 where it fits, else smaller, to half at the least.
-float tooltipTypeFor(float height, float room);
+// view label's five properties, in a projector's large type, ran off the screen. Returns
+// the type it took, as a share of the panel's.
+float showTooltip(std::string_view text);
 
 }  // namespace ui

@@ -320,7 +320,8 @@ float widestWord(const ViewLabel& label, float upTo = 1e30f) {
 // keep the others from being whole.
 float wholeWordsScale(const ViewLabel& label, float lineWidth) {
     const float widest = widestWord(label, lineWidth / kSmallestType);
-    return widest <= lineWidth ? 1.0f : 0.99f * lineWidth / widest;  // a hair to spare for the widths' rounding
+    if (widest <= std::max(lineWidth, 0.0f)) return 1.0f;  // (no room at all: a minimised window)
+    return std::max(0.99f * kSmallestType, 0.99f * lineWidth / widest);  // a hair to spare for the widths' rounding
 }
 
 }  // namespace
