@@ -102,6 +102,8 @@ void addClaims(CLI::App& cli, ClaimsOptions& o) {
         "claims", "Measure what each scene's text claims, as the lab sheet's test does; exit 1 if a claim fails");
     claims->add_option("--scene", o.scenes, "Scene file or preset name (repeatable; default: every preset)");
     claims->add_flag("--measures", o.measures, "List what a claim may measure (name, unit, meaning) instead");
+    claims->add_option("--junit", o.junit, "Also write a JUnit XML report (a test case per claim) for a CI pipeline: .xml")
+        ->check(aFileName());
 }
 
 void addWindowOptions(CLI::App& cli, WindowAppOptions& o) {

@@ -230,6 +230,27 @@ TEST(ClaimsCommandLine, AClaimThatFailsIsMarkedAndTheExitCodeSaysSo) {
     EXPECT_NE(output.find(" 1 \u2717 of "), std::string::npos) << output;
     // Repeated after the count with its scene: in a long log the ✗ line is far above.
     EXPECT_NE(output.find("Failed:\n  \u2717 " + file.string() + ": \"the other leaves at 1 m/s\"\n"), std::string::npos) << output;
+    // The same as a JUnit report, for a course's CI: a test case per claim, the failed one
+    // with what was measured; written whole, and a path it cannot write refused before the runs.
+    const std::filesystem::path report = std::filesystem::temp_directory_path() / "spheres_claims_report.xml";
+    std::filesystem::remove(report);
+    const auto [reported, reportCode] = runSpheres("claims --scene '" + file.string() + "' --junit '" + report.string() + "'");
+    EXPECT_EQ(reportCode, 1) << reported;
+    std::ifstream xml(report);
+    const std::string junit((std::istreambuf_iterator<char>(xml)), std::istreambuf_iterator<char>());
+    const std::size_t cases = scenes::checkClaims(scenes::loadScene(file.string())).size();
+    EXPECT_EQ(countOf(junit, "<testcase "), int(cases)) << junit;
+    EXPECT_EQ(countOf(junit, "<failure "), 1) << junit;
+    EXPECT_NE(junit.find("<testsuites name=\"spheres claims\" tests=\"" + std::to_string(cases) + "\" failures=\"1\">"),
+              std::string::npos) << junit;
+    EXPECT_NE(junit.find("name=\"the other leaves at 1 m/s\"><failure message=\"vx of sphere #1 over t = 0.9\u20131.2 s = 1 m/s"),
+              std::string::npos) << junit;
+    EXPECT_NE(junit.find("name=\"Lower \u03b2 to see the lecture&apos;s attenuation"), std::string::npos) << "escaped: " << junit;
+    const auto [unwritable, unwritableCode] = runSpheres("claims --scene head_on --junit /no/such/folder/report.xml");
+    EXPECT_EQ(unwritableCode, 2) << unwritable;
+    EXPECT_EQ(countOf(unwritable, "\n"), 1) << unwritable;
+    EXPECT_EQ(countOf(unwritable, "\u2713"), 0) << "refused before the runs: " << unwritable;
+    std::filesystem::remove(report);
     std::filesystem::remove(file);
     // What a claim may measure, for a teacher writing one.
     const auto [measures, listed] = runSpheres("claims --measures");

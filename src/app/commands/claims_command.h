@@ -11,10 +11,11 @@ namespace app {
 struct ClaimsOptions {
     std::vector<std::string> scenes;  // files or preset names; empty: every preset
     bool measures = false;            // instead: list what a claim may measure
+    std::string junit;                // also a JUnit XML report here (a test case per claim); "": none
 };
 
 // 0 when every claim holds, 1 when one does not. Throws UsageError / scenes::SceneError on
-// a scene that cannot be loaded.
+// a scene that cannot be loaded, and UsageError on a report that cannot be written whole.
 int runClaims(const ClaimsOptions& options);
 
 }  // namespace app
