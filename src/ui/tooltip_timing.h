@@ -2,7 +2,8 @@
 // When a tooltip shows: once the pointer has rested on its thing for kTooltipAfter, and
 // until it has rested there kTooltipFor or clicked it, until it moves again. A pointer left on
 // a header after a click, or on a view's label, had kept a tooltip over the views for a whole
-// run. The panel's tooltips and the views' labels share it (one pointer, one tooltip).
+// run. The panel's tooltips and the views' labels share it (one pointer, one tooltip), and
+// the one way a tooltip is laid out (showTooltip: within the display).
 #include <string_view>
 
 #include <imgui.h>
