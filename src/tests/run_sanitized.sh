@@ -26,11 +26,18 @@ for setting in alpha=0.5 beta=1 epsilon=0 mu=1 h=0.001 substeps=8 passes=10 grav
   printf "\\x$(printf %02x $((i % 13)))%s" "$setting" > "$out/corpus_set/seed_$i"
   i=$((i + 1))
 done
+# Both fuzzers at once, one a core (each is single-threaded): the same seconds each, half the wait.
+declare -A pid
+for fuzzer in scene_file set; do
+  "$out/spheres_fuzz_$fuzzer" "$out/corpus_$fuzzer" -max_total_time="$seconds" -artifact_prefix="$out/" \
+    -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 >"$out/fuzz_$fuzzer.log" 2>&1 &
+  pid[$fuzzer]=$!
+done
+trap 'kill "${pid[@]}" 2>/dev/null || true' EXIT  # a failure of one does not leave the other running
 for fuzzer in scene_file set; do
   log="$out/fuzz_$fuzzer.log"
   status=0
-  "$out/spheres_fuzz_$fuzzer" "$out/corpus_$fuzzer" -max_total_time="$seconds" -artifact_prefix="$out/" \
-    -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 >"$log" 2>&1 || status=$?
+  wait "${pid[$fuzzer]}" || status=$?
   runs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || echo 0)
   echo "spheres_fuzz_$fuzzer: $runs inputs in $seconds s, exit $status"
   if [ "$status" -ne 0 ]; then

@@ -514,9 +514,10 @@ TEST(SolverCache, BuildingWithoutTheSkinChangesNoState) {
 // rest (few spheres still move) and another struck by a fast sphere: at every step the
 // same state as a fresh build, and the movers' path served steps on its own.
 TEST(SolverCache, FindingOnlyTheMoversPairsChangesNoState) {
+    const scenes::Scene scene = pile({});
+    const physics::World landed = run(scene, 300);  // 5 s: landed, a few still rolling
     for (const bool struck : {false, true}) {
-        const scenes::Scene scene = pile({});
-        physics::World cached = run(scene, 300);  // 5 s: landed, a few still rolling
+        physics::World cached = landed;
         if (struck) cached.addSphere({-1.0, 0.0, 0.3}, {8.0, 0.0, 0.0}, 0.025, 0.1);
         physics::World fresh = cached;
         int servedByMovers = 0;
