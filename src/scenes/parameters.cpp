@@ -385,14 +385,8 @@ bool parseNumber(std::string_view text, double& value) {
 #endif
 }
 
-// The number a "--set" text stands for: a choice's index or a decimal.
-std::string parseValue(const Parameter& p, std::string_view text, double& value) {
-    if (p.kind == ParameterKind::Choice) {
-        value = choiceIndex(p, text);
-        if (value >= 0) return {};
-        return std::string(p.name) + " = '" + std::string(text) +
-               "' is not a choice; choices: " + detail::joinNames(p.choices);
-    }
+// The number a decimal text stands for: "" or why not ("value 'TEXT' for NAME ...").
+std::string parseDecimal(const Parameter& p, std::string_view text, double& value) {
     if (!parseNumber(text, value) || !std::isfinite(value)) {
         // A decimal the whole text spells, too large or too small for a double (1e400):
         // strtod reads it, out of range.
@@ -425,6 +419,29 @@ std::string parseValue(const Parameter& p, std::string_view text, double& value)
 }
 
 }  // namespace
+
+std::string parseValue(const Parameter& p, std::string_view text, double& value) {
+    text = trim(text);
+    if (p.kind == ParameterKind::Choice) {
+        value = choiceIndex(p, text);
+        if (value >= 0) return {};
+        return std::string(p.name) + " = '" + std::string(text) +
+               "' is not a choice; choices: " + detail::joinNames(p.choices);
+    }
+    const std::size_t slash = text.find('/');
+    if (slash == std::string_view::npos) return parseDecimal(p, text, value);
+    // A fraction, as the texts write h: two decimals around one slash.
+    double numerator = 0.0, denominator = 0.0;
+    if (!parseNumber(trim(text.substr(0, slash)), numerator) || !parseNumber(trim(text.substr(slash + 1)), denominator)) {
+        return "value '" + std::string(text) + "' for " + std::string(p.name) +
+               " is not a number (a decimal, or a fraction such as 1/240)";
+    }
+    value = numerator / denominator;
+    if (denominator == 0.0 || !std::isfinite(value)) {
+        return "value '" + std::string(text) + "' for " + std::string(p.name) + " divides by zero or overflows";
+    }
+    return {};
+}
 
 const std::vector<Parameter>& parameterTable() {
     static const std::vector<Parameter> table = makeTable();

@@ -72,6 +72,11 @@ std::string settingsThatActOnNothing(const Scene& scene, const std::vector<std::
 // range, an unknown choice with the choices). The scene is unchanged on error.
 std::string applySetting(Scene& scene, std::string_view assignment);
 
+// The number `text` stands for, as --set, links and a slider's Ctrl+click take it: a
+// choice's name (its index), a decimal, or a fraction as the texts write h ("1/240").
+// "" when it reads, else one line saying why not; the range is checkValue's.
+std::string parseValue(const Parameter& parameter, std::string_view text, double& value);
+
 // Checks a number (a Choice's index) and stores it: "" or one line saying why not.
 std::string setValue(const Parameter& parameter, Scene& scene, double value);
 

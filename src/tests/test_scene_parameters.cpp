@@ -185,6 +185,31 @@ TEST(ApplySetting, RefusesValuesThatAreNotNumbersOrChoices) {
     EXPECT_EQ(scene.params.alpha, physics::Params{}.alpha);
 }
 
+// The texts write h as a fraction ("lower h to 1/240 s"); --set, links and a slider's
+// Ctrl+click take it so, and refuse what only starts like a number (ImGui's own reading of
+// a typed "1/2" for beta kept the 1).
+TEST(ApplySetting, TakesAFractionAsTheTextsWriteIt) {
+    Scene scene;
+    EXPECT_EQ(applySetting(scene, "h=1/240"), "");
+    EXPECT_EQ(scene.params.timeStep, 1.0 / 240.0);
+    EXPECT_EQ(applySetting(scene, "beta = 1 / 2 "), "");
+    EXPECT_EQ(scene.params.beta, 0.5);
+    EXPECT_EQ(applySetting(scene, "beta=3/2"), "beta = 1.5 is out of range [0, 1]");
+    EXPECT_EQ(applySetting(scene, "substeps=9/2"), "substeps = 4.5 must be a whole number");
+    EXPECT_EQ(applySetting(scene, "h=1/0"), "value '1/0' for h divides by zero or overflows");
+    EXPECT_EQ(applySetting(scene, "h=1e300/1e-300"), "value '1e300/1e-300' for h divides by zero or overflows");
+    const std::string notANumber = " is not a number (a decimal, or a fraction such as 1/240)";
+    EXPECT_EQ(applySetting(scene, "beta=1/2x"), "value '1/2x' for beta" + notANumber);
+    EXPECT_EQ(applySetting(scene, "beta=1/2/3"), "value '1/2/3' for beta" + notANumber);
+    EXPECT_EQ(applySetting(scene, "beta=/2"), "value '/2' for beta" + notANumber);
+    EXPECT_EQ(applySetting(scene, "beta=1/"), "value '1/' for beta" + notANumber);
+    EXPECT_EQ(scene.params.beta, 0.5);  // unchanged by the refusals
+    scenes::Parameter const* beta = scenes::findParameter("beta");
+    double value = 0.0;
+    EXPECT_EQ(scenes::parseValue(*beta, "11/20", value), "");  // a slider's typed text, read alike
+    EXPECT_EQ(value, 0.55);
+}
+
 TEST(ApplySetting, RestartParametersNeedGeneratedSpheres) {
     Scene scene;
     EXPECT_EQ(applySetting(scene, "count=10"), "scene has no generated spheres");

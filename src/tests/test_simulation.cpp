@@ -64,6 +64,7 @@ TEST(Simulation, TheTimeScaleFollowsTheScenesOpenedUnlessTheUserChoseOne) {
     EXPECT_EQ(sim.timeScale, 1.0);
     sim.openScene(preset("16_bernoulli"));
     EXPECT_EQ(sim.timeScale, 0.25);
+    sim.paused = false;  // it opens paused
     const double h = sim.params().timeStep;
     EXPECT_EQ(sim.advance(4 * h), 1) << "four real steps of h are one simulated";
     sim.openScene(preset("11_pile"));
@@ -90,6 +91,23 @@ TEST(Simulation, RestartPausesAgainTheScenesThatOpenPaused) {
     resting.paused = false;
     pileSession.restartAsOpened();
     EXPECT_FALSE(resting.paused);
+}
+
+// A scene opens as it says, paused (13, 16-20) or running, whatever the last one was: a
+// teacher going on from 20 (paused at its start) to 21 saw it frozen at t = 0, and a pause
+// pressed by hand on 03 froze 04.
+TEST(Simulation, ASceneOpensPausedOnlyIfItSaysSo) {
+    const auto preset = [](const char* name) { return scenes::loadScene(scenes::presetPath(name)); };
+    app::Simulation sim = pile();
+    sim.openScene(preset("20_stacked_drop"));
+    EXPECT_TRUE(sim.paused);
+    sim.openScene(preset("21_shock_column"));
+    EXPECT_FALSE(sim.paused) << "20's pause carried over";
+    sim.paused = true;  // P, by hand
+    sim.openScene(preset("04_head_on_unequal"));
+    EXPECT_FALSE(sim.paused) << "a pause by hand carried over";
+    sim.openScene(preset("13_tunnelling"));
+    EXPECT_TRUE(sim.paused);
 }
 
 TEST(Simulation, AWallBudgetStopsAfterTheFirstStepItExceeds) {

@@ -54,6 +54,36 @@ std::string labelOf(const scenes::Parameter& p) {
 
 void wrappedColored(const ImVec4& color, const std::string& text);
 
+// The text typed into a slider (Ctrl+click), read as --set and links read it when Enter
+// is pressed (or the field is left): ImGui's own reading keeps the leading number, so the
+// texts' "1/240" for h was read as 1 and refused, and "1/2" for beta set 1 without a word.
+// A text that is not a number is refused under the slider; Esc keeps the value. Returns
+// whether the field was left this frame (its edit, if any, is then in `actions`).
+bool typedTextEntered(const scenes::Parameter& p, bool typing, PanelState& state, PanelActions& actions) {
+    if (typing) {
+        if (const ImGuiInputTextState* field = ImGui::GetInputTextState(ImGui::GetItemID())) {
+            char text[64];
+            ImTextStrToUtf8(text, sizeof text, field->TextW.Data, field->TextW.Data + field->CurLenW);
+            state.typedName = std::string(p.name);
+            state.typedText = text;
+        }
+        return false;
+    }
+    if (state.typedName != p.name || !ImGui::IsItemDeactivated()) return false;
+    state.typedName.clear();
+    state.pendingName.clear();  // ImGui's reading of the text, not used
+    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) return true;
+    double value = 0.0;
+    const std::string error = scenes::parseValue(p, state.typedText, value);
+    if (error.empty()) {
+        actions.edits.push_back({&p, value});
+    } else {
+        state.refusedName = std::string(p.name);
+        state.refusal = error;
+    }
+    return true;
+}
+
 // The slider (or list) of one table entry. Its edit goes into `actions`: a Live one
 // while it is dragged, a Restart one when it is let go (meanwhile `state` holds the
 // value shown). Under it, why its last edit was refused. `labelAbove`: its label on a line
@@ -102,7 +132,9 @@ void parameterWidget(const scenes::Parameter& p, const scenes::Scene& scene, Pan
     if (ImGui::IsItemHovered()) {
         tooltip(std::string(p.tooltip) + "\n\nNamed " + std::string(p.name) + " in --set, links and scene files.");
     }
-    if ((p.applies == scenes::Applies::Live || p.kind == scenes::ParameterKind::Choice) && !typing && !pending) {
+    if (typedTextEntered(p, typing, state, actions)) {
+        // read as --set reads it (done: ImGui's own reading is not used)
+    } else if ((p.applies == scenes::Applies::Live || p.kind == scenes::ParameterKind::Choice) && !typing && !pending) {
         if (changed) actions.edits.push_back({&p, value});
     } else {
         // A restart rebuilds the world: only when the slider is let go, not on every drag frame.

@@ -75,6 +75,9 @@ struct PanelState {
     // A restart parameter while its slider is held: the value shown, applied on release.
     std::string pendingName;
     double pendingValue = 0.0;
+    // A number being typed into a slider (Ctrl+click): whose, and its text so far.
+    std::string typedName;
+    std::string typedText;
     // The last refused edit, shown under the parameter it was about.
     std::string refusedName;
     std::string refusal;

@@ -22,6 +22,7 @@ void Simulation::openScene(scenes::Scene scene) {
     const bool chosen = timeScale != scene_.timeScale;
     setScene(std::move(scene));
     if (!chosen) timeScale = scene_.timeScale;
+    paused = scene_.opensPaused;
 }
 
 void Simulation::restart() { startFrom(scenes::buildWorld(scene_)); }

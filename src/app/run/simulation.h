@@ -31,7 +31,9 @@ public:
     void setScene(scenes::Scene scene);
     // Another scene in its place (a file or a preset loaded), as setScene. The time scale a
     // user chose is kept; one left where the last scene opened it follows the new scene's own
-    // (16-19 open in slow motion, the pile after them at 1x).
+    // (16-19 open in slow motion, the pile after them at 1x). It opens paused if the scene
+    // says so (13, 16-20), else running: the last scene's pause is not carried over (after
+    // 20, paused at its start, 21 ran frozen at t = 0, and 12's rain as an empty box).
     void openScene(scenes::Scene scene);
 
     // Real seconds since the last frame: scaled by timeScale, accumulated, and spent

@@ -381,8 +381,7 @@ int WindowApp::presetIndexOf(const std::string& path) const {
 
 void WindowApp::loadFile(const std::string& path) {
     try {
-        simulation_.openScene(scenes::loadScene(path));
-        if (simulation_.scene().opensPaused) simulation_.paused = true;  // else it runs on or stays paused
+        simulation_.openScene(scenes::loadScene(path));  // paused or running as the scene opens
         openColoring();
         showSceneTitle();
         panel_.scenePath = path;
