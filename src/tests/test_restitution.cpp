@@ -7,6 +7,7 @@
 #include <string>
 
 #include "app/teaching/restitution.h"
+#include "app/run/session.h"
 #include "app/run/simulation.h"
 #include "app/views/frame_builder.h"
 #include "physics/step.h"
@@ -53,6 +54,27 @@ std::string singleBouncePreset() {
         }
     }
     return "";
+}
+
+// 02 at rest, β moved from 0.8 to 0.5: the ratios measured at 0.8 no longer stand beside
+// the new β² (they read as if β did nothing, and no bounce comes to replace them); the note
+// says why and what brings new ones. R drops the ball again, measured at the new β.
+TEST(Restitution, TheRatiosOfAnotherBetaAreNotShownBesideTheNewOne) {
+    app::Simulation sim(scenes::loadScene(scenes::presetPath("02_bounce_projection")));
+    app::Session session(sim);
+    sim.paused = false;
+    for (int frame = 0; frame < 6 * 60; ++frame) sim.advance(1.0 / 60.0);  // 6 s: at rest
+    ASSERT_FALSE(app::makeReadouts(sim, ui::FrameTimes{}).measuredBetaSquared.empty());
+    ASSERT_EQ(session.setParameter(*scenes::findParameter("beta"), 0.5), "");
+    for (int frame = 0; frame < 60; ++frame) sim.advance(1.0 / 60.0);
+    ui::Readouts readouts = app::makeReadouts(sim, ui::FrameTimes{});
+    EXPECT_TRUE(readouts.measuredBetaSquared.empty());
+    EXPECT_EQ(readouts.restitutionNote, "(no floor bounce since \u03b2 was changed: R drops it again)");
+    session.restartAsOpened();
+    for (int frame = 0; frame < 4 * 60; ++frame) sim.advance(1.0 / 60.0);
+    readouts = app::makeReadouts(sim, ui::FrameTimes{});
+    ASSERT_FALSE(readouts.measuredBetaSquared.empty());
+    for (const double ratio : readouts.measuredBetaSquared) EXPECT_NEAR(ratio, 0.25, 0.02);
 }
 
 }  // namespace

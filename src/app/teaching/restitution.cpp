@@ -117,7 +117,7 @@ void RestitutionMeter::afterStep(const physics::World& world, const physics::Par
         if (t.inContact && t.floorBounce && !t.otherContact && t.beforeKnown && t.energyBefore > 0.0 &&
             std::isfinite(energy)) {
             const double impactSpeed = std::sqrt(2.0 * t.energyBefore);  // m/s
-            judge({{i, world.time, t.energyBefore / gn, energy / gn},
+            judge({{i, world.time, t.energyBefore / gn, energy / gn, params.beta},
                    impactSpeed >= kMinLabelledImpactSpeedInGH * gn * params.solverStep(),
                    impactSpeed < minImpactSpeed});
         }

@@ -34,6 +34,7 @@ struct BounceMeasurement {
     double time = 0.0;          // s, simulated, when the sphere left the floor
     double heightBefore = 0.0;  // m, apex above touching before the bounce
     double heightAfter = 0.0;   // m, after
+    double beta = 0.0;          // the β it was answered with (a slider moved since makes it another's)
     double ratio() const { return heightAfter / heightBefore; }  // measured beta^2
 };
 

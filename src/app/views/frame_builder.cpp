@@ -149,8 +149,19 @@ ui::Readouts makeReadouts(const Simulation& simulation, const ui::FrameTimes& ti
         r.alarms.push_back({line.text, line.hint, line.lit});
     }
     r.betaSquared = simulation.params().beta * simulation.params().beta;
-    for (const BounceMeasurement& m : simulation.restitution().last()) r.measuredBetaSquared.push_back(m.ratio());
-    if (r.measuredBetaSquared.empty()) r.restitutionNote = restitutionNote(simulation);
+    // The bounces of the β set now: after a move of its slider the ratios of the old β,
+    // beside the new β², read as if β did nothing (02 at rest: no bounce comes to replace them).
+    bool otherBeta = false;
+    for (const BounceMeasurement& m : simulation.restitution().last()) {
+        if (m.beta == simulation.params().beta) {
+            r.measuredBetaSquared.push_back(m.ratio());
+        } else {
+            otherBeta = true;
+        }
+    }
+    if (r.measuredBetaSquared.empty()) {
+        r.restitutionNote = otherBeta ? "(no floor bounce since β was changed: R drops it again)" : restitutionNote(simulation);
+    }
     r.bouncesMeasured = followsBounces(simulation.world(), simulation.params(), simulation.selectedSphere());
     std::vector<LegendLine> legend =
         overlayLegend(simulation.overlayFlags(), simulation.world().size(), simulation.selectedSphere());

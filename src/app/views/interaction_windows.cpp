@@ -41,12 +41,19 @@ void place(const Placement& placement) {
 
 // One vector field: three numbers; true when edited (the value is in `v`). An edit counts
 // when Enter is pressed: applied keystroke by keystroke, "150" passed through 15 on its way,
-// and a refused value left its first digits behind.
+// and a refused value left its first digits behind. A tiny negative is shown as 0.000, not
+// "-0.000"; only the number typed into changes (the others keep every digit).
 bool vectorField(const char* label, glm::dvec3& v, bool editable) {
-    double values[3] = {v.x, v.y, v.z};
+    constexpr double kShownAsZero = 0.0005;  // under half the last of three decimals
+    double shown[3], values[3];
+    for (int k = 0; k < 3; ++k) values[k] = shown[k] = v[k] < 0.0 && v[k] > -kShownAsZero ? 0.0 : v[k];
     const ImGuiInputTextFlags flags = editable ? ImGuiInputTextFlags_EnterReturnsTrue : ImGuiInputTextFlags_ReadOnly;
     const bool changed = ImGui::InputScalarN(label, ImGuiDataType_Double, values, 3, nullptr, nullptr, "%.3f", flags);
-    if (changed) v = {values[0], values[1], values[2]};
+    if (changed) {
+        for (int k = 0; k < 3; ++k) {
+            if (values[k] != shown[k]) v[k] = values[k];
+        }
+    }
     return changed;
 }
 
@@ -138,6 +145,22 @@ void drawMessage(const glm::vec4& scene, const ToolWindowsState& state) {
     ImGui::End();
 }
 
+std::string speedText(double metresPerSecond) {
+    struct Unit {
+        double from, scale;  // m/s at and above which it is used; its size in m/s
+        const char* name;
+    };
+    static constexpr Unit kUnits[] = {{0.1, 1.0, "m/s"}, {1e-3, 1e-2, "cm/s"}, {1e-5, 1e-3, "mm/s"}, {0.0, 1e-6, "µm/s"}};
+    const double speed = std::abs(metresPerSecond);
+    if (speed == 0.0 || !std::isfinite(speed)) return speed == 0.0 ? "0 m/s" : "not finite";
+    const Unit& unit = *std::find_if(std::begin(kUnits), std::end(kUnits), [&](const Unit& u) { return speed >= u.from; });
+    const double shown = speed / unit.scale;
+    char text[48];
+    std::snprintf(text, sizeof text, shown >= 100.0 ? "%.0f %s" : shown >= 10.0 ? "%.1f %s" : shown >= 1.0 ? "%.2f %s" : "%.3g %s",
+                  shown, unit.name);
+    return text;
+}
+
 float drawInspector(const Placement& placement, const physics::World& world, int selected, char view, bool paused,
                     int graphLevel, ToolWindowsState& state, ToolActions& actions) {
     if (selected < 0 || static_cast<std::size_t>(selected) >= world.size()) return 0.0f;
@@ -169,7 +192,7 @@ float drawInspector(const Placement& placement, const physics::World& world, int
     const physics::ContactState contact =
         i < world.contactState.size() ? world.contactState[i] : physics::ContactState::Free;
     const glm::dvec3& v = world.velocity[i];
-    ImGui::Text("|v| = %.3f m/s, %s", std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z), contactStateName(contact));
+    ImGui::Text("|v| = %s, %s", speedText(glm::length(v)).c_str(), contactStateName(contact));
     if (graphLevel >= 0) {
         ImGui::Text("contact graph level %d%s", graphLevel, graphLevel == 0 ? " (touches a plane)" : "");
         tooltip("Slide 14: level 0 touches a plane, level k + 1 touches level k and none lower. Shock "
