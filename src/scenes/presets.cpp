@@ -53,6 +53,13 @@ std::string matchPreset(std::string_view name, std::string& why) {
         const std::size_t underscore = stem.find('_');
         const std::string bare = underscore == std::string::npos ? stem : stem.substr(underscore + 1);
         if (name == stem || name == bare || name == stem + ".json") return presetPath(stem);
+        const std::string_view number = std::string_view(stem).substr(0, underscore);
+        const auto digitsOnly = [](std::string_view s) {
+            return !s.empty() && s.size() <= 4 && s.find_first_not_of("0123456789") == std::string_view::npos;
+        };
+        if (digitsOnly(name) && digitsOnly(number) && std::stoi(std::string(name)) == std::stoi(std::string(number))) {
+            return presetPath(stem);
+        }
         if (!name.empty() && bare.find(name) != std::string::npos) partial.push_back(stem);
     }
     if (partial.size() > 1) {

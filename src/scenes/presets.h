@@ -19,7 +19,8 @@ std::vector<std::string> listPresets();
 // SceneError naming the presets when there is none of that name.
 std::string presetPath(std::string_view name);
 
-// The preset a name means: its full name ("11_pile"), without its number ("pile"), or
+// The preset a name means: its full name ("11_pile"), its number ("11", or "8" for
+// 08, as a teacher says "slide 8's preset"), its name without the number ("pile"), or
 // any part of its name no other preset shares ("cradle"). Returns its file, or "" with
 // `why` ("more than one preset matches: ...", or empty: none does).
 std::string matchPreset(std::string_view name, std::string& why);

@@ -176,6 +176,16 @@ TEST(SceneSource, AFolderNamedAfterAPresetDoesNotHideIt) {
     EXPECT_NE(refusal.find("is a folder, not a scene file"), std::string::npos) << refusal;
 }
 
+// A teacher opens the preset of a slide by its number: "01", or "8" for 08; a number no
+// preset has is no preset.
+TEST(SceneSource, APresetIsNamedByItsNumberToo) {
+    EXPECT_EQ(app::resolveScenePath("01"), scenes::presetPath("01_bounce_response_only"));
+    EXPECT_EQ(app::resolveScenePath("8"), scenes::presetPath("08_newtons_cradle"));
+    EXPECT_EQ(app::resolveScenePath("22"), scenes::presetPath("22_shock_pyramid"));
+    EXPECT_EQ(app::resolveScenePath("99"), "");
+    EXPECT_EQ(app::resolveScenePath("0"), "");
+}
+
 class CaptureBackendRefusal : public ::testing::TestWithParam<HeadlessBackend> {};
 
 TEST_P(CaptureBackendRefusal, UnavailableBackendSaysWhatWasTriedAndWhatToDo) {
