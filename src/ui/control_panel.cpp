@@ -54,6 +54,14 @@ std::string labelOf(const scenes::Parameter& p) {
 
 void wrappedColored(const ImVec4& color, const std::string& text);
 
+// A list's width that shows its choice whole (presented at 1024 px, "response-only" read
+// "response-o"), at most the panel's.
+float choiceWidth(const std::string& shown) {
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float width = ImGui::CalcTextSize(shown.c_str()).x + ImGui::GetFrameHeight() + 2.0f * style.FramePadding.x;
+    return std::min(width, ImGui::GetContentRegionAvail().x);
+}
+
 // The text typed into a slider (Ctrl+click), read as --set and links read it when Enter
 // is pressed (or the field is left): ImGui's own reading keeps the leading number, so the
 // texts' "1/240" for h was read as 1 and refused, and "1/2" for beta set 1 without a word.
@@ -104,6 +112,7 @@ void parameterWidget(const scenes::Parameter& p, const scenes::Scene& scene, Pan
     if (p.kind == scenes::ParameterKind::Choice) {
         int index = static_cast<int>(value);
         const std::string current = p.choiceShown(static_cast<std::size_t>(index));
+        if (!labelAbove) ImGui::SetNextItemWidth(std::max(ImGui::CalcItemWidth(), choiceWidth(current)));
         if (ImGui::BeginCombo(label.c_str(), current.c_str())) {
             for (std::size_t k = 0; k < p.choices.size(); ++k) {
                 const std::string name = p.choiceShown(k);
@@ -563,11 +572,17 @@ void measuredClaims(const Readouts& r, PanelState& state) {
     const bool sameRun = r.claims.size() >= state.claimsMeasuredShown && r.claimsWatched == state.claimsWatchedShown;
     const bool keepLines = state.pointerOverPanel && wereOpen && sameRun;
     char header[160];
-    if (r.claimsInterrupted) {
-        std::snprintf(header, sizeof header, "The text, measured: stopped; R measures again###claims");
-    } else {
-        std::snprintf(header, sizeof header, "The text, measured: %d \u2713 %d \u2717 of %zu###claims", held,
-                      int(r.claims.size()) - held, r.claimsWatched);
+    // Its shorter words where the whole line would not fit beside the arrow (presented at
+    // 1024 px the count ran under the scroll bar: "5 ✓ 0 ✗ of").
+    const float room = ImGui::GetContentRegionAvail().x - ImGui::GetFontSize() - 2.0f * ImGui::GetStyle().FramePadding.x;
+    for (const char* words : {"The text, measured", "Measured"}) {
+        if (r.claimsInterrupted) {
+            std::snprintf(header, sizeof header, "%s: stopped; R measures again###claims", words);
+        } else {
+            std::snprintf(header, sizeof header, "%s: %d \u2713 %d \u2717 of %zu###claims", words, held,
+                          int(r.claims.size()) - held, r.claimsWatched);
+        }
+        if (ImGui::CalcTextSize(header, nullptr, true).x <= room) break;
     }
     const bool open = ImGui::CollapsingHeader(header);
     tooltip("What the text above says, measured in this run since its start: each claim once its moment has "
@@ -633,14 +648,19 @@ float itemWidth() { return std::min(ImGui::GetFontSize() * 9.5f, 0.4f * ImGui::G
 void pushItemWidth() { ImGui::PushItemWidth(itemWidth()); }
 
 // Presenting, whether a slider's label is too wide beside it (1024 px at 1.5 times the
-// type): then every label goes above its slider.
-bool labelsAboveSliders(const std::vector<const scenes::Parameter*>& sliders) {
-    float widest = 0.0f;
+// type), or a list's choice too wide to leave its label room: then every label goes above
+// its slider.
+bool labelsAboveSliders(const std::vector<const scenes::Parameter*>& sliders, const scenes::Scene& scene) {
     for (const scenes::Parameter* p : sliders) {
         const std::string label = labelOf(*p);
-        widest = std::max(widest, ImGui::CalcTextSize(label.c_str(), label.c_str() + label.find("##")).x);
+        const float labelWidth = ImGui::CalcTextSize(label.c_str(), label.c_str() + label.find("##")).x;
+        float widget = itemWidth();
+        if (p->kind == scenes::ParameterKind::Choice) {
+            widget = std::max(widget, choiceWidth(p->choiceShown(static_cast<std::size_t>(p->get(scene)))));
+        }
+        if (labelWidth + ImGui::GetStyle().ItemInnerSpacing.x > ImGui::GetContentRegionAvail().x - widget) return true;
     }
-    return widest + ImGui::GetStyle().ItemInnerSpacing.x > ImGui::GetContentRegionAvail().x - itemWidth();
+    return false;
 }
 
 // The height the presentation's sliders and `keys` take under the text: each slider, and
@@ -710,7 +730,8 @@ UnderText underPresentedText(const std::vector<const scenes::Parameter*>& slider
     // On two lines whatever their width: one line that wrapped as its digits changed moved the
     // sliders above it up and down.
     char numbers[160];
-    std::snprintf(numbers, sizeof numbers, "kinetic\u00a0%.4g\u00a0J   E~\u00a0%.5g\u00a0J", r.diagnostics.kinetic,
+    // Both to five digits: "kinetic 3610 J   E~ 3609.7 J" read as two values in zero gravity.
+    std::snprintf(numbers, sizeof numbers, "kinetic\u00a0%.5g\u00a0J   E~\u00a0%.5g\u00a0J", r.diagnostics.kinetic,
                   r.diagnostics.modified);
     under.notes.push_back(numbers);
     std::snprintf(numbers, sizeof numbers, "|p|\u00a0%.4g\u00a0kg\u00a0m/s", glm::length(physics::momentumShown(r.diagnostics)));
@@ -751,7 +772,7 @@ void presentedPanel(const scenes::Scene& scene, const Readouts& readouts, const 
         const scenes::Parameter* p = scenes::findParameter(name);
         if (p && p->availableIn(scene)) sliders.push_back(p);
     }
-    const bool labelsAbove = labelsAboveSliders(sliders);
+    const bool labelsAbove = labelsAboveSliders(sliders, scene);
     UnderText under = underPresentedText(sliders, scene, state, readouts, alarms);
     // The sliders stay in sight under the text while they leave it at least 38 % of the panel
     // (9 lines at 1280x720: it scrolls; at half, 02's text took the whole panel and hid the
@@ -899,7 +920,7 @@ PanelActions drawControlPanel(const scenes::Scene& scene, double& timeScale, con
 std::string readoutsTitle(const Readouts& r, bool viewA) {
     char text[208];
     const int fps = static_cast<int>(r.timing.fps + 0.5);
-    std::snprintf(text, sizeof text, "Readouts%s   %s%skinetic %.4g J   potential %.6g J   hash %016llx###Readouts",
+    std::snprintf(text, sizeof text, "Readouts%s   %s%skinetic %.5g J   potential %.5g J   hash %016llx###Readouts",
                   viewA ? " of view A" : "", fps > 0 ? std::to_string(fps).c_str() : "", fps > 0 ? " FPS   " : "",
                   r.diagnostics.kinetic,
                   r.diagnostics.potential, static_cast<unsigned long long>(r.diagnostics.hash));
