@@ -162,8 +162,8 @@ std::vector<Parameter> makeTable() {
     using physics::Params;
     return {
         real("alpha", "\u03b1  tangential attenuation", "", 0.0, 1.0, kDefaults.alpha,
-             "Slide 4: restitution coefficient in the // direction (friction). A bounce keeps "
-             "\u03b1 v//: 1 keeps the sliding speed, 0 stops it.",
+             "Slide 4: restitution coefficient in the \u2225 direction (friction). A bounce keeps "
+             "\u03b1 v\u2225: 1 keeps the sliding speed, 0 stops it.",
              param<&Params::alpha>()),
         real("beta", "\u03b2  normal restitution", "", 0.0, 1.0, kDefaults.beta,
              "Slide 4: restitution coefficient in the \u22a5 direction (impact). A bounce sends "
@@ -278,7 +278,7 @@ std::vector<Parameter> makeTable() {
                 param<&Params::maxEventsPerSphere>())),
         choice("response", "sphere-sphere response", {"lecture", "momentum"},
                static_cast<double>(kDefaults.response),
-               "lecture: slide 12, v1 \u2190 \u03b1 v1// + \u03b2 (v1\u22a5 + j/m1 u), which "
+               "lecture: slide 12, v1 \u2190 \u03b1 v1\u2225 + \u03b2 (v1\u22a5 + j/m1 u), which "
                "conserves momentum only when \u03b1 = \u03b2 = 1 and, at static contacts, \u03bc = 1. momentum: equal and opposite impulses, "
                "(1 + \u03b2) on the normal and \u03b1 on the tangential speed: momentum is exact.",
                param<&Params::response>()),

@@ -231,10 +231,10 @@ void measuredRestitution(const Readouts& r) {
         }
         ImGui::TextColored(kMeasuredColor, "%s", text.c_str());
     }
-    tooltip("Measured beta^2: the apex height after a floor bounce over the apex height before it, newest first, "
+    tooltip("Measured \u03b2\u00b2: the apex height after a floor bounce over the apex height before it, newest first, "
             "read from the modified energy of the motion along the normal (exact in free flight). Slide 4: it "
-            "should be beta^2. Position based loses up to tau s / H of it; velocity based gains about 2 g tau / s "
-            "(tau = h / substeps, the solver step; s the impact speed, H the fall above the contact). "
+            "should be \u03b2\u00b2. Position based loses up to \u03c4 s / H of it; velocity based gains about 2 g \u03c4 / s "
+            "(\u03c4 = h / substeps, the solver step; s the impact speed, H the fall above the contact). "
             "Measured for scenes of up to 10 spheres, or the selected sphere.");
 }
 
@@ -403,11 +403,14 @@ void readoutsBody(const Readouts& r, const PanelState& state, PanelActions& acti
         if (!colours.empty()) ImGui::TextWrapped("%s", colours.c_str());
         ImGui::Separator();
     }
-    ImGui::Text("contacts %llu sphere + %llu wall", static_cast<unsigned long long>(d.sphereContacts),
+    ImGui::Text("touching now: %llu sphere + %llu wall contacts", static_cast<unsigned long long>(d.sphereContacts),
                 static_cast<unsigned long long>(d.wallContacts));
-    ImGui::Text("last step: %llu bounces, %llu static", static_cast<unsigned long long>(r.stats.collisions),
+    // Answers, not contacts: 07's 4 resting wall contacts read "76 static" under "0 sphere + 4 wall".
+    ImGui::Text("last step answered %llu bounces, %llu static", static_cast<unsigned long long>(r.stats.collisions),
                 static_cast<unsigned long long>(r.stats.staticContacts));
-    tooltip("A bounce is a contact whose relative normal speed is above epsilon; a static contact is at or below it (slide 13).");
+    tooltip("Contact answers in the last step, counted in every pass and substep (a contact answered in each of "
+            "4 substeps and 2 passes counts 8). A bounce is a contact whose relative normal speed is above "
+            "\u03b5; a static contact is at or below it (slide 13).");
     ImGui::Text("bounces since restart %llu", static_cast<unsigned long long>(r.bouncesSinceRestart));
     tooltip("Contacts answered as a bounce since the last restart, counted in every pass and substep.");
     if (r.untilConverged) {
@@ -458,15 +461,15 @@ void readoutsBody(const Readouts& r, const PanelState& state, PanelActions& acti
     ImGui::Text("potential %.5g J", d.potential);
     ImGui::Text("total %.6g J", d.total);
     ImGui::Text("E~ %.6g J", d.modified);
-    tooltip("E~ = sum m (-g.p + |v + tau g/2|^2 / 2), tau = h / substeps the solver step: the energy the time "
+    tooltip("E~ = \u03a3 m (\u2212g\u00b7p + |v + \u03c4 g/2|\u00b2 / 2), \u03c4 = h / substeps the solver step: the energy the time "
             "integration keeps exactly in free flight. "
             "Use it for bounce heights: the naive total wobbles by O(g v h).");
     const glm::dvec3 p = physics::momentumShown(d);  // kg m/s
     ImGui::Text("p (%.2g, %.2g, %.2g) kg m/s", p.x, p.y, p.z);
-    tooltip("Total momentum, sum m v. Gravity changes it; the walls too. Between spheres alone it is kept by the "
-            "momentum-conserving response for every alpha, beta, mu, and by the lecture's only when alpha = beta = 1 "
-            "and no static contact damps it (slide 13's v <- mu v scales each sphere's own velocity). A component "
-            "within 1e-12 of sum m |v| of zero is rounding and reads 0.");
+    tooltip("Total momentum, \u03a3 m v. Gravity changes it; the walls too. Between spheres alone it is kept by the "
+            "momentum-conserving response for every \u03b1, \u03b2, \u03bc, and by the lecture's only when \u03b1 = \u03b2 = 1 "
+            "and no static contact damps it (slide 13's v \u2190 \u03bc v scales each sphere's own velocity). A component "
+            "within 10\u207b\u00b9\u00b2 of \u03a3 m |v| of zero is rounding and reads 0.");
     ImGui::Text("deepest penetration %.2f %% of r", 100.0 * d.maxPenetration);
     ImGui::Text("state hash %016llx", static_cast<unsigned long long>(d.hash));
     tooltip("Same scene, same seed, same parameters: same hash. Compare runs with it.");

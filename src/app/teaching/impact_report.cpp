@@ -23,9 +23,9 @@ std::string format(const char* pattern, double a, double b = 0.0) {
 
 PropertyVerdict momentum(const ImpactRecord& r) {
     PropertyVerdict v{"momentum", "", Verdict::Untested,
-                      "Total momentum of the colliding spheres is kept: |change| / sum m|v| of the clusters that "
+                      "Total momentum of the colliding spheres is kept: |change| / \u03a3 m|v| of the clusters that "
                       "touch no wall (a wall takes momentum). The lecture's response (slide 12) and its static "
-                      "contact (slide 13, v <- mu v) act on each sphere's own velocity and do not keep it in "
+                      "contact (slide 13, v \u2190 \u03bc v) act on each sphere's own velocity and do not keep it in "
                       "general: a touching pair falling together is braked. response = momentum keeps it."};
     if (r.total.momentumScale <= 0.0) {
         v.value = "no free cluster struck";
@@ -39,7 +39,7 @@ PropertyVerdict momentum(const ImpactRecord& r) {
 PropertyVerdict energy(const ImpactRecord& r, const physics::Params& params) {
     PropertyVerdict v{"energy", "", Verdict::Untested,
                       "Kinetic energy of the struck clusters after / before the contacts of a step: never more, "
-                      "and kept exactly when the contacts are elastic (beta = 1, alpha = 1, mu = 1 and epsilon = "
+                      "and kept exactly when the contacts are elastic (\u03b2 = 1, \u03b1 = 1, \u03bc = 1 and \u03b5 = "
                       "0: no friction, no damped static contact)."};
     if (r.worstEnergyRatio < 0.0) {
         v.value = "nothing struck";
@@ -81,7 +81,7 @@ PropertyVerdict symmetry(const std::vector<physics::MirrorAsymmetry>& mirrors) {
 PropertyVerdict breakAway(const ImpactRecord& r) {
     PropertyVerdict v{"break-away", "", Verdict::Untested,
                       "Touching spheres that did not approach may part, as a cradle's last ball does: resting "
-                      "pairs of a cluster an impact struck (a contact faster than epsilon) that separated. A "
+                      "pairs of a cluster an impact struck (a contact faster than \u03b5) that separated. A "
                       "stack at rest tests nothing."};
     const auto& t = r.total;
     if (t.restingPairs == 0) {
@@ -96,8 +96,8 @@ PropertyVerdict breakAway(const ImpactRecord& r) {
 PropertyVerdict positivity(const ImpactRecord& r, const physics::Params& params) {
     PropertyVerdict v{"positivity", "", Verdict::Untested,
                       "Impulses only push, so no contact still approaches after the contacts of a step: the "
-                      "fastest approach left (m/s), kept up to 1e-6 of a solver step's gravity, g h / substeps "
-                      "(rounding; at least 1e-9 m/s)."};
+                      "fastest approach left (m/s), kept up to 10\u207b\u2076 of a solver step's gravity, g h / substeps "
+                      "(rounding; at least 10\u207b\u2079 m/s)."};
     if (r.total.contacts == 0) {
         v.value = "no contact";
         return v;
