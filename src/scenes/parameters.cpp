@@ -198,7 +198,7 @@ std::vector<Parameter> makeTable() {
                 "Slide 14: correcting one collision may induce new collisions; iterating over "
                 "multiple passes helps. K passes over the contacts in every solver step.",
                 param<&Params::passes>()),
-        real("gravity", "|g|  gravity", "m/s^2", 0.0, 50.0, glm::length(kDefaults.gravity),
+        real("gravity", "|g|  gravity", "m/s\u00b2", 0.0, 50.0, glm::length(kDefaults.gravity),
              "Slide 2: the single field force F = m g, pointing along -z. 9.81 on Earth; 0 "
              "for a gas or a billiard table seen from above.",
              {gravityOf, setGravity}),
