@@ -675,7 +675,9 @@ struct UnderText {
     std::string statusRoom;           // the status as it reads paused: the room it keeps
     std::vector<std::string> alarms;  // the lit alarms' headlines
     float restitutionHeight = 0.0f;   // under β, its measured apex ratios (measuredRestitution)
-    const char* keys = "Esc: all controls  P: pause  R: restart  [ ]: preset  Tab: views only";
+    // Each key with what it does, never split between lines ("[ ]:" / "preset" at 1280 px).
+    const char* keys = "Esc:\u00a0all\u00a0controls  P:\u00a0pause  R:\u00a0restart  [\u00a0]:\u00a0preset  "
+                       "Tab:\u00a0views\u00a0only";
 };
 
 float heightUnderText(const std::vector<const scenes::Parameter*>& sliders, const PanelState& state,
