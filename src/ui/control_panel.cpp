@@ -74,10 +74,14 @@ bool typedTextEntered(const scenes::Parameter& p, bool typing, PanelState& state
             ImTextStrToUtf8(text, sizeof text, field->TextW.Data, field->TextW.Data + field->CurLenW);
             state.typedName = std::string(p.name);
             state.typedText = text;
+            state.typedFrame = ImGui::GetFrameCount();
         }
         return false;
     }
-    if (state.typedName != p.name || !ImGui::IsItemDeactivated()) return false;
+    // Left in this frame, typed into until the last (not a field left long ago, its slider
+    // hidden while typing, and a later drag of the same slider).
+    const bool justLeft = state.typedName == p.name && state.typedFrame == ImGui::GetFrameCount() - 1;
+    if (!justLeft || !ImGui::IsItemDeactivated()) return false;
     state.typedName.clear();
     state.pendingName.clear();  // ImGui's reading of the text, not used
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) return true;

@@ -78,6 +78,7 @@ struct PanelState {
     // A number being typed into a slider (Ctrl+click): whose, and its text so far.
     std::string typedName;
     std::string typedText;
+    int typedFrame = -1;  // ImGui's frame count when it was last typed into
     // The last refused edit, shown under the parameter it was about.
     std::string refusedName;
     std::string refusal;
