@@ -594,6 +594,26 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_overlays() {
 // (selectedOf), "timeline" (timelineOf), "claims" (claimsOf), "suggested_compare" (what the
 // side-by-side field offers, app::suggestedOverrides), "alarms" (alarmsOf), "look":
 // {"color_by", "legend" (what its colours mean), "overlays"}}.
+}  // extern "C"
+
+namespace {
+
+// What the view's colours and marks mean: the colouring's legend, then a line per overlay
+// (the window's legend lines). The contact graph paints the spheres by level: then its line
+// alone says what their colours are (the speed colouring's legend had stood beside grey spheres).
+std::string legendOf(const LiveView& v, std::size_t spheres) {
+    const app::OverlayFlags flags = app::overlayFlags(v.look);
+    std::string legend = flags.graph ? "" : scenes::kColorByLegends[v.look.colorBy];
+    for (const app::LegendLine& line : app::overlayLegend(flags, spheres, v.look.selectedSphere)) {
+        legend += (legend.empty() ? "" : "\n") + line.text;
+    }
+    return legend;
+}
+
+}  // namespace
+
+extern "C" {
+
 EMSCRIPTEN_KEEPALIVE const char* spheres_state() {
     LiveView& v = live();
     if (!v.simulation || !v.session) return answer(Json::object());
@@ -622,7 +642,7 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_state() {
                    {"suggested_compare", app::suggestedOverrides(v.simulation->scene())},
                    {"alarms", alarmsOf(*v.simulation)},
                    {"look", {{"color_by", kColorings[v.look.colorBy]},
-                             {"legend", scenes::kColorByLegends[v.look.colorBy]},
+                             {"legend", legendOf(v, world.size())},
                              {"overlays", app::overlayNames(app::overlayFlags(v.look))}}}});
 }
 

@@ -368,7 +368,7 @@ try {
   await until((s) => s.spheres === 3, 30000);
   await sleep(300);  // a frame draws the state
   const presented = await text('present-state');
-  check('presented, the page says the run is paused, in slow motion', presented === 't = 0.000 s, paused (P runs), slow motion 0.25×',
+  check('presented, the page says the run is paused, in slow motion', presented === 't = 0.000 s, paused (P runs, O steps), slow motion 0.25×',
         presented);
   const rows = async (width, height) => {
     await send('Emulation.setDeviceMetricsOverride', { width, height, deviceScaleFactor: 1, mobile: false });

@@ -206,15 +206,21 @@ def shown(name):
     p = table.get(name)
     return "-" if p is None else p["choices"][int(p["value"])] if p.get("choices") else "%g" % p["value"]
 said = [html.unescape(m) for m in re.findall(r"<p class=\"refusal\" id=\"(?:link-)?refusal\">([^<]*)</p>", dom) if m]
-print("method %s, toi %s, beta %s: %s" % (shown("method"), shown("toi"), shown("beta"), " | ".join(said) or "nothing said"))')
+# What the view refused is said right under the settings refused, under the text, in sight.
+under = re.search(r"id=\"link-refusal\">[^<]*</p>\s*<p class=\"refusal\" id=\"refusal\">[^<]", dom) is not None
+print("method %s, toi %s, beta %s: %s%s" % (shown("method"), shown("toi"), shown("beta"), " | ".join(said) or "nothing said",
+                                            " (under the text)" if under else ""))')
   said_as "live link" "$1" "$said" "$2"
 }
 while read -r query expected; do in_background live_link "$query" "$expected"; done <<'CASES'
 scene=cradle&beta=7&method=velocity method velocity, toi -, beta 1: The link's beta=7: beta = 7 is out of range [0, 1]: opened without it.
-scene=cradle&method=continuous&toi=bisection&beta=7&color-by=foo method continuous, toi bisection, beta 1: The link's beta=7: beta = 7 is out of range [0, 1]: opened without it. | View: color-by foo: expected contact, speed, id or penetration
+scene=cradle&method=continuous&toi=bisection&beta=7&color-by=foo method continuous, toi bisection, beta 1: The link's beta=7: beta = 7 is out of range [0, 1]: opened without it. | View: color-by foo: expected contact, speed, id or penetration (under the text)
+scene=cradle&compare=order=sideways&overlay=bogus&select=9 method velocity, toi -, beta 1: Cannot compare: order=sideways: order = 'sideways' is not a choice; choices: index, reversed, shuffled, colored. View: no overlay 'bogus'; overlays: velocity, contacts, impulses, penetration, trails, graph. select=9: the scene has 5 spheres, numbered from 0 (under the text)
 CASES
 
-# What the view draws: the link's color-by=... and overlay=..., in the run's state; an
+# What the view draws: the link's color-by=... and overlay=..., in the run's state, and what
+# its legend says its colours are (the first line's words up to its colon or comma: the
+# contact graph paints the spheres by level, so its line replaces the colouring's); an
 # overlay it does not know is refused in one line.
 look() {
   said=$(DOM="$(live_dom "$1")" python3 -c '
@@ -223,13 +229,15 @@ dom = os.environ["DOM"]
 m = re.search(r"<pre id=\"state\"[^>]*>([^<]*)</pre>", dom)
 look = (json.loads(html.unescape(m.group(1)) or "{}") if m else {}).get("look", {})
 refusal = re.search(r"<p class=\"refusal\" id=\"refusal\">([^<]*)</p>", dom)
+legend = re.split(r"[:,]", look.get("legend", ""))[0]
 print(html.unescape(refusal.group(1)) if refusal and refusal.group(1) else
-      "%s: %s" % (look.get("color_by"), ", ".join(look.get("overlays", [])) or "none"))')
+      "%s: %s; legend: %s" % (look.get("color_by"), ", ".join(look.get("overlays", [])) or "none", legend))')
   said_as "look" "$1" "$said" "$2"
 }
 while read -r query expected; do in_background look "$query" "$expected"; done <<'CASES'
-scene=cradle contact: none
-scene=shock_pyramid&color-by=speed&overlay=graph,velocity speed: velocity, graph
+scene=cradle contact: none; legend: blue free
+scene=shock_pyramid&color-by=speed&overlay=graph,velocity speed: velocity, graph; legend: velocity
+scene=shock_pyramid&color-by=speed&overlay=graph speed: graph; legend: contact graph
 scene=cradle&overlay=sparkles View: no overlay 'sparkles'; overlays: velocity, contacts, impulses, penetration, trails, graph
 CASES
 
