@@ -556,7 +556,7 @@ std::string claimsPendingLine(const Readouts& r) {
 // What the list leaves out, and where it is measured.
 std::string claimsElsewhereLine(const Readouts& r) {
     return std::to_string(r.claimsElsewhere) + " more of the text's claims name other settings or compare two "
-           "runs: `spheres claims` measures every one.";
+           "runs: the command spheres claims measures every one.";
 }
 
 // Under the text: its claims as this run measured them (scenes/claims.h), folded under a

@@ -541,6 +541,7 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_parameters() {
                                  : p.kind == scenes::ParameterKind::Integer ? "integer"
                                                                             : "real"},
                         {"restarts", p.applies == scenes::Applies::Restart},
+                        {"zero_means", std::string(p.zeroMeans)},  // "auto": what 0 is shown as
                         {"choices", choices},
                         {"choices_shown", shown},
                         {"value", p.get(scene)}});
