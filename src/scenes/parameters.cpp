@@ -428,14 +428,26 @@ std::string parseValue(const Parameter& p, std::string_view text, double& value)
         return std::string(p.name) + " = '" + std::string(text) +
                "' is not a choice; choices: " + detail::joinNames(p.choices);
     }
+    if (!p.zeroMeans.empty() && text == p.zeroMeans) {  // threads=auto, as its slider shows 0
+        value = 0.0;
+        return {};
+    }
     const std::size_t slash = text.find('/');
     if (slash == std::string_view::npos) return parseDecimal(p, text, value);
-    // A fraction, as the texts write h: two decimals around one slash.
+    // A fraction, as the texts write h: two decimals around one slash, each read as one.
+    // A side that does not read says why, of the whole text ("is beyond what a number can hold").
+    const std::string whole = "value '" + std::string(text) + "' for " + std::string(p.name);
+    const std::string notANumber = whole + " is not a number (a decimal, or a fraction such as 1/240)";
+    const auto side = [&](std::string_view part, double& number) -> std::string {
+        if (part.empty() || part.find('/') != std::string_view::npos) return notANumber;
+        const std::string error = parseDecimal(p, part, number);
+        if (error.empty()) return {};
+        const std::string why = error.substr(error.find(" for " + std::string(p.name)) + 5 + p.name.size());
+        return why == " is not a number" ? notANumber : whole + why;
+    };
     double numerator = 0.0, denominator = 0.0;
-    if (!parseNumber(trim(text.substr(0, slash)), numerator) || !parseNumber(trim(text.substr(slash + 1)), denominator)) {
-        return "value '" + std::string(text) + "' for " + std::string(p.name) +
-               " is not a number (a decimal, or a fraction such as 1/240)";
-    }
+    if (std::string error = side(trim(text.substr(0, slash)), numerator); !error.empty()) return error;
+    if (std::string error = side(trim(text.substr(slash + 1)), denominator); !error.empty()) return error;
     value = numerator / denominator;
     if (denominator == 0.0 || !std::isfinite(value)) {
         return "value '" + std::string(text) + "' for " + std::string(p.name) + " divides by zero or overflows";

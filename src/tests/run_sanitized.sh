@@ -38,6 +38,7 @@ for fuzzer in scene_file set; do
   log="$out/fuzz_$fuzzer.log"
   status=0
   wait "${pid[$fuzzer]}" || status=$?
+  unset "pid[$fuzzer]"  # reaped: the trap must not signal a number the system may give another
   runs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || echo 0)
   echo "spheres_fuzz_$fuzzer: $runs inputs in $seconds s, exit $status"
   if [ "$status" -ne 0 ]; then

@@ -428,7 +428,7 @@ TEST(InteractionSession, AFrameWithNoStepBudgetLeftStillStepsOnce) {
 // The inspector's |v| in the unit the texts quote it in: 07's creeping spheres "0.6 cm/s",
 // 22's "0.015 mm/s" and "2 µm/s" read 0.006, 0.000 and 0.000 in m/s at three decimals.
 TEST(InspectorNumbers, ASpeedIsShownInTheUnitThatGivesItsDigits) {
-    EXPECT_EQ(app::speedText(2.345), "2.35 m/s");   // 2.345 is a little under in binary
+    EXPECT_EQ(app::speedText(2.345), "2.35 m/s");
     EXPECT_EQ(app::speedText(-0.126), "0.126 m/s");
     EXPECT_EQ(app::speedText(0.1), "0.1 m/s");
     EXPECT_EQ(app::speedText(0.099), "9.90 cm/s");
@@ -436,6 +436,7 @@ TEST(InspectorNumbers, ASpeedIsShownInTheUnitThatGivesItsDigits) {
     EXPECT_EQ(app::speedText(1.5e-5), "0.015 mm/s");
     EXPECT_EQ(app::speedText(2e-6), "2.00 µm/s");
     EXPECT_EQ(app::speedText(3.4e-9), "0.0034 µm/s");
+    EXPECT_EQ(app::speedText(1e-12), "under 0.001 µm/s");
     EXPECT_EQ(app::speedText(250.0), "250 m/s");
     EXPECT_EQ(app::speedText(0.0), "0 m/s");
     EXPECT_EQ(app::speedText(-0.0), "0 m/s");

@@ -198,6 +198,11 @@ TEST(ApplySetting, TakesAFractionAsTheTextsWriteIt) {
     EXPECT_EQ(applySetting(scene, "substeps=9/2"), "substeps = 4.5 must be a whole number");
     EXPECT_EQ(applySetting(scene, "h=1/0"), "value '1/0' for h divides by zero or overflows");
     EXPECT_EQ(applySetting(scene, "h=1e300/1e-300"), "value '1e300/1e-300' for h divides by zero or overflows");
+    EXPECT_EQ(applySetting(scene, "h=1e309/1e300"),
+              "value '1e309/1e300' for h is beyond what a number can hold (about 1e-308 to 1e308)");
+    EXPECT_EQ(applySetting(scene, "h=nan/1"), "value 'nan/1' for h is not a number (a decimal, or a fraction such as 1/240)");
+    EXPECT_EQ(applySetting(scene, "beta=0,5/2"),
+              "value '0,5/2' for beta is not a number: write decimals with a point (0.5, not 0,5)");
     const std::string notANumber = " is not a number (a decimal, or a fraction such as 1/240)";
     EXPECT_EQ(applySetting(scene, "beta=1/2x"), "value '1/2x' for beta" + notANumber);
     EXPECT_EQ(applySetting(scene, "beta=1/2/3"), "value '1/2/3' for beta" + notANumber);
@@ -208,6 +213,9 @@ TEST(ApplySetting, TakesAFractionAsTheTextsWriteIt) {
     double value = 0.0;
     EXPECT_EQ(scenes::parseValue(*beta, "11/20", value), "");  // a slider's typed text, read alike
     EXPECT_EQ(value, 0.55);
+    EXPECT_EQ(applySetting(scene, "threads=2"), "");
+    EXPECT_EQ(applySetting(scene, "threads=auto"), "");  // what its slider shows for 0
+    EXPECT_EQ(scene.params.threads, 0);
 }
 
 TEST(ApplySetting, RestartParametersNeedGeneratedSpheres) {

@@ -176,21 +176,23 @@ TEST(WindowInteraction, ACountThePileCannotHoldIsRefusedUnderItsSliderAndTheWind
 // A student types beta = 1.5 into its slider (Ctrl+click): it is refused under the slider,
 // and beta stays 0.8 (it counts when Enter is pressed, not key by key: the 1 typed on the
 // way was applied before, and the refusal then left it). Typed 11/20, a fraction as the texts
-// write h, it is 0.55 (ImGui's own reading kept the 11, out of range). Save
+// write h, it is 0.55 (ImGui's own reading kept the 11, out of range). Ctrl+click on h and
+// Enter with nothing typed leave h as it was, not its text as shown (0.01667). Save
 // state writes what the run uses. Positions at 1280x800: beta's slider at (86, 524) in the
-// column's panel as it opens; Save state at (102, 732) once the panel is scrolled to its end
+// column's panel as it opens, h's at (86, 626); Save state at (102, 732) once the panel is scrolled to its end
 // (ten wheel notches), where the line under it ("files go to" the working folder) is one line
 // only in a short folder.
 TEST(WindowInteraction, ANumberTypedIntoASliderCountsWhenEnterIsPressed) {
     if (!haveXvfb() || !haveXdotool()) GTEST_SKIP() << "xvfb-run or xdotool not found";
     const fs::path folder = fs::path(SPHERES_TEST_OUTPUT_DIR) / "window_typed_value";
-    const auto betaTyped = [&](const std::string& value) {
-        std::string name = value;
+    // The scene saved after VALUE was typed into the slider at height Y ("": Enter alone).
+    const auto typedAt = [&](int y, const std::string& value) {
+        std::string name = value.empty() ? "nothing" : value;
         std::replace(name.begin(), name.end(), '/', '_');
-        const fs::path saved = folder / ("beta_" + name + ".json");
+        const fs::path saved = folder / ("typed_" + std::to_string(y) + "_" + name + ".json");
         const std::string keys =
-            "xdotool mousemove 86 524 sleep 0.3 keydown ctrl click 1 keyup ctrl sleep 0.5 key ctrl+a\n"
-            "xdotool type --delay 300 " + value + "\n"
+            "xdotool mousemove 86 " + std::to_string(y) + " sleep 0.3 keydown ctrl click 1 keyup ctrl sleep 0.5 key ctrl+a\n" +
+            (value.empty() ? std::string() : "xdotool type --delay 300 " + value + "\n") +
             "xdotool keydown Return sleep 0.3 keyup Return sleep 1\n"
             "xdotool mousemove 200 500 sleep 0.3 click --repeat 10 --delay 30 5 sleep 1\n"
             "xdotool mousemove 102 732 sleep 0.3 click 1 sleep 1\n";
@@ -199,10 +201,12 @@ TEST(WindowInteraction, ANumberTypedIntoASliderCountsWhenEnterIsPressed) {
                                                  "cp spheres_output/state_0001.json '" + saved.string() + "'; s=$?\n"
                                                  "rm -rf \"$d\"; exit $s\n");
         EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << value << ": Save state was not clicked";
-        return fs::exists(saved) ? scenes::loadScene(saved.string()).params.beta : -1.0;
+        return fs::exists(saved) ? scenes::loadScene(saved.string()).params : physics::Params{};
     };
-    EXPECT_EQ(betaTyped("1.5"), 0.8);
-    EXPECT_EQ(betaTyped("11/20"), 0.55) << "a fraction, as the texts write h, read as its leading number";
+    EXPECT_EQ(typedAt(524, "1.5").beta, 0.8);
+    EXPECT_EQ(typedAt(524, "11/20").beta, 0.55) << "a fraction, as the texts write h, read as its leading number";
+    // Enter on h's field as it opened (0.01667, rounded): h stays 1/60 to the bit.
+    EXPECT_EQ(typedAt(626, "").timeStep, 1.0 / 60.0) << "the rounded text shown was applied";
 }
 
 // A lit alarm's red (255, 77, 64) and its text's edges; not the orange of "behind real time".

@@ -75,6 +75,7 @@ bool typedTextEntered(const scenes::Parameter& p, bool typing, PanelState& state
             state.typedName = std::string(p.name);
             state.typedText = text;
             state.typedFrame = ImGui::GetFrameCount();
+            state.typedChanged = std::string(text) != field->InitialTextA.Data;  // not the value as shown
         }
         return false;
     }
@@ -83,8 +84,9 @@ bool typedTextEntered(const scenes::Parameter& p, bool typing, PanelState& state
     const bool justLeft = state.typedName == p.name && state.typedFrame == ImGui::GetFrameCount() - 1;
     if (!justLeft || !ImGui::IsItemDeactivated()) return false;
     state.typedName.clear();
-    state.pendingName.clear();  // ImGui's reading of the text, not used
-    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) return true;
+    if (state.pendingName == p.name) state.pendingName.clear();  // ImGui's reading of the text, not used
+    // Esc, or the value as it was shown (0.01667 for h = 1/60, rounded): nothing to set.
+    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape)) || !state.typedChanged) return true;
     double value = 0.0;
     const std::string error = scenes::parseValue(p, state.typedText, value);
     if (error.empty()) {
@@ -116,7 +118,7 @@ void parameterWidget(const scenes::Parameter& p, const scenes::Scene& scene, Pan
     if (p.kind == scenes::ParameterKind::Choice) {
         int index = static_cast<int>(value);
         const std::string current = p.choiceShown(static_cast<std::size_t>(index));
-        if (!labelAbove) ImGui::SetNextItemWidth(std::max(ImGui::CalcItemWidth(), choiceWidth(current)));
+        if (state.present && !labelAbove) ImGui::SetNextItemWidth(std::max(ImGui::CalcItemWidth(), choiceWidth(current)));
         if (ImGui::BeginCombo(label.c_str(), current.c_str())) {
             for (std::size_t k = 0; k < p.choices.size(); ++k) {
                 const std::string name = p.choiceShown(k);
@@ -128,7 +130,7 @@ void parameterWidget(const scenes::Parameter& p, const scenes::Scene& scene, Pan
             ImGui::EndCombo();
         }
     } else if (p.kind == scenes::ParameterKind::Integer) {
-        int integer = static_cast<int>(value);
+        int integer = static_cast<int>(std::clamp(value, -2e9, 2e9));  // a seed typed past an int
         const int lo = static_cast<int>(p.min), hi = static_cast<int>(std::min(p.max, 1e9));
         const std::string format = integer == 0 && !p.zeroMeans.empty() ? std::string(p.zeroMeans) : "%d";
         changed = ImGui::SliderInt(label.c_str(), &integer, lo, std::min(hi, lo + 100000), format.c_str());

@@ -79,6 +79,7 @@ struct PanelState {
     std::string typedName;
     std::string typedText;
     int typedFrame = -1;  // ImGui's frame count when it was last typed into
+    bool typedChanged = false;  // its text is not the one it opened with
     // The last refused edit, shown under the parameter it was about.
     std::string refusedName;
     std::string refusal;

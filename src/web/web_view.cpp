@@ -587,14 +587,6 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_overlays() {
     return answer(names);
 }
 
-// The run now: {"time_s", "steps", "spheres", "hash", "paused" (by the page, or by an
-// alarm: a value not finite), "time_scale", "camera": {"azimuth_rad", "elevation_rad",
-// "distance_m"}, "kinetic_J", "potential_J", "momentum_kg_m_s" ([x, y, z], physics::momentumShown), "penetration_r",
-// "behind_real_time", "views" (side by side: each view's label lines and its presented ones, viewsOf), "only_view_a"
-// (side by side: the parameters every other view sets, Comparison::setInEveryView), "selected"
-// (selectedOf), "timeline" (timelineOf), "claims" (claimsOf), "suggested_compare" (what the
-// side-by-side field offers, app::suggestedOverrides), "alarms" (alarmsOf), "look":
-// {"color_by", "legend" (what its colours mean), "overlays"}}.
 }  // extern "C"
 
 namespace {
@@ -615,6 +607,14 @@ std::string legendOf(const LiveView& v, std::size_t spheres) {
 
 extern "C" {
 
+// The run now: {"time_s", "steps", "spheres", "hash", "paused" (by the page, or by an
+// alarm: a value not finite), "time_scale", "camera": {"azimuth_rad", "elevation_rad",
+// "distance_m"}, "kinetic_J", "potential_J", "momentum_kg_m_s" ([x, y, z], physics::momentumShown), "penetration_r",
+// "behind_real_time", "views" (side by side: each view's label lines and its presented ones, viewsOf), "only_view_a"
+// (side by side: the parameters every other view sets, Comparison::setInEveryView), "selected"
+// (selectedOf), "timeline" (timelineOf), "claims" (claimsOf), "suggested_compare" (what the
+// side-by-side field offers, app::suggestedOverrides), "alarms" (alarmsOf), "look":
+// {"color_by", "legend" (what its colours and overlays mean, legendOf), "overlays"}}.
 EMSCRIPTEN_KEEPALIVE const char* spheres_state() {
     LiveView& v = live();
     if (!v.simulation || !v.session) return answer(Json::object());

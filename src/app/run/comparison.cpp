@@ -298,7 +298,9 @@ std::vector<ViewReadout> viewReadouts(const Simulation& primary, const Compariso
         // Scenes the meter follows whole (not the selected sphere alone: a column's would read
         // "–" for ever, and the label would change size with the selection).
         readout.bouncesMeasured = followsBounces(world, run.params(), -1);
-        if (run.restitution().latest()) readout.apexRatio = run.restitution().latest()->ratio();
+        // The last bounce at the β set now: one of an earlier β read "0.640 (β² 0.250)".
+        const auto& latest = run.restitution().latest();
+        if (latest && latest->beta == run.params().beta) readout.apexRatio = latest->ratio();
         // Its number where the bounces are one ball's: the texts count them ("0.47 at the fifth").
         if (world.size() == 1) readout.apexBounce = run.restitution().latestNumber();
         readout.betaSquared = run.params().beta * run.params().beta;

@@ -74,7 +74,7 @@ std::string restitutionNote(const Simulation& simulation) {
     }
     if (!world.recordContacts) return "(not measured above " + std::to_string(kMaxRecordSpheres) + " spheres)";
     const std::optional<BounceMeasurement>& latest = simulation.restitution().latest();
-    if (simulation.restitution().tooSlowCount() > 0 && latest) {
+    if (simulation.restitution().tooSlowCount() > 0 && latest && latest->beta == simulation.params().beta) {
         // A large h: one step's travel is a fair part of the height, the ratio measures h
         // as much as beta. Said with its value: comparing methods at one h is a lesson too.
         const physics::Params& params = simulation.params();

@@ -155,6 +155,7 @@ std::string speedText(double metresPerSecond) {
     if (speed == 0.0 || !std::isfinite(speed)) return speed == 0.0 ? "0 m/s" : "not finite";
     const Unit& unit = *std::find_if(std::begin(kUnits), std::end(kUnits), [&](const Unit& u) { return speed >= u.from; });
     const double shown = speed / unit.scale;
+    if (shown < 1e-3) return "under 0.001 µm/s";  // "1e-06 µm/s" said nothing a class reads
     char text[48];
     std::snprintf(text, sizeof text, shown >= 100.0 ? "%.0f %s" : shown >= 10.0 ? "%.1f %s" : shown >= 1.0 ? "%.2f %s" : "%.3g %s",
                   shown, unit.name);
