@@ -173,40 +173,44 @@ TEST(WindowInteraction, ACountThePileCannotHoldIsRefusedUnderItsSliderAndTheWind
     EXPECT_GT(fraction(image, kSceneX0 + 180, 220, 940, 480, saturated), 0.2);
 }
 
-// A student types beta = 1.5 into its slider (Ctrl+click): it is refused under the slider,
-// and beta stays 0.8 (it counts when Enter is pressed, not key by key: the 1 typed on the
-// way was applied before, and the refusal then left it). Typed 11/20, a fraction as the texts
-// write h, it is 0.55 (ImGui's own reading kept the 11, out of range). Ctrl+click on h and
-// Enter with nothing typed leave h as it was, not its text as shown (0.01667). Save
-// state writes what the run uses. Positions at 1280x800: beta's slider at (86, 524) in the
-// column's panel as it opens, h's at (86, 626); Save state at (102, 732) once the panel is scrolled to its end
-// (ten wheel notches), where the line under it ("files go to" the working folder) is one line
-// only in a short folder.
+// A student types into a slider (Ctrl+click); it counts when Enter is pressed, not key by key.
+// In one session on the column, paused: Enter on h's field as it opened, nothing typed,
+// leaves h as it was, not its text as shown (0.01667); 11/20 typed into beta, a fraction as
+// the texts write h, is 0.55 (ImGui's own reading kept the 11, out of range); Save state.
+// Then beta = 1.5 is refused under the slider and beta stays 0.55 (key by key, the 1 typed
+// on the way was applied before, and the refusal then left it); Save state again. Positions
+// at 1280x800: beta's slider at (86, 524) and h's at (86, 626) in the column's panel as it
+// opens; Save state at (102, 732) once the panel is scrolled to its end (ten wheel notches),
+// where the line under it ("files go to" the working folder) is one line only in a short
+// folder, and at (102, 711) once a line says what it wrote; ten notches up bring the sliders back.
 TEST(WindowInteraction, ANumberTypedIntoASliderCountsWhenEnterIsPressed) {
     if (!haveXvfb() || !haveXdotool()) GTEST_SKIP() << "xvfb-run or xdotool not found";
     const fs::path folder = fs::path(SPHERES_TEST_OUTPUT_DIR) / "window_typed_value";
-    // The scene saved after VALUE was typed into the slider at height Y ("": Enter alone).
-    const auto typedAt = [&](int y, const std::string& value) {
-        std::string name = value.empty() ? "nothing" : value;
-        std::replace(name.begin(), name.end(), '/', '_');
-        const fs::path saved = folder / ("typed_" + std::to_string(y) + "_" + name + ".json");
-        const std::string keys =
-            "xdotool mousemove 86 " + std::to_string(y) + " sleep 0.3 keydown ctrl click 1 keyup ctrl sleep 0.5 key ctrl+a\n" +
-            (value.empty() ? std::string() : "xdotool type --delay 300 " + value + "\n") +
-            "xdotool keydown Return sleep 0.3 keyup Return sleep 1\n"
-            "xdotool mousemove 200 500 sleep 0.3 click --repeat 10 --delay 30 5 sleep 1\n"
-            "xdotool mousemove 102 732 sleep 0.3 click 1 sleep 1\n";
-        const int status = runScript(folder, "d=$(mktemp -d /tmp/stXXXXXX); cd \"$d\"\n" +
-                                                 sessionOnTheColumn("--paused", keys) +
-                                                 "cp spheres_output/state_0001.json '" + saved.string() + "'; s=$?\n"
-                                                 "rm -rf \"$d\"; exit $s\n");
-        EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << value << ": Save state was not clicked";
-        return fs::exists(saved) ? scenes::loadScene(saved.string()).params : physics::Params{};
+    const auto typeInto = [](int y, const std::string& value) {  // "": Enter alone
+        return "xdotool mousemove 86 " + std::to_string(y) + " sleep 0.3 keydown ctrl click 1 keyup ctrl sleep 0.5 key ctrl+a\n" +
+               (value.empty() ? std::string() : "xdotool type --delay 300 " + value + "\n") +
+               "xdotool keydown Return sleep 0.3 keyup Return sleep 1\n";
     };
-    EXPECT_EQ(typedAt(524, "1.5").beta, 0.8);
-    EXPECT_EQ(typedAt(524, "11/20").beta, 0.55) << "a fraction, as the texts write h, read as its leading number";
-    // Enter on h's field as it opened (0.01667, rounded): h stays 1/60 to the bit.
-    EXPECT_EQ(typedAt(626, "").timeStep, 1.0 / 60.0) << "the rounded text shown was applied";
+    const auto saveState = [](int y) {
+        return "xdotool mousemove 200 500 sleep 0.3 click --repeat 10 --delay 30 5 sleep 1\n"
+               "xdotool mousemove 102 " + std::to_string(y) + " sleep 0.3 click 1 sleep 1\n"
+               "xdotool mousemove 200 500 sleep 0.3 click --repeat 10 --delay 30 4 sleep 1\n";
+    };
+    const fs::path first = folder / "typed_first.json", second = folder / "typed_second.json";
+    fs::remove(first);
+    fs::remove(second);
+    // The second Save state a line higher: "wrote .../state_0001.json" is under it then.
+    const std::string keys = typeInto(626, "") + typeInto(524, "11/20") + saveState(732) + typeInto(524, "1.5") + saveState(711);
+    const int status = runScript(folder, "d=$(mktemp -d /tmp/stXXXXXX); cd \"$d\"\n" + sessionOnTheColumn("--paused", keys) +
+                                             "cp spheres_output/state_0001.json '" + first.string() + "' && "
+                                             "cp spheres_output/state_0002.json '" + second.string() + "'; s=$?\n"
+                                             "rm -rf \"$d\"; exit $s\n");
+    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "Save state was not clicked twice";
+    ASSERT_TRUE(fs::exists(first) && fs::exists(second));
+    const physics::Params typed = scenes::loadScene(first.string()).params;
+    EXPECT_EQ(typed.timeStep, 1.0 / 60.0) << "the rounded text shown was applied";
+    EXPECT_EQ(typed.beta, 0.55) << "a fraction, as the texts write h, read as its leading number";
+    EXPECT_EQ(scenes::loadScene(second.string()).params.beta, 0.55) << "1.5 was not refused whole";
 }
 
 // A lit alarm's red (255, 77, 64) and its text's edges; not the orange of "behind real time".

@@ -17,7 +17,8 @@ public:
     static constexpr int kCapacity = 600;  // samples kept
 
     void clear();
-    // The energies, momentum and penetration from `d`; `inContact`: the most spheres whose
+    // The energies, momentum and penetration from `d` (Simulation gives the deepest of the
+    // frame's steps in small scenes); `inContact`: the most spheres whose
     // contact one solver step of the frame answered (StepStats::mostSpheresInContact);
     // `bounces`: contacts answered as a bounce since restart (Simulation::bouncesSinceRestart).
     void add(double time, const physics::Diagnostics& d, std::uint64_t inContact, std::uint64_t bounces);

@@ -37,6 +37,7 @@ void Simulation::startFrom(physics::World world) {
     behindFor_ = 0.0;
     history_.clear();
     mostInContact_ = 0;
+    deepestInFrame_ = 0.0;
     overlays_.reset();
     ghosts_.reset();
     alarms_.clear();
@@ -276,6 +277,9 @@ void Simulation::afterStep() {
     }
     bounces_ += lastStats_.collisions;
     mostInContact_ = std::max(mostInContact_, lastStats_.mostSpheresInContact);
+    if (world_.size() <= kPenetrationEachStepUpTo) {
+        deepestInFrame_ = std::max(deepestInFrame_, physics::measure(world_, scene_.params).maxPenetration);
+    }
     if (lastStats_.impacts.contacts > 0) {
         impacts_.add(lastStats_.impacts);
         if (impactsBefore_.size() == kMostImpactRecordsKept) {
@@ -326,8 +330,11 @@ void Simulation::measureNow() {
     diagnostics_ = physics::measure(world_, scene_.params);
     alarms_.checkMeasurement(diagnostics_, scene_.params, world_.time);
     alarms_.checkRest(world_, scene_.params);
-    history_.add(world_.time, diagnostics_, mostInContact_, bounces_);
+    physics::Diagnostics sampled = diagnostics_;
+    sampled.maxPenetration = std::max(sampled.maxPenetration, deepestInFrame_);
+    history_.add(world_.time, sampled, mostInContact_, bounces_);
     mostInContact_ = 0;
+    deepestInFrame_ = 0.0;
 }
 
 }  // namespace app

@@ -159,6 +159,11 @@ private:
     // answered (a bounce's contact lasts a solver step, gone by the frame's end: counted
     // there, 02's plot of the contacts had shown 2 of 16 bounces).
     std::uint64_t mostInContact_ = 0;
+    // The plot's "deepest penetration": the deepest at the end of any time step of the frame,
+    // in scenes of up to kPenetrationEachStepUpTo spheres (a page drawing 30 frames a second
+    // runs two steps of 1/60 s a frame, and 01's plot showed 3 of its 6 bounces' 39 %).
+    static constexpr std::size_t kPenetrationEachStepUpTo = 100;
+    double deepestInFrame_ = 0.0;  // of r
     OverlayFlags overlayFlags_;
     int selected_ = -1;
     OverlayState overlays_;
