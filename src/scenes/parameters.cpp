@@ -89,6 +89,11 @@ Parameter restart(Parameter p) {
     return p;
 }
 
+Parameter shownAsFraction(Parameter p) {
+    p.shownAsFraction = true;
+    return p;
+}
+
 Parameter zeroMeaning(std::string_view meaning, Parameter p) {
     p.zeroMeans = meaning;
     return p;
@@ -186,10 +191,10 @@ std::vector<Parameter> makeTable() {
              "response, a static sphere-sphere contact damps the relative tangential velocity "
              "instead (equal and opposite impulses), so momentum stays exact.",
              param<&Params::mu>()),
-        real("h", "h  time step", "s", 1e-4, 0.1, kDefaults.timeStep,
+        shownAsFraction(real("h", "h  time step", "s", 1e-4, 0.1, kDefaults.timeStep,
              "Slide 2: v \u2190 v + h g, p \u2190 p + h v. One step of the fixed-step loop, run as "
              "`substeps` solver steps of h / substeps. A smaller step penetrates less.",
-             param<&Params::timeStep>()),
+             param<&Params::timeStep>())),
         integer("substeps", "substeps per step", 1, 64, kDefaults.substeps,
                 "Solver steps per time step h, each of h / substeps: reducing the time step "
                 "helps (slide 14), at the cost of more work per frame.",
@@ -471,6 +476,13 @@ const Parameter* findParameter(std::string_view name) {
         if (p.name == name) return &p;
     }
     return nullptr;
+}
+
+std::string fractionShown(const Parameter& p, double value) {
+    if (!p.shownAsFraction || !(value > 0.0)) return "";
+    const double n = std::round(1.0 / value);
+    if (n < 2.0 || n > 100000.0 || std::abs(1.0 / n - value) > 4e-16 * value) return "";
+    return "1/" + std::to_string(static_cast<long>(n));
 }
 
 std::string formatNumber(double value) {

@@ -46,6 +46,8 @@ struct Parameter {
     // Integer: what the slider shows for 0 when 0 means something else than none
     // (threads = 0: one per core); "": the number. A literal, shown as an ImGui format.
     std::string_view zeroMeans = {};
+    // Real: shown as 1/N where it is one, as the texts write h ("1/240", not "0.004167").
+    bool shownAsFraction = false;
     // Choice: what the UI shows beside each name ("" nothing; empty: none at all), such as
     // an order that is not the lecture's.
     std::vector<std::string_view> choiceNotes;
@@ -89,6 +91,10 @@ int choiceIndex(const Parameter& parameter, std::string_view name);
 // The current value as applySetting reads it back: a choice name, a whole
 // number, or the shortest decimal that round-trips the double. No unit.
 std::string formatValue(const Parameter& parameter, const Scene& scene);
+
+// "1/N" when `parameter` is shown as a fraction and `value` is 1/N to the last bit or
+// two (N from 2 to 100 000), else "".
+std::string fractionShown(const Parameter& parameter, double value);
 
 // The shortest decimal text that reads back as the same double.
 std::string formatNumber(double value);

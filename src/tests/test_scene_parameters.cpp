@@ -218,6 +218,21 @@ TEST(ApplySetting, TakesAFractionAsTheTextsWriteIt) {
     EXPECT_EQ(scene.params.threads, 0);
 }
 
+// h is shown as the texts write it where it is 1/N (the slider read 0.01667 for 1/60); the
+// other numbers, and an h that is no such fraction, as decimals.
+TEST(ParameterTable, TheTimeStepIsShownAsTheFractionItIs) {
+    const scenes::Parameter& h = *scenes::findParameter("h");
+    EXPECT_EQ(scenes::fractionShown(h, 1.0 / 60.0), "1/60");
+    EXPECT_EQ(scenes::fractionShown(h, 1.0 / 240.0), "1/240");
+    EXPECT_EQ(scenes::fractionShown(h, 0.001), "1/1000");
+    EXPECT_EQ(scenes::fractionShown(h, 0.01667), "");
+    EXPECT_EQ(scenes::fractionShown(h, 0.0015), "");
+    EXPECT_EQ(scenes::fractionShown(*scenes::findParameter("beta"), 0.5), "") << "only h";
+    double typed = 0.0;
+    ASSERT_EQ(scenes::parseValue(h, scenes::fractionShown(h, 1.0 / 240.0), typed), "");
+    EXPECT_EQ(typed, 1.0 / 240.0) << "what is shown reads back as the same h";
+}
+
 TEST(ApplySetting, RestartParametersNeedGeneratedSpheres) {
     Scene scene;
     EXPECT_EQ(applySetting(scene, "count=10"), "scene has no generated spheres");

@@ -137,8 +137,11 @@ void parameterWidget(const scenes::Parameter& p, const scenes::Scene& scene, Pan
         value = integer;
     } else {
         const bool logarithmic = p.min > 0.0 && p.max / p.min > 100.0;
+        // h as the texts write it, "1/60"; a format without a number (Ctrl+click opens empty).
+        const std::string fraction = scenes::fractionShown(p, value);
         changed = ImGui::SliderScalar(label.c_str(), ImGuiDataType_Double, &value, &p.min, &p.max,
-                                      "%.4g", logarithmic ? ImGuiSliderFlags_Logarithmic : 0);
+                                      fraction.empty() ? "%.4g" : fraction.c_str(),
+                                      logarithmic ? ImGuiSliderFlags_Logarithmic : 0);
     }
     // A number typed into the slider (Ctrl+click) counts once Enter is pressed, not key by
     // key: typing 1.5 for beta would apply 1 on the way (and a refusal of 1.5 leave it).

@@ -542,6 +542,7 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_parameters() {
                                                                             : "real"},
                         {"restarts", p.applies == scenes::Applies::Restart},
                         {"zero_means", std::string(p.zeroMeans)},  // "auto": what 0 is shown as
+                        {"as_fraction", p.shownAsFraction},         // h: "1/60" where it is one
                         {"choices", choices},
                         {"choices_shown", shown},
                         {"value", p.get(scene)}});
