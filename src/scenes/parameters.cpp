@@ -447,7 +447,9 @@ std::string parseValue(const Parameter& p, std::string_view text, double& value)
         if (part.empty() || part.find('/') != std::string_view::npos) return notANumber;
         const std::string error = parseDecimal(p, part, number);
         if (error.empty()) return {};
-        const std::string why = error.substr(error.find(" for " + std::string(p.name)) + 5 + p.name.size());
+        const std::size_t name = error.find(" for " + std::string(p.name));
+        if (name == std::string::npos) return error;  // "seed = 9007199254740993 is out of range [...]"
+        const std::string why = error.substr(name + 5 + p.name.size());
         return why == " is not a number" ? notANumber : whole + why;
     };
     double numerator = 0.0, denominator = 0.0;

@@ -200,6 +200,7 @@ TEST(ApplySetting, TakesAFractionAsTheTextsWriteIt) {
     EXPECT_EQ(applySetting(scene, "h=1e300/1e-300"), "value '1e300/1e-300' for h divides by zero or overflows");
     EXPECT_EQ(applySetting(scene, "h=1e309/1e300"),
               "value '1e309/1e300' for h is beyond what a number can hold (about 1e-308 to 1e308)");
+    EXPECT_EQ(applySetting(scene, "seed=9007199254740993/1"), "seed = 9007199254740993 is out of range [0, 9007199254740992]");
     EXPECT_EQ(applySetting(scene, "h=nan/1"), "value 'nan/1' for h is not a number (a decimal, or a fraction such as 1/240)");
     EXPECT_EQ(applySetting(scene, "beta=0,5/2"),
               "value '0,5/2' for beta is not a number: write decimals with a point (0.5, not 0,5)");
