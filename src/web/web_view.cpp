@@ -176,7 +176,8 @@ const physics::ContactEvent* explained(LiveView& v) {
     return &events[std::size_t(v.explainIndex)];
 }
 
-// The selected sphere, as the window's inspector shows it: {"index", "p" (m), "v" (m/s),
+// The selected sphere, as the window's inspector shows it: {"index", "p" (m), "v" (m/s), "speed"
+// (|v| in the unit that gives it digits, app::speedText),
 // "r" (m), "m" (kg), "state", "level" (the contact graph's, with shock propagation or its
 // overlay; -1 none; absent otherwise), "contacts": {"count", "recorded", "frame_recalled"
 // (Session::Contacts'), "index", "title", "lines": [{"kind", "text"}]} (the slides' formulas
@@ -190,6 +191,7 @@ Json selectedOf(LiveView& v) {
     Json sphere = {{"index", i},
                    {"p", vec(world.position[std::size_t(i)])},
                    {"v", vec(world.velocity[std::size_t(i)])},
+                   {"speed", app::speedText(glm::length(world.velocity[std::size_t(i)]))},  // as the window's |v|
                    {"r", world.radius[std::size_t(i)]},
                    {"m", world.mass[std::size_t(i)]},
                    {"state", app::contactStateName(world.contactState[std::size_t(i)])}};

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <limits>
 
 #include <glm/geometric.hpp>
@@ -227,6 +228,23 @@ void typicalSphere(const physics::World& world, double* radius, double* mass) {
     constexpr double kWaterDensity = 1000.0;  // kg/m^3
     *radius = world.size() ? world.radius.back() : 0.05;
     *mass = world.size() ? world.mass.back() : kWaterDensity * 4.0 / 3.0 * kPi * std::pow(*radius, 3);
+}
+
+std::string speedText(double metresPerSecond) {
+    struct Unit {
+        double from, scale;  // m/s at and above which it is used; its size in m/s
+        const char* name;
+    };
+    static constexpr Unit kUnits[] = {{0.1, 1.0, "m/s"}, {1e-3, 1e-2, "cm/s"}, {1e-5, 1e-3, "mm/s"}, {0.0, 1e-6, "µm/s"}};
+    const double speed = std::abs(metresPerSecond);
+    if (speed == 0.0 || !std::isfinite(speed)) return speed == 0.0 ? "0 m/s" : "not finite";
+    const Unit& unit = *std::find_if(std::begin(kUnits), std::end(kUnits), [&](const Unit& u) { return speed >= u.from; });
+    const double shown = speed / unit.scale;
+    if (shown < 1e-3) return "under 0.001 µm/s";  // "1e-06 µm/s" said nothing a class reads
+    char text[48];
+    std::snprintf(text, sizeof text, shown >= 100.0 ? "%.0f %s" : shown >= 10.0 ? "%.1f %s" : shown >= 1.0 ? "%.2f %s" : "%.3g %s",
+                  shown, unit.name);
+    return text;
 }
 
 }  // namespace app

@@ -129,4 +129,10 @@ void addShot(physics::World& world, const Shot& shot);
 // of its last sphere, or 0.05 m of water when it has none.
 void typicalSphere(const physics::World& world, double* radius, double* mass);
 
+// The inspector's |v| (the window's and the page's), three digits in the unit that shows them: "2.35 m/s", "0.6 cm/s",
+// "0.015 mm/s", "2.10 µm/s" (07's text quotes 0.6 cm/s, 22's 0.015 mm/s and 2 µm/s, and
+// 09's column a small stored speed: all 0.000 in m/s at three decimals), "0 m/s" at rest,
+// "under 0.001 µm/s" below.
+std::string speedText(double metresPerSecond);
+
 }  // namespace app

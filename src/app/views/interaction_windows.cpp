@@ -145,23 +145,6 @@ void drawMessage(const glm::vec4& scene, const ToolWindowsState& state) {
     ImGui::End();
 }
 
-std::string speedText(double metresPerSecond) {
-    struct Unit {
-        double from, scale;  // m/s at and above which it is used; its size in m/s
-        const char* name;
-    };
-    static constexpr Unit kUnits[] = {{0.1, 1.0, "m/s"}, {1e-3, 1e-2, "cm/s"}, {1e-5, 1e-3, "mm/s"}, {0.0, 1e-6, "µm/s"}};
-    const double speed = std::abs(metresPerSecond);
-    if (speed == 0.0 || !std::isfinite(speed)) return speed == 0.0 ? "0 m/s" : "not finite";
-    const Unit& unit = *std::find_if(std::begin(kUnits), std::end(kUnits), [&](const Unit& u) { return speed >= u.from; });
-    const double shown = speed / unit.scale;
-    if (shown < 1e-3) return "under 0.001 µm/s";  // "1e-06 µm/s" said nothing a class reads
-    char text[48];
-    std::snprintf(text, sizeof text, shown >= 100.0 ? "%.0f %s" : shown >= 10.0 ? "%.1f %s" : shown >= 1.0 ? "%.2f %s" : "%.3g %s",
-                  shown, unit.name);
-    return text;
-}
-
 float drawInspector(const Placement& placement, const physics::World& world, int selected, char view, bool paused,
                     int graphLevel, ToolWindowsState& state, ToolActions& actions) {
     if (selected < 0 || static_cast<std::size_t>(selected) >= world.size()) return 0.0f;

@@ -77,12 +77,6 @@ struct Placement {
     float height = 0.0f;     // ImGui units; 0: as tall as its content (up to maxHeight)
 };
 
-// The inspector's |v|, three digits in the unit that shows them: "2.35 m/s", "0.6 cm/s",
-// "0.015 mm/s", "2.10 µm/s" (07's text quotes 0.6 cm/s, 22's 0.015 mm/s and 2 µm/s, and
-// 09's column a small stored speed: all 0.000 in m/s at three decimals), "0 m/s" at rest,
-// "under 0.001 µm/s" below.
-std::string speedText(double metresPerSecond);
-
 // The selected sphere's p, v, r, m, editable while paused, and its level in slide 14's
 // contact graph (`graphLevel`: -1 reaches no plane; kLevelNotShown: not shown); `view`
 // names the view side by side whose sphere it is ('\0': one view). Returns the height its
