@@ -412,11 +412,15 @@ void readoutsBody(const Readouts& r, const PanelState& state, PanelActions& acti
         if (!colours.empty()) ImGui::TextWrapped("%s", colours.c_str());
         ImGui::Separator();
     }
-    ImGui::Text("touching now: %llu sphere + %llu wall contacts", static_cast<unsigned long long>(d.sphereContacts),
-                static_cast<unsigned long long>(d.wallContacts));
     // Answers, not contacts: 07's 4 resting wall contacts read "76 static" under "0 sphere + 4 wall".
-    ImGui::Text("last step answered %llu bounces, %llu static", static_cast<unsigned long long>(r.stats.collisions),
-                static_cast<unsigned long long>(r.stats.staticContacts));
+    // Wrapped: the dock beside the view is narrow.
+    char line[128];
+    std::snprintf(line, sizeof line, "touching now: %llu sphere + %llu wall contacts",
+                  static_cast<unsigned long long>(d.sphereContacts), static_cast<unsigned long long>(d.wallContacts));
+    textWrappedAtSpaces(line);
+    std::snprintf(line, sizeof line, "last step answered %llu bounces, %llu static",
+                  static_cast<unsigned long long>(r.stats.collisions), static_cast<unsigned long long>(r.stats.staticContacts));
+    textWrappedAtSpaces(line);
     tooltip("Contact answers in the last step, counted in every pass and substep (a contact answered in each of "
             "4 substeps and 2 passes counts 8). A bounce is a contact whose relative normal speed is above "
             "\u03b5; a static contact is at or below it (slide 13).");
