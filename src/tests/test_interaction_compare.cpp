@@ -3,6 +3,7 @@
 // it does; `spheres capture --compare` writes frames with the two views.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <set>
 #include <string>
 #include <vector>
@@ -359,6 +360,40 @@ TEST_F(CaptureCompare, PresentedLabelsOnASmallProjectorKeepTheirWordsWhole) {
         ASSERT_EQ(manifest["frames"].size(), 1u);
         EXPECT_EQ(manifest["frames"][0]["label_words_broken"], 0) << preset;
         EXPECT_EQ(manifest["frames"][0]["labels_cut"], 0) << preset;
+    }
+}
+
+// Presented with four views, each view starts right under its label: the labels' room had a
+// whole line to spare (for digits that might wrap one more), a blank band of 48 px under
+// every label at 1920 x 1080, and the four views of 22 at 1280 x 800 went into one column of
+// small boxes. The room is now what the lines take wrapped a font narrower.
+TEST_F(CaptureCompare, PresentedViewsStartRightUnderTheirLabels) {
+    for (const char* size : {"1920x1080", "1280x800"}) {
+        const std::string out = capture_test::freshFolder(std::string("compare_under_labels_") + size);
+        app::CaptureOptions options = capture_test::smallCapture("22_shock_pyramid", out, platform::HeadlessBackend::Auto);
+        options.size = size;
+        options.withUi = true;
+        options.present = true;
+        options.at = "60";
+        ASSERT_EQ(app::runCapture(options), 0) << size;
+        const nlohmann::json manifest = capture_test::readManifest(out);
+        const int height = manifest["size"][1];
+        const auto& views = manifest["layout"]["views"];
+        ASSERT_EQ(views.size(), 4u) << size;
+        EXPECT_EQ(views[0][1], views[1][1]) << size << ": A and B in one row (a 2 x 2 grid)";
+        EXPECT_EQ(manifest["frames"][0]["labels_cut"], 0) << size;
+        for (int k = 0; k < 4; ++k) {
+            const int x = views[k][0], top = height - int(views[k][1]) - int(views[k][3]);  // px from the window's top
+            int labelBottom = -1;  // the nearest drawn rectangle above the view, starting where it does
+            for (const auto& drawn : manifest["layout"]["ui_drawn"]) {
+                const float bottom = float(drawn[1]) + float(drawn[3]);
+                if (std::abs(float(drawn[0]) - float(x)) <= 2.0f && bottom <= float(top) + 1.0f) {
+                    labelBottom = std::max(labelBottom, int(bottom));
+                }
+            }
+            ASSERT_GE(labelBottom, 0) << size << ": no label above view " << k;
+            EXPECT_LE(top - labelBottom, 6) << size << ": view " << k << " starts " << top - labelBottom << " px under its label";
+        }
     }
 }
 

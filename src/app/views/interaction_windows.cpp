@@ -338,12 +338,15 @@ float labelsHeight(const std::vector<ViewLabel>& labels, float width) {
     const float text = std::max(width - 2.0f * style.WindowPadding.x, ImGui::GetFontSize() * 4.0f);  // units
     float type = 1.0f;  // as drawViewLabels sets it at this width: every label alike
     for (const ViewLabel& label : labels) type = std::min(type, wholeWordsScale(label, text));
+    // Lines wrapped a font narrower than drawn: changing digits and marks (- to a check) may
+    // widen a line by that much, and the room then holds the line it wraps into. (A whole
+    // line to spare left a blank band under every presented label: 48 px at 1920 x 1080.)
+    const float wrapWidth = std::max(text / type - ImGui::GetFontSize(), ImGui::GetFontSize());  // units, unscaled
     float tallest = 0.0f;
     for (const ViewLabel& label : labels) {
-        // A line to spare: changing digits and marks (- to a check) may wrap one more.
-        float height = 2.0f * style.WindowPadding.y + type * ImGui::GetTextLineHeight();
+        float height = 2.0f * style.WindowPadding.y - style.ItemSpacing.y;
         for (const std::string& line : label.lines) {
-            height += type * ImGui::CalcTextSize(ui::wrapAtSpaces(line, text / type).c_str()).y + style.ItemSpacing.y;
+            height += type * ImGui::CalcTextSize(ui::wrapAtSpaces(line, wrapWidth).c_str()).y + style.ItemSpacing.y;
         }
         tallest = std::max(tallest, height);
     }
