@@ -363,6 +363,23 @@ TEST_F(CaptureCompare, PresentedLabelsOnASmallProjectorKeepTheirWordsWhole) {
     }
 }
 
+// The label drawn above view k of a capture's manifest (the nearest rectangle of the UI
+// drawn above the view, starting where it does): x, y (from the top), width, height in px;
+// empty when there is none.
+std::vector<float> labelAbove(const nlohmann::json& manifest, int k) {
+    const auto& view = manifest["layout"]["views"][k];
+    const float top = float(manifest["size"][1]) - float(view[1]) - float(view[3]);  // px from the window's top
+    std::vector<float> found;
+    for (const auto& drawn : manifest["layout"]["ui_drawn"]) {
+        const float bottom = float(drawn[1]) + float(drawn[3]);
+        if (std::abs(float(drawn[0]) - float(view[0])) <= 2.0f && bottom <= top + 1.0f &&
+            (found.empty() || bottom > found[1] + found[3])) {
+            found = {float(drawn[0]), float(drawn[1]), float(drawn[2]), float(drawn[3])};
+        }
+    }
+    return found;
+}
+
 // Presented with four views, each view starts right under its label: the labels' room had a
 // whole line to spare (for digits that might wrap one more), a blank band of 48 px under
 // every label at 1920 x 1080, and the four views of 22 at 1280 x 800 went into one column of
@@ -377,24 +394,38 @@ TEST_F(CaptureCompare, PresentedViewsStartRightUnderTheirLabels) {
         options.at = "60";
         ASSERT_EQ(app::runCapture(options), 0) << size;
         const nlohmann::json manifest = capture_test::readManifest(out);
-        const int height = manifest["size"][1];
         const auto& views = manifest["layout"]["views"];
         ASSERT_EQ(views.size(), 4u) << size;
         EXPECT_EQ(views[0][1], views[1][1]) << size << ": A and B in one row (a 2 x 2 grid)";
         EXPECT_EQ(manifest["frames"][0]["labels_cut"], 0) << size;
         for (int k = 0; k < 4; ++k) {
-            const int x = views[k][0], top = height - int(views[k][1]) - int(views[k][3]);  // px from the window's top
-            int labelBottom = -1;  // the nearest drawn rectangle above the view, starting where it does
-            for (const auto& drawn : manifest["layout"]["ui_drawn"]) {
-                const float bottom = float(drawn[1]) + float(drawn[3]);
-                if (std::abs(float(drawn[0]) - float(x)) <= 2.0f && bottom <= float(top) + 1.0f) {
-                    labelBottom = std::max(labelBottom, int(bottom));
-                }
-            }
-            ASSERT_GE(labelBottom, 0) << size << ": no label above view " << k;
-            EXPECT_LE(top - labelBottom, 6) << size << ": view " << k << " starts " << top - labelBottom << " px under its label";
+            const std::vector<float> label = labelAbove(manifest, k);
+            ASSERT_FALSE(label.empty()) << size << ": no label above view " << k;
+            const float top = float(manifest["size"][1]) - float(views[k][1]) - float(views[k][3]);
+            EXPECT_LE(top - (label[1] + label[3]), 6.0f) << size << ": view " << k << " starts that far under its label";
         }
     }
+}
+
+// Side by side, the labels are equally tall: in 21, C's label gains a line ("most in one
+// step: 20 shock levels, 80 rounds" wraps) and had stood lower than the others.
+TEST_F(CaptureCompare, TheLabelsSideBySideAreEquallyTall) {
+    const std::string out = capture_test::freshFolder("compare_equal_labels");
+    app::CaptureOptions options = capture_test::smallCapture("21_shock_column", out, platform::HeadlessBackend::Auto);
+    options.size = "1280x720";
+    options.withUi = true;
+    options.at = "120";
+    ASSERT_EQ(app::runCapture(options), 0);
+    const nlohmann::json manifest = capture_test::readManifest(out);
+    ASSERT_EQ(manifest["layout"]["views"].size(), 4u);
+    const std::vector<float> a = labelAbove(manifest, 0);
+    ASSERT_FALSE(a.empty());
+    for (int k = 1; k < 4; ++k) {
+        const std::vector<float> label = labelAbove(manifest, k);
+        ASSERT_FALSE(label.empty()) << "view " << k;
+        EXPECT_NEAR(label[3], a[3], 1.0f) << "view " << k << "'s label against A's";
+    }
+    EXPECT_EQ(manifest["frames"][0]["labels_cut"], 0);
 }
 
 // 21's view C gains a label line at its first steps ("most in one step: 20 shock levels,

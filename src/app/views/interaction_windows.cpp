@@ -331,6 +331,18 @@ float wholeWordsScale(const ViewLabel& label, float lineWidth) {
     return std::max(0.99f * kSmallestType, 0.99f * lineWidth / widest);  // a hair to spare for the widths' rounding
 }
 
+// A label's height (units) with its lines wrapped at `wrapWidth` (units, unscaled) in `type`,
+// as ImGui lays it: the cursor goes to a whole unit after each line.
+float wrappedHeight(const ViewLabel& label, float wrapWidth, float type) {
+    const ImGuiStyle& style = ImGui::GetStyle();
+    float cursor = style.WindowPadding.y, bottom = cursor;
+    for (const std::string& line : label.lines) {
+        bottom = cursor + type * ImGui::CalcTextSize(ui::wrapAtSpaces(line, wrapWidth).c_str()).y;
+        cursor = std::floor(bottom + style.ItemSpacing.y);
+    }
+    return bottom + style.WindowPadding.y;
+}
+
 }  // namespace
 
 float labelsHeight(const std::vector<ViewLabel>& labels, float width) {
@@ -341,15 +353,9 @@ float labelsHeight(const std::vector<ViewLabel>& labels, float width) {
     // Lines wrapped a font narrower than drawn: changing digits and marks (- to a check) may
     // widen a line by that much, and the room then holds the line it wraps into. (A whole
     // line to spare left a blank band under every presented label: 48 px at 1920 x 1080.)
-    const float wrapWidth = std::max(text / type - ImGui::GetFontSize(), ImGui::GetFontSize());  // units, unscaled
+    const float wrapWidth = std::max(text / type - ImGui::GetFontSize(), ImGui::GetFontSize());
     float tallest = 0.0f;
-    for (const ViewLabel& label : labels) {
-        float height = 2.0f * style.WindowPadding.y - style.ItemSpacing.y;
-        for (const std::string& line : label.lines) {
-            height += type * ImGui::CalcTextSize(ui::wrapAtSpaces(line, wrapWidth).c_str()).y + style.ItemSpacing.y;
-        }
-        tallest = std::max(tallest, height);
-    }
+    for (const ViewLabel& label : labels) tallest = std::max(tallest, wrappedHeight(label, wrapWidth, type));
     return std::ceil(tallest);
 }
 
@@ -362,14 +368,17 @@ LabelsDrawn drawViewLabels(const std::vector<ViewLabel>& labels) {
     float type = 1.0f;
     for (const ViewLabel& label : labels) type = std::min(type, wholeWordsScale(label, lineWidth(label)));  // all alike
     for (const ViewLabel& label : labels) drawn.wordsBroken += type * widestWord(label) > lineWidth(label);
+    // Every label as tall as the tallest drawn (side by side, one whose title wraps had stood
+    // lower than the others).
+    float tallest = 0.0f;
+    for (const ViewLabel& label : labels) tallest = std::max(tallest, wrappedHeight(label, lineWidth(label) / type, type));
     for (std::size_t k = 0; k < labels.size(); ++k) {
         const ViewLabel& label = labels[k];
         ImGui::SetNextWindowPos(ImVec2(label.topLeft.x, label.topLeft.y), ImGuiCond_Always);
         // Sized from this frame's text (an auto-sized window lags a frame behind changing
         // numbers), within the place the layout keeps for it: a longer line wraps.
-        const glm::vec2 size = glm::min(viewLabelSize(label), label.room);
-        ImGui::SetNextWindowSize(ImVec2(size.x, 0.0f), ImGuiCond_Always);
-        ImGui::SetNextWindowSizeConstraints(ImVec2(size.x, 0.0f), ImVec2(size.x, label.room.y));
+        const glm::vec2 size = glm::min(glm::vec2(viewLabelSize(label).x, tallest), label.room);
+        ImGui::SetNextWindowSize(ImVec2(size.x, size.y), ImGuiCond_Always);
         ImGui::SetNextWindowBgAlpha(0.75f);
         const std::string name = "##view label " + std::to_string(k);
         ImGui::Begin(name.c_str(), nullptr,
