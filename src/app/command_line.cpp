@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <exception>
 #include <limits>
+#include <regex>
 #include <stdexcept>
 
 #include <CLI/CLI.hpp>
@@ -79,9 +80,11 @@ void addCapture(CLI::App& cli, CaptureOptions& o) {
     cap->add_option("--out", o.out, "Folder for frame_NNNNNN.png and manifest.json (created if missing)")->required();
     cap->add_option("--size", o.size, "Image size WxH in pixels (16 to 8192 each)")->capture_default_str();
     cap->add_option("--camera", o.camera,
-                    "azimuth,elevation[,distance] in degrees, degrees, m (default: the window's view of the box)");
+                    "azimuth,elevation[,distance] in degrees, degrees, m (default: the window's view of the box)")
+        ->check(notEmpty("azimuth,elevation[,distance]"));
     cap->add_option("--color-by", o.colorBy,
-                    "Sphere colours: id, speed, contact or penetration (default: the scene's own colouring, else contact)");
+                    "Sphere colours: id, speed, contact or penetration (default: the scene's own colouring, else contact)")
+        ->check(notEmpty("id, speed, contact or penetration"));
     cap->add_flag("--with-ui", o.withUi, "Draw the control panel and the readouts as the window does");
     cap->add_option_function<float>("--ui-scale", [&o](const float& scale) { o.uiScale = scale; },
                                     "With --with-ui or --compare: the UI scale, 0.75 to 3 (default 1; 2: as on a HiDPI screen)");
@@ -161,6 +164,19 @@ std::string windowOptionBeforeSubcommand(const CLI::App& cli) {
     return "";
 }
 
+// CLI11's refusals in the words of the others: "--scene: At Most 1 required but received 2"
+// reads "--scene: given 2 times; give it once", "--frames: 1 required INT:INT>=1 missing" reads
+// "--frames: needs a value", and an argument not expected points to --help.
+std::string inOurWords(const std::string& refusal) {
+    static const std::regex atMost(R"(^(\S+): At Most 1 required but received (\d+)$)");
+    static const std::regex missing(R"(^(\S+): \d+ required \S+ missing$)");
+    std::smatch m;
+    if (std::regex_match(refusal, m, atMost)) return m[1].str() + ": given " + m[2].str() + " times; give it once";
+    if (std::regex_match(refusal, m, missing)) return m[1].str() + ": needs a value";
+    if (refusal.rfind("The following argument", 0) == 0) return refusal + " (see spheres --help)";
+    return refusal;
+}
+
 }  // namespace
 
 int runCommandLine(int argc, char** argv) {
@@ -180,7 +196,7 @@ int runCommandLine(int argc, char** argv) {
         return cli.exit(e);
     } catch (const CLI::ParseError& e) {
         const std::string misplaced = windowOptionBeforeSubcommand(cli);
-        return fail(misplaced.empty() ? e.what() : misplaced, kBadInput);
+        return fail(misplaced.empty() ? inOurWords(e.what()) : misplaced, kBadInput);
     }
     if (const std::string misplaced = windowOptionBeforeSubcommand(cli); !misplaced.empty()) {
         return fail(misplaced, kBadInput);
@@ -192,6 +208,7 @@ int runCommandLine(int argc, char** argv) {
             if (cli.got_subcommand("claims")) return runClaims(claims);
             if (presets->parsed()) return listPresets();
             window.sizeGiven = cli.count("--width") + cli.count("--height") > 0;
+            if (argc > 0 && argv[0] && *argv[0]) window.program = argv[0];
             return runWindowApp(window);
         };
         const int code = run();

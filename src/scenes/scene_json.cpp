@@ -613,6 +613,28 @@ class SceneReader {
     std::string file_;
 };
 
+// `text` with each byte that is not part of a UTF-8 character written as \xFF: a binary
+// file's last byte read had been printed raw, as a replacement mark or worse.
+std::string bytesShown(const std::string& text) {
+    std::string shown;
+    for (std::size_t at = 0; at < text.size();) {
+        const auto byte = static_cast<unsigned char>(text[at]);
+        const std::size_t length = byte < 0x80 ? 1 : (byte >> 5) == 0x6 ? 2 : (byte >> 4) == 0xE ? 3 : (byte >> 3) == 0x1E ? 4 : 0;
+        bool whole = length > 0 && at + length <= text.size();
+        for (std::size_t k = 1; whole && k < length; ++k) whole = (static_cast<unsigned char>(text[at + k]) & 0xC0) == 0x80;
+        if (whole && (byte >= 0x20 || byte == '\t')) {
+            shown.append(text, at, length);
+            at += length;
+        } else {
+            char escaped[8];
+            std::snprintf(escaped, sizeof escaped, "\\x%02X", byte);
+            shown += escaped;
+            ++at;
+        }
+    }
+    return shown;
+}
+
 // nlohmann's message without its "[json.exception...] parse error at line 3, column 6: ",
 // what it last read cut to its end (an unquoted key repeated the whole description), and
 // the likely slip where its words do not name it: a comma missing or one too many.
@@ -638,7 +660,7 @@ std::string syntaxMessage(const Json::parse_error& e) {
                message.find("; expected ']'") != std::string::npos) {
         message += " (a comma missing before it?)";
     }
-    return "invalid JSON: " + message;
+    return "invalid JSON: " + bytesShown(message);
 }
 
 Json parseJson(std::string_view text, const SceneReader& reader) {

@@ -153,6 +153,23 @@ TEST(CaptureRefusals, BrokenSceneOrSettingIsRefusedBeforeWriting) {
     setting.settings = {"beta=7"};
     EXPECT_THROW(app::runCapture(setting), UsageError);
     EXPECT_FALSE(exists(out));
+    // A count the pile's region cannot hold is the setting's doing, said as its own, before
+    // any GL or folder (the folder had been left, the GL line said first).
+    CaptureOptions count = validOptions(out);
+    count.scene = "11_pile";
+    count.settings = {"count=1000000"};
+    expectRefused(count, "--set count=1000000: the scene cannot be built: the region holds only");
+}
+
+// Side by side at a size that leaves the views a sliver (16's four views and labels at
+// 320x200 had views 1 px high, written as blank frames with exit 0): refused, nothing written.
+TEST(CaptureRefusals, ASizeTooSmallForTheViewsIsRefused) {
+    CaptureOptions four = validOptions(capture_test::freshFolder("refused_small_views"));
+    four.scene = "16_bernoulli";
+    four.size = "320x200";
+    expectRefused(four, "--size 320x200: too small for 4 views side by side with their labels");
+    four.size = "640x400";  // large enough
+    EXPECT_EQ(app::runCapture(four), 0);
 }
 
 // The README's example captures `--scene cradle` into `--out cradle/`: once that folder
@@ -326,6 +343,8 @@ TEST(CommandLine, RefusedInputIsOneLineNamingItAndLeavesNothing) {
     const std::string folder = capture_test::freshFolder("cli_refusals");
     std::filesystem::create_directories(folder);
     std::filesystem::create_symlink("loop.json", folder + "/loop.json");
+    const std::string logFolder = folder + "_log.csv";  // a folder named as a log
+    std::filesystem::create_directories(logFolder);
     const struct {
         std::string arguments, starts;
     } cases[] = {
@@ -362,6 +381,15 @@ TEST(CommandLine, RefusedInputIsOneLineNamingItAndLeavesNothing) {
          "spheres: --samples: must be a whole number, 0 to 16 (got 2.5)"},
         {"capture --scene cradle --at 0 --ui-scale 2 --out '" + folder + "/frames'",
          "spheres: --ui-scale sizes the panel and the views' labels, and this capture draws neither: give --with-ui"},
+        // A folder where the log goes is said as one (it had been "is the disk full?" at the end);
+        // empty and repeated values, a --select past the last sphere, in the project's words.
+        {"simulate --scene cradle --steps 1 --out '" + logFolder + "'", "spheres: --out " + logFolder + ": is a folder, not a file"},
+        {"capture --scene cradle --at 0 --color-by '' --out '" + folder + "/frames'",
+         "spheres: --color-by: needs id, speed, contact or penetration (got \"\")"},
+        {"capture --scene cradle --at 0 --camera '' --out '" + folder + "/frames'", "spheres: --camera: needs azimuth,elevation"},
+        {"capture --scene cradle --scene pile --at 0 --out '" + folder + "/frames'", "spheres: --scene: given 2 times; give it once"},
+        {"capture --scene cradle --out '" + folder + "/frames' --frames", "spheres: --frames: needs a value"},
+        {"--version", "spheres: The following argument was not expected: --version (see spheres --help)"},
     };
     const std::string display = std::getenv("DISPLAY") ? std::getenv("DISPLAY") : "";
     unsetenv("DISPLAY");  // the screenshot's window cannot open
@@ -466,7 +494,7 @@ TEST(CaptureColouring, TheScenesOwnColouringUnlessOneIsAsked) {
         CaptureOptions options;
         options.scene = "22_shock_pyramid";
         options.at = "0";
-        options.size = "64x48";
+        options.size = "480x320";  // its four views and their labels
         options.colorBy = asked;
         options.out = capture_test::freshFolder(std::string("colouring_") + (*asked ? asked : "scene"));
         EXPECT_EQ(app::runCapture(options), 0);

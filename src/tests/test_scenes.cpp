@@ -43,6 +43,11 @@ TEST(SceneFile, RefusesJsonSyntaxErrorsAtTheirLine) {
     const std::string message = errorOf("{\"description\": \"" + std::string(500, 'a') + "\", box: 1}");
     EXPECT_LT(message.size(), 300u) << message;
     EXPECT_NE(message.find("last read: '..."), std::string::npos) << message;
+    // A binary file's byte is written as \xFF, not printed raw; a whole character stays one.
+    const std::string binary = errorOf("\xff\xfe{}");
+    EXPECT_NE(binary.find("last read: '\\xFF'"), std::string::npos) << binary;
+    const std::string accented = errorOf("{\"title\": \"caf\xc3\xa9\" x}");
+    EXPECT_NE(accented.find("caf\xc3\xa9"), std::string::npos) << accented;
 }
 
 // What is no file at all is refused before it is read: /dev/zero, typed into the window's

@@ -241,6 +241,24 @@ TEST(WindowPaths, TheOverridesOfferedFollowTheSceneUntilTheUserWritesThere) {
     EXPECT_EQ(open("11_pile"), "order=reversed");
 }
 
+// The window opened on a scene with its own "compare" (14's three answers) stops that side
+// by side at the next preset, as one opened with [ ] does: started as the command line's
+// --compare, 14's three views had stayed on 13 and on 01 (22's). One asked with --compare stays.
+TEST(WindowPaths, TheFirstScenesOwnSideBySideStopsAtTheNextPreset) {
+    const auto views = [](const app::Session& session) { return session.comparison() ? session.comparison()->count() + 1 : 1; };
+    for (const bool asked : {false, true}) {
+        app::Simulation simulation(scenes::loadScene(scenes::presetPath("14_three_answers")));
+        app::Session session(simulation);
+        app::InteractionInput input(session);
+        const std::vector<std::string> compare = asked ? std::vector<std::string>{"beta=0.5"} : std::vector<std::string>{};
+        ASSERT_EQ(input.openFirstScene(compare), "");
+        EXPECT_EQ(views(session), asked ? 2 : 3);
+        simulation.openScene(scenes::loadScene(scenes::presetPath("13_tunnelling")));
+        input.sceneChanged();
+        EXPECT_EQ(views(session), asked ? 2 : 1) << (asked ? "--compare beta=0.5" : "14's own");
+    }
+}
+
 // Side by side with the offer, the next scene's offer replaces it ([ and ]): the cradle's
 // "method=position" kept on the pile had compared the velocity method with itself, one run in
 // two views (a student read that the setting changed nothing). Overrides the user wrote stay.

@@ -56,6 +56,7 @@ constexpr double kLeastDistance = 0.1;                   // m: nearer, a box of 
 constexpr double kMaxDistance = 1000.0;                  // m, render::Camera's zoom limit
 constexpr int kUiWarmUpFrames = 3;                       // ImGui frames laid out before frame 0
 constexpr int kViewGap = 4;                              // px between views side by side, as the window
+constexpr int kSmallestView = 24;                        // px: a view smaller either way is refused, not drawn
 
 // ---------------------------------------------------------------- the options, checked
 
@@ -448,12 +449,13 @@ std::string PngWriter::finish() {
 class Capturer {
   public:
     Capturer(const CaptureOptions& options, const CapturePlan& plan,
-             std::unique_ptr<platform::HeadlessContext> context, scenes::Scene scene);
+             std::unique_ptr<platform::HeadlessContext> context, Simulation simulation);
     int run();
 
   private:
     render::Image drawFrame();
     void place(const WindowLayout& layout);
+    void refuseViewsTooSmall() const;
     void followLabels();
     void writeFrame(int index);
     const Comparison* comparedRuns() const { return compare_ ? &compare_->comparison() : nullptr; }
@@ -483,12 +485,12 @@ class Capturer {
 };
 
 Capturer::Capturer(const CaptureOptions& options, const CapturePlan& plan,
-                   std::unique_ptr<platform::HeadlessContext> context, scenes::Scene scene)
+                   std::unique_ptr<platform::HeadlessContext> context, Simulation simulation)
     : context_(std::move(context)),
       options_(options),
       plan_(plan),
       scenePath_(resolveScenePath(options.scene)),
-      simulation_(std::move(scene)) {
+      simulation_(std::move(simulation)) {
     // Without --color-by, the scene's own colouring, as the window opens it (else contact).
     const int scenes = simulation_.scene().colorBy;
     colorBy_ = options.colorBy.empty() && scenes >= 0 ? render::ColorBy(scenes) : plan.colorBy;
@@ -530,6 +532,22 @@ Capturer::Capturer(const CaptureOptions& options, const CapturePlan& plan,
     sceneBounds(simulation_, lo, hi);
     request.boxAspect = boxAspectOnScreen(camera_, lo, hi);
     place(layoutWindow(request));
+    refuseViewsTooSmall();
+}
+
+// A size that leaves a view a sliver (four views and their labels at 320x200 had views 1 px
+// high) is refused in one line, not written as blank frames.
+void Capturer::refuseViewsTooSmall() const {
+    const int count = compare_ ? compare_->comparison().count() + 1 : 1;
+    for (int k = 0; k < count; ++k) {
+        const glm::ivec4& v = layout_.views.views[k];
+        if (v.z >= kSmallestView && v.w >= kSmallestView) continue;
+        const std::string what = count == 1 ? "the view" : std::to_string(count) + " views side by side";
+        throw UsageError("--size " + options_.size + ": too small for " + what + (options_.withUi || count > 1 ? " with " : "") +
+                         (options_.withUi ? "the panel" : "") + (options_.withUi && count > 1 ? " and " : "") +
+                         (count > 1 ? "their labels" : "") + " (a view would be " + std::to_string(v.z) + " x " +
+                         std::to_string(v.w) + " px); give a larger --size, e.g. 1280x720");
+    }
 }
 
 // Everything where `layout` puts it, and the camera fitted to the first view: the scene's
@@ -743,11 +761,13 @@ int runCapture(const CaptureOptions& options) {
     // The scale is that of the panel and of the views' labels (the scene's own side by side too).
     if (options.uiScale && !options.withUi && options.compare.empty() && scene.compare.empty())
         throw UsageError("--ui-scale sizes the panel and the views' labels, and this capture draws neither: give --with-ui");
+    Simulation simulation(std::move(scene));  // a scene it cannot build opens no GL and leaves no folder
     auto context = openContext(plan.backend, plan.size);
+    const std::string backend = std::string(context->name()) + " (" + glText(GL_RENDERER) + ")";
+    Capturer capturer(options, plan, std::move(context), std::move(simulation));  // refuses a size too small
     prepareOutFolder(options.out);
-    std::printf("GL backend: %s (%s)\n", context->name(), glText(GL_RENDERER).c_str());
+    std::printf("GL backend: %s\n", backend.c_str());
     std::fflush(stdout);
-    Capturer capturer(options, plan, std::move(context), std::move(scene));
     return capturer.run();
 }
 

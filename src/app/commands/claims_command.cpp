@@ -77,7 +77,7 @@ namespace {
 // What a claim may measure, for a teacher writing one: name, unit, meaning.
 int listMeasures() {
     for (const scenes::ClaimMeter& m : scenes::claimMeters()) {
-        const std::string unit = m.unit.empty() ? "" : " (" + std::string(m.unit) + ")";
+        const std::string unit = m.unit.empty() ? "" : m.unit.front() == '(' ? " " + std::string(m.unit) : " (" + std::string(m.unit) + ")";
         std::printf("%s%s: %s\n", std::string(m.name).c_str(), unit.c_str(), std::string(m.what).c_str());
     }
     return 0;

@@ -27,6 +27,7 @@ DiagnosticsLog::DiagnosticsLog(const std::string& path) : path_(path) {
     } else if (!endsWith(path, ".csv")) {
         throw UsageError("--out " + path + ": the file must end in .csv or .jsonl");
     }
+    checkWritable("--out", path);  // a folder of that name is said so, not found at the end as a full disk
     // Written beside it and moved over it once whole: a run killed half way (timeout, Ctrl-C)
     // leaves the .part, not a log cut in mid-line that reads as the whole run.
     file_.open(path + ".part");

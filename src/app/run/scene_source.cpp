@@ -74,6 +74,11 @@ void checkCompareOption(const scenes::Scene& scene, const std::vector<std::strin
     }
 }
 
+std::string withoutGenerator(std::string reason) {
+    if (reason.rfind("generate[", 0) == 0 && reason.find("]: ") != std::string::npos) reason.erase(0, reason.find("]: ") + 3);
+    return reason;
+}
+
 scenes::Scene loadSceneWithSettings(const std::string& nameOrPath,
                                     const std::vector<std::string>& settings) {
     const std::string path = resolveScenePath(nameOrPath);
@@ -88,6 +93,15 @@ scenes::Scene loadSceneWithSettings(const std::string& nameOrPath,
     }
     if (const std::string error = scenes::settingsThatActOnNothing(scene, settings); !error.empty()) {
         throw UsageError("--set " + error);
+    }
+    if (!settings.empty()) {  // a count the region cannot hold is the settings' doing: said as theirs
+        try {
+            scenes::buildWorld(scene);
+        } catch (const scenes::SceneError& e) {
+            std::string given;
+            for (const std::string& setting : settings) given += (given.empty() ? "" : " ") + setting;
+            throw UsageError("--set " + given + ": the scene cannot be built: " + withoutGenerator(e.what()));
+        }
     }
     return scene;
 }

@@ -21,8 +21,13 @@ void checkWritable(const std::string& flag, const std::string& path, const std::
 // Whether `s` ends in `suffix`.
 bool endsWith(const std::string& s, const std::string& suffix);
 
+// A scene's refusal without the generator it names ("generate[0]: the region holds only
+// ..." reads "the region holds only ..."), where the file's place is not news.
+std::string withoutGenerator(std::string reason);
+
 // `nameOrPath` is a file, or a preset name with or without its number and .json
-// ("pile", "11_pile"). Then every "name=value" of `settings` is applied, in order.
+// ("pile", "11_pile"). Then every "name=value" of `settings` is applied, in order, and a
+// scene the settings leave unbuildable (a count its region cannot hold) is refused as theirs.
 // Throws scenes::SceneError (file:line:col) or UsageError.
 scenes::Scene loadSceneWithSettings(const std::string& nameOrPath,
                                     const std::vector<std::string>& settings);

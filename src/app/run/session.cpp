@@ -8,6 +8,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "app/run/scene_source.h"
 #include "app/teaching/overlays.h"
 #include "physics/diagnostics.h"
 #include "physics/step.h"
@@ -162,12 +163,8 @@ std::string Session::setParameter(const scenes::Parameter& p, double value) {
         primary_.setScene(std::move(scene));
         primary_.timeScale = timeScale;
     } catch (const std::exception& e) {
-        std::string reason = e.what();  // "generate[0]: the region holds only ...": the file's path is not news here
-        if (reason.rfind("generate[", 0) == 0 && reason.find("]: ") != std::string::npos) {
-            reason.erase(0, reason.find("]: ") + 3);
-        }
         return std::string(p.name) + " = " + scenes::formatNumber(value) + " refused (it stays " +
-               scenes::formatValue(p, primary_.scene()) + "): " + reason;
+               scenes::formatValue(p, primary_.scene()) + "): " + withoutGenerator(e.what());
     }
     startAgain();
     return "";

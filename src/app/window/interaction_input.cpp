@@ -96,6 +96,12 @@ std::string InteractionInput::startComparison(const std::vector<std::string>& li
     return error;
 }
 
+std::string InteractionInput::openFirstScene(const std::vector<std::string>& asked) {
+    if (!asked.empty()) return startComparison(asked);
+    sceneChanged();
+    return "";
+}
+
 // Side by side with the last scene's offer, the next scene's offer replaces it: its overrides
 // could change nothing there (the cradle's order=index,reversed on 13's one sphere: two views
 // of one run). Overrides the user wrote stay, and a scene's own "compare" comes first.

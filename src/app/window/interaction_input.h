@@ -51,6 +51,10 @@ public:
 
     // "name=value,..." given on the command line: side by side from the start.
     std::string startComparison(const std::vector<std::string>& lists);
+    // The first scene opened: side by side with `asked` (--compare; "" or why it is refused),
+    // or else with the scene's own "compare", as a preset opened later does (so that the next
+    // preset stops it: 14's three views had stayed on 13, started from the command line).
+    std::string openFirstScene(const std::vector<std::string>& asked);
     // After the primary's scene changed: Session::sceneChanged, and the bar shows the
     // overrides of the side by side the new scene opens with, if any (suggestOverrides).
     void sceneChanged();

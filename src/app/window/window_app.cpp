@@ -132,16 +132,12 @@ WindowApp::WindowApp(std::unique_ptr<platform::Window> window, scenes::Scene sce
     panel_.presetIndex = presetIndexOf(panel_.scenePath);
     showSceneTitle();
     // --compare, or else the scene's own "compare" (checked by the loader).
-    const std::vector<std::string>& compare = options.compare.empty() ? simulation_.scene().compare : options.compare;
-    if (!compare.empty()) {
-        if (const std::string error = input_.startComparison(compare); !error.empty()) {
-            throw UsageError("--compare " + error);
-        }
-    }
+    if (const std::string error = input_.openFirstScene(options.compare); !error.empty()) throw UsageError("--compare " + error);
     if (options.select >= 0) {
         if (static_cast<std::size_t>(options.select) >= simulation_.world().size()) {
-            throw UsageError("--select " + std::to_string(options.select) + ": the scene has " +
-                             std::to_string(simulation_.world().size()) + " spheres");
+            const std::size_t count = simulation_.world().size();
+            throw UsageError("--select " + std::to_string(options.select) + ": the scene has " + std::to_string(count) +
+                             (count == 1 ? " sphere" : " spheres") + ", numbered from 0");
         }
         session_.select(options.select);
         if (options.explain) input_.toggleExplainer();
@@ -687,11 +683,11 @@ int runWindowApp(const WindowAppOptions& options) {
         std::fprintf(stderr,
                      display ? "spheres: cannot open a window (%s). The display is there, its GL driver gave no "
                                "OpenGL 3.3 core context: update the graphics driver, or try Mesa's software GL "
-                               "(LIBGL_ALWAYS_SOFTWARE=1), or run headless: `spheres capture --scene %s --frames 60 "
+                               "(LIBGL_ALWAYS_SOFTWARE=1), or run headless: `%s capture --scene %s --frames 60 "
                                "--out frames/`\n"
                              : "spheres: cannot open a window (%s). Without a display, run headless: "
-                               "`spheres capture --scene %s --frames 60 --out frames/` or `xvfb-run -a spheres`\n",
-                     error.c_str(), options.scene.c_str());
+                               "`%s capture --scene %s --frames 60 --out frames/` or `xvfb-run -a %s`\n",
+                     error.c_str(), options.program.c_str(), options.scene.c_str(), options.program.c_str());
         return 2;
     }
     WindowApp app(std::move(window), std::move(scene), options);

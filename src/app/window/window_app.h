@@ -18,6 +18,7 @@ struct WindowAppOptions {
     int select = -1;                    // >= 0: start with this sphere selected (inspector open)
     bool explain = false;               // with select: open "explain this contact"
     bool present = false;               // start in the presentation layout (F5)
+    std::string program = "spheres";    // as it was started (argv[0]): the hints' commands name it so
 };
 
 // Returns the exit code; 2 when no window can be opened (no display).
