@@ -80,7 +80,7 @@ void addCapture(CLI::App& cli, CaptureOptions& o) {
     cap->add_option("--out", o.out, "Folder for frame_NNNNNN.png and manifest.json (created if missing)")->required();
     cap->add_option("--size", o.size, "Image size WxH in pixels (16 to 8192 each)")->capture_default_str();
     cap->add_option("--camera", o.camera,
-                    "azimuth,elevation[,distance] in degrees, degrees, m (default: the window's view of the box)")
+                    "azimuth,elevation[,distance] in degrees, degrees, m (default: the scene's opening view, as the window opens it)")
         ->check(notEmpty("azimuth,elevation[,distance]"));
     cap->add_option("--color-by", o.colorBy,
                     "Sphere colours: id, speed, contact or penetration (default: the scene's own colouring, else contact)")
