@@ -153,17 +153,23 @@ bool changesNothing(const Scene& scene, const Variants& variants) {
 std::string settingName(std::string_view setting) { return std::string(trim(setting.substr(0, setting.find('=')))); }
 
 std::vector<std::string> slidersToMove(const Scene& scene) {
-    std::vector<std::string> named;
+    std::vector<std::string> compared, claimed;
+    for (const std::string& part : splitOverrides(scene.compare)) {
+        if (part.find('=') != std::string::npos) compared.push_back(settingName(part));  // not a bare value
+    }
     for (const Claim& claim : scene.claims) {
         if (claim.in != ClaimSource::Description) continue;
-        for (const std::string& setting : claim.settings) named.push_back(settingName(setting));
+        for (const std::string& setting : claim.settings) claimed.push_back(settingName(setting));
     }
-    for (const std::string& part : splitOverrides(scene.compare)) {
-        if (part.find('=') != std::string::npos) named.push_back(settingName(part));  // not a bare value
-    }
+    const auto named = [](const std::vector<std::string>& names, std::string_view name) {
+        return std::find(names.begin(), names.end(), name) != names.end();
+    };
     std::vector<std::string> sliders;
     for (const Parameter& p : parameterTable()) {
-        if (std::find(named.begin(), named.end(), p.name) != named.end()) sliders.emplace_back(p.name);
+        if (named(compared, p.name)) sliders.emplace_back(p.name);
+    }
+    for (const Parameter& p : parameterTable()) {
+        if (named(claimed, p.name) && !named(compared, p.name)) sliders.emplace_back(p.name);
     }
     return sliders;
 }

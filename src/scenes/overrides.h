@@ -56,9 +56,10 @@ inline std::string overrideLabel(const Scene& scene, const std::vector<std::stri
 // The name of a "name=value" setting, trimmed.
 std::string settingName(std::string_view setting);
 
-// The parameters a scene's text tells the class to move: those its description's
-// claims set and those its "compare" views differ in, in the parameter table's order.
-// The presentation layout shows their sliders only.
+// The parameters a scene's text tells the class to move: those its "compare" views differ
+// in, then those its description's claims set, each in the parameter table's order. The
+// presentation layout shows their sliders only, the first where not all fit (at 1024x768,
+// 21 had kept μ, which a claim sets, and scrolled away the K and shock its views differ in).
 std::vector<std::string> slidersToMove(const Scene& scene);
 
 }  // namespace scenes

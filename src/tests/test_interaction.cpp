@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 
 #include "app/run/interaction.h"
+#include "app/views/frame_builder.h"
 #include "app/views/interaction_windows.h"
 #include "app/run/session.h"
 #include "app/views/window_layout.h"
@@ -441,4 +442,20 @@ TEST(InspectorNumbers, ASpeedIsShownInTheUnitThatGivesItsDigits) {
     EXPECT_EQ(app::speedText(0.0), "0 m/s");
     EXPECT_EQ(app::speedText(-0.0), "0 m/s");
     EXPECT_EQ(app::speedText(std::nan("")), "not finite");
+}
+
+// Presented, the layout has no inspector, but 07's text points to its |v|: the panel shows
+// the selected sphere's speed in a line, as the inspector writes it; none while none is.
+TEST(InspectorNumbers, TheSelectedSpheresSpeedIsALineOfThePresentedPanel) {
+    app::Simulation simulation(scenes::loadScene(scenes::presetPath("07_inclined_plane")));
+    app::Session session(simulation);
+    EXPECT_EQ(app::selectedSpeedLine(session), "");
+    session.select(2);
+    const double speed = glm::length(simulation.world().velocity[2]);
+    EXPECT_EQ(app::selectedSpeedLine(session), "sphere #2: |v|\u00a0" + app::speedText(speed));
+    app::Simulation other(scenes::loadScene(scenes::presetPath("02_bounce_projection")));
+    app::Session fewer(other);
+    fewer.select(0);
+    other.editableWorld().velocity[0] = {0.0, 0.0, -0.006};
+    EXPECT_EQ(app::selectedSpeedLine(fewer), "sphere #0: |v|\u00a00.6 cm/s");
 }

@@ -2,6 +2,7 @@
 // read by the UI, the command line's --set and the JSON loader.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <iterator>
 #include <set>
@@ -9,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "scenes/overrides.h"
 #include "scenes/parameters.h"
 #include "scenes/presets.h"
 #include "scenes/scene_json.h"
@@ -350,4 +352,17 @@ TEST(ParameterTable, ASettingThatActsOnNothingIsRefusedWhateverTheOrder) {
     EXPECT_EQ(refusal({"method=continuous", "shock=on"}),
               "shock=on: shock acts only with the position, velocity or reflection method, and this run's is continuous");
     EXPECT_EQ(refusal({"shock=on", "beta=0.5"}), "");
+}
+
+// The presentation layout keeps the sliders a scene's text tells the class to move, the
+// settings its views differ in first: at 1024x768 only the first fit, and 21 had kept μ (a
+// claim sets it, and μ comes first in the table), scrolling away its lesson's K and shock.
+TEST(PresentedSliders, WhatTheViewsDifferInComesFirst) {
+    const auto sliders = [](const char* preset) { return scenes::slidersToMove(scenes::loadScene(scenes::presetPath(preset))); };
+    const std::vector<std::string> column = sliders("21_shock_column");
+    ASSERT_GE(column.size(), 3u);
+    EXPECT_EQ(std::vector<std::string>(column.begin(), column.begin() + 2), (std::vector<std::string>{"passes", "shock"}));
+    EXPECT_NE(std::find(column.begin(), column.end(), "mu"), column.end()) << "a claim's μ stays, after them";
+    const std::vector<std::string> bounce = sliders("02_bounce_projection");  // no views side by side: the table's order
+    EXPECT_EQ(bounce.front(), "beta");
 }

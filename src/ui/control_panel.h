@@ -137,6 +137,9 @@ struct Readouts {
     double timeScale = 1.0;  // simulated seconds per real second
     std::uint64_t steps = 0;
     std::size_t sphereCount = 0;
+    // "sphere #12: |v| 0.59 cm/s" while a sphere is selected, else empty: presented, under the
+    // sliders (07's text points to the inspector's |v|, and that layout has no inspector).
+    std::string selected;
     physics::StepStats stats;
     physics::Diagnostics diagnostics;
     std::vector<std::pair<const char*, const std::vector<float>*>> plots;  // name, samples

@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
+#include "app/run/interaction.h"
 #include "scenes/scene.h"
 
 namespace app {
@@ -107,6 +108,13 @@ void addMeasuredClaims(const Simulation& simulation, const Comparison* compariso
     r.claimsElsewhere = std::size_t(inText) > r.claimsWatched ? std::size_t(inText) - r.claimsWatched : 0;
     r.claimsForOtherSettings = simulation.claimsForOtherSettings();
     r.claimsInterrupted = simulation.claimsInterrupted();
+}
+
+std::string selectedSpeedLine(const Session& session) {
+    const int sphere = session.selected();
+    const physics::World& world = session.run(session.selectedView()).world();
+    if (sphere < 0 || std::size_t(sphere) >= world.size()) return "";
+    return "sphere #" + std::to_string(sphere) + ": |v|\u00a0" + speedText(glm::length(world.velocity[std::size_t(sphere)]));
 }
 
 ui::Readouts makeReadouts(const Simulation& simulation, const ui::FrameTimes& timing, const Comparison* comparison) {

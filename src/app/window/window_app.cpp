@@ -537,6 +537,7 @@ void WindowApp::frame(double dt) {
     if (!simulation_.paused) shownTiming_ = timing_;  // paused, the readouts hold still (StillFrames can wait)
     ui::Readouts readouts = makeReadouts(simulation_, shownTiming_, session_.comparison());
     readouts.diagnostics = session_.diagnostics(0);  // measured again after an edit or a step back
+    readouts.selected = selectedSpeedLine(session_);
     ui::PanelActions actions = ui::drawControlPanel(simulation_.scene(), simulation_.timeScale, readouts, panel_, presets_);
     const auto box = [](const Rect& r) { return glm::vec4(r.min, r.size); };
     if (!panel_.present) ui::drawReadouts(readouts, panel_, actions, box(placed.readoutsLine), box(placed.readouts));
