@@ -837,9 +837,11 @@ void presentedPanel(const scenes::Scene& scene, const Readouts& readouts, const 
     scrollToTopIfAsked(state);
     ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(ImGui::GetStyle().ItemSpacing.x, 0.0f));
     sceneText(scene);
-    ImGui::PopStyleVar();
-    ImGui::Spacing();
+    // The claims' line on the same grid, one font size high: with its frame's padding it lay
+    // across the fold, cut in half under the text (20 at 1920x1080).
+    ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(ImGui::GetStyle().FramePadding.x, 0.0f));
     measuredClaims(readouts, state);
+    ImGui::PopStyleVar(2);
     if (inSight < sliders.size()) {
         ImGui::Separator();
         drawSliders(inSight, sliders.size(), !restitutionInSight);

@@ -331,13 +331,58 @@ float wholeWordsScale(const ViewLabel& label, float lineWidth) {
     return std::max(0.99f * kSmallestType, 0.99f * lineWidth / widest);  // a hair to spare for the widths' rounding
 }
 
-// A label's height (units) with its lines wrapped at `wrapWidth` (units, unscaled) in `type`,
-// as ImGui lays it: the cursor goes to a whole unit after each line.
-float wrappedHeight(const ViewLabel& label, float wrapWidth, float type) {
+// `labels` with each title's letter held to the word after it ("A   sequential" had wrapped
+// as "A" / "sequential" in a label a quarter of a projector wide): the spaces after the
+// letter made non-breaking, where the two fit the label's line (`lineWidth(label)`, units)
+// in type no smaller than kLetterHeldType; else the letter may stand alone ("B   simultaneous"
+// held together at 1024x768 would have been cut).
+constexpr float kLetterHeldType = 0.8f;  // of the panel's
+
+template <class LineWidth>
+std::vector<ViewLabel> lettersKeptWithTitles(std::vector<ViewLabel> labels, LineWidth lineWidth) {
+    for (ViewLabel& label : labels) {
+        if (label.lines.empty()) continue;
+        std::string& title = label.lines.front();
+        std::size_t spaces = 1;
+        while (spaces < title.size() && title[spaces] == ' ') ++spaces;
+        if (spaces < 2) continue;
+        // The word up to where a line may break in it: a space, or after a hyphen or a '/'
+        // ("generalized-" of "generalized-reflections").
+        const std::size_t mark = title.find_first_of(" -/", spaces);
+        const std::size_t wordEnd = mark == std::string::npos ? title.size() : title[mark] == ' ' ? mark : mark + 1;
+        if (ImGui::CalcTextSize(title.substr(0, wordEnd).c_str()).x * kLetterHeldType > lineWidth(label)) continue;
+        std::string held = title.substr(0, 1);
+        for (std::size_t k = 1; k < spaces; ++k) held += "\u00a0";
+        title = held + title.substr(spaces);
+    }
+    return labels;
+}
+
+// A line's height (units) wrapped at `wrapWidth` (units, unscaled) in `type`.
+float lineHeight(const std::string& line, float wrapWidth, float type) {
+    return type * ImGui::CalcTextSize(ui::wrapAtSpaces(line, wrapWidth).c_str()).y;
+}
+
+// The tallest title of `labels` (units), each wrapped at wrapWidth(label): every title takes
+// as many rows, so that the lines under them stand side by side ("A / sequential" over two
+// rows had put A's E~ a row below C's "C   lcp").
+template <class WrapWidth>
+float titleRows(const std::vector<ViewLabel>& labels, WrapWidth wrapWidth, float type) {
+    float tallest = 0.0f;
+    for (const ViewLabel& label : labels) {
+        if (!label.lines.empty()) tallest = std::max(tallest, lineHeight(label.lines.front(), wrapWidth(label), type));
+    }
+    return tallest;
+}
+
+// A label's height (units) with its lines wrapped at `wrapWidth` (units, unscaled) in `type`
+// and its title `title` high, as ImGui lays it: the cursor goes to a whole unit after each line.
+float wrappedHeight(const ViewLabel& label, float wrapWidth, float type, float title) {
     const ImGuiStyle& style = ImGui::GetStyle();
     float cursor = style.WindowPadding.y, bottom = cursor;
-    for (const std::string& line : label.lines) {
-        bottom = cursor + type * ImGui::CalcTextSize(ui::wrapAtSpaces(line, wrapWidth).c_str()).y;
+    for (std::size_t n = 0; n < label.lines.size(); ++n) {
+        const float height = lineHeight(label.lines[n], wrapWidth, type);
+        bottom = cursor + (n == 0 ? std::max(height, title) : height);
         cursor = std::floor(bottom + style.ItemSpacing.y);
     }
     return bottom + style.WindowPadding.y;
@@ -345,33 +390,38 @@ float wrappedHeight(const ViewLabel& label, float wrapWidth, float type) {
 
 }  // namespace
 
-float labelsHeight(const std::vector<ViewLabel>& labels, float width) {
+float labelsHeight(const std::vector<ViewLabel>& shown, float width) {
     const ImGuiStyle& style = ImGui::GetStyle();
     const float text = std::max(width - 2.0f * style.WindowPadding.x, ImGui::GetFontSize() * 4.0f);  // units
+    const std::vector<ViewLabel> labels = lettersKeptWithTitles(shown, [&](const ViewLabel&) { return text; });
     float type = 1.0f;  // as drawViewLabels sets it at this width: every label alike
     for (const ViewLabel& label : labels) type = std::min(type, wholeWordsScale(label, text));
     // Lines wrapped a font narrower than drawn: changing digits and marks (- to a check) may
     // widen a line by that much, and the room then holds the line it wraps into. (A whole
     // line to spare left a blank band under every presented label: 48 px at 1920 x 1080.)
     const float wrapWidth = std::max(text / type - ImGui::GetFontSize(), ImGui::GetFontSize());
+    const float title = titleRows(labels, [&](const ViewLabel&) { return wrapWidth; }, type);
     float tallest = 0.0f;
-    for (const ViewLabel& label : labels) tallest = std::max(tallest, wrappedHeight(label, wrapWidth, type));
+    for (const ViewLabel& label : labels) tallest = std::max(tallest, wrappedHeight(label, wrapWidth, type, title));
     return std::ceil(tallest);
 }
 
-LabelsDrawn drawViewLabels(const std::vector<ViewLabel>& labels) {
+LabelsDrawn drawViewLabels(const std::vector<ViewLabel>& shown) {
     LabelsDrawn drawn;
     // Measured before any label's window sets its type (the window drawing now has the panel's).
     const auto lineWidth = [](const ViewLabel& label) {  // units
         return std::min(viewLabelSize(label).x, label.room.x) - 2.0f * ImGui::GetStyle().WindowPadding.x;
     };
+    const std::vector<ViewLabel> labels = lettersKeptWithTitles(shown, lineWidth);
     float type = 1.0f;
     for (const ViewLabel& label : labels) type = std::min(type, wholeWordsScale(label, lineWidth(label)));  // all alike
     for (const ViewLabel& label : labels) drawn.wordsBroken += type * widestWord(label) > lineWidth(label);
     // Every label as tall as the tallest drawn (side by side, one whose title wraps had stood
     // lower than the others).
+    const auto wrapWidth = [&](const ViewLabel& label) { return lineWidth(label) / type; };  // units, unscaled
+    const float title = titleRows(labels, wrapWidth, type);
     float tallest = 0.0f;
-    for (const ViewLabel& label : labels) tallest = std::max(tallest, wrappedHeight(label, lineWidth(label) / type, type));
+    for (const ViewLabel& label : labels) tallest = std::max(tallest, wrappedHeight(label, wrapWidth(label), type, title));
     for (std::size_t k = 0; k < labels.size(); ++k) {
         const ViewLabel& label = labels[k];
         ImGui::SetNextWindowPos(ImVec2(label.topLeft.x, label.topLeft.y), ImGuiCond_Always);
@@ -385,15 +435,17 @@ LabelsDrawn drawViewLabels(const std::vector<ViewLabel>& labels) {
                      kFixed | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_AlwaysAutoResize |
                          ImGuiWindowFlags_NoInputs | ImGuiWindowFlags_NoBringToFrontOnFocus);
         ImGui::SetWindowFontScale(type);
+        const ImGuiStyle& style = ImGui::GetStyle();
         for (std::size_t n = 0; n < label.lines.size(); ++n) {
             const ImVec4 color = n == 0 ? ImVec4(label.color.x / 255.0f, label.color.y / 255.0f, label.color.z / 255.0f, 1.0f)
                                         : ImGui::GetStyleColorVec4(ImGuiCol_Text);
+            const float top = ImGui::GetCursorPosY();
             ImGui::PushStyleColor(ImGuiCol_Text, color);
             ui::textWrappedAtSpaces(label.lines[n]);
             ImGui::PopStyleColor();
+            if (n == 0) ImGui::SetCursorPosY(std::max(ImGui::GetCursorPosY(), std::floor(top + title + style.ItemSpacing.y)));
         }
         // The lines' bottom and the padding under them, against the room the window got.
-        const ImGuiStyle& style = ImGui::GetStyle();
         const float needed = ImGui::GetCursorPosY() - style.ItemSpacing.y + style.WindowPadding.y;  // units
         drawn.cut += needed > ImGui::GetWindowHeight() + 0.5f;
         // The label takes no input (a drag across it turns the camera), but the pointer
