@@ -225,6 +225,17 @@ TEST(WrappedText, KeepsNameEqualsValueWholeAndCutsAWordWiderThanTheLine) {
     EXPECT_EQ(ui::wrapAtSpaces("B method = reflection", ImGui::CalcTextSize("method = reflec").x),
               "B\nmethod =\nreflection");  // rather than clipped
     EXPECT_EQ(ui::wrapAtSpaces("c = -0.8660 m/s", ImGui::CalcTextSize("c = -0.8").x), "c =\n-0.8660\nm/s");  // not "-" / "0.8660"
+    // A number keeps its unit and a formula its operators (a projector's text read "0.87" /
+    // "m/s", "v ←" / "μ v", "|g| h /" / "substeps"), and a short last word takes the one before
+    // it ("v2⊥." alone under a paragraph).
+    EXPECT_EQ(ui::wrapAtSpaces("leave at 0.87 m/s now", ImGui::CalcTextSize("leave at 0.87 m").x), "leave at\n0.87 m/s now");
+    EXPECT_EQ(ui::wrapAtSpaces("slows it: v \u2190 \u03bc v", ImGui::CalcTextSize("slows it: v \u2190").x),
+              "slows it:\nv \u2190 \u03bc v");
+    EXPECT_EQ(ui::wrapAtSpaces("adds |g| h / substeps", ImGui::CalcTextSize("adds |g| h /").x), "adds |g|\nh / substeps");
+    EXPECT_EQ(ui::wrapAtSpaces("one two three four five six", ImGui::CalcTextSize("one two three four five").x),
+              "one two three four\nfive six");
+    EXPECT_EQ(ui::wrapAtSpaces("one two three four a-long-last-word", ImGui::CalcTextSize("one two three four a-long").x),
+              "one two three four\na-long-last-word") << "a long last word stays alone";
     // The widest word, as the wrapping sees words (what a label's type is made smaller for):
     // "shock = off," is one, and so is a mark with its name.
     EXPECT_EQ(ui::widestWord("A shock = off, passes = 1\n\u2717\u00a0pos"),

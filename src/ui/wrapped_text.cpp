@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <string>
+#include <vector>
 
 #include <imgui.h>
 #include <imgui_internal.h>  // ImTextCharFromUtf8
@@ -18,15 +19,57 @@ float widthOf(std::string_view text) { return ImGui::CalcTextSize(text.data(), t
 // so that a text of one long word (a broken scene file's) wraps in linear time.
 constexpr std::size_t kMostMeasured = 2048;
 
-// The next space at or after `from` where a line may break: not one beside '=', so that
-// "passes = 1" stays on one line. Searched up to kMostMeasured bytes on: none there, it
-// returns where the search stopped (a line that long does not fit).
+bool isDigit(char c) { return c >= '0' && c <= '9'; }
+
+// The word of `text` that ends just before `at` (a space), and the one that starts just
+// after it.
+std::string_view wordBefore(std::string_view text, std::size_t at) {
+    const std::size_t space = text.rfind(' ', at == 0 ? 0 : at - 1);
+    const std::size_t start = space == std::string_view::npos || space >= at ? 0 : space + 1;
+    return text.substr(start, at - start);
+}
+std::string_view wordAfter(std::string_view text, std::size_t at) {
+    const std::size_t end = std::min(text.find(' ', at + 1), text.size());
+    return text.substr(at + 1, end - at - 1);
+}
+
+// A formula's operator standing as a word: "v ← μ v" and "|g| h / substeps" break around it no more than
+// "passes = 1" does.
+bool isOperator(std::string_view word) {
+    for (const char* op : {"=", "\u2190", "\u2192", "+", "\u2212", "\u00d7", "\u00b7", "/", "\u2264", "\u2265", "\u2248", "<", ">"}) {
+        if (word == op) return true;
+    }
+    return false;
+}
+
+// A unit after a number: "0.2 m/s", "10 s", "3.1 %" stay on one line (a class read "0.87" / "m/s").
+bool isUnit(std::string_view word) {
+    while (!word.empty() && std::string_view(",.;:)").find(word.back()) != std::string_view::npos) word.remove_suffix(1);
+    for (const char* unit : {"m", "m/s", "cm/s", "mm/s", "\u00b5m/s", "m/s\u00b2", "s", "ms", "J", "kg", "%", "r", "mm", "cm",
+                             "\u00b5m", "\u00b0", "Hz", "N", "px"}) {
+        if (word == unit) return true;
+    }
+    return false;
+}
+
+// Whether a line may break at the space text[at]: not beside '=' or another operator, nor
+// between a number and its unit.
+bool breaksAt(std::string_view text, std::size_t at) {
+    const std::string_view before = wordBefore(text, at), after = wordAfter(text, at);
+    if (!before.empty() && before.back() == '=') return false;
+    if (!after.empty() && after.front() == '=') return false;
+    if (isOperator(before) || isOperator(after)) return false;
+    return !(!before.empty() && isDigit(before.back()) && isUnit(after));
+}
+
+// The next space at or after `from` where a line may break (breaksAt). Searched up to
+// kMostMeasured bytes on: none there, it returns where the search stopped (a line that long
+// does not fit).
 std::size_t nextBreak(std::string_view text, std::size_t from) {
     const std::size_t stop = std::min(text.size(), from + kMostMeasured);
     const std::string_view searched = text.substr(0, stop);
     for (std::size_t at = searched.find(' ', from); at != std::string_view::npos; at = searched.find(' ', at + 1)) {
-        const bool besideEquals = (at > 0 && text[at - 1] == '=') || (at + 1 < text.size() && text[at + 1] == '=');
-        if (!besideEquals) return at;
+        if (breaksAt(text, at)) return at;
     }
     return stop;
 }
@@ -82,15 +125,32 @@ std::size_t lineEnd(std::string_view text, float width) {
     return end;
 }
 
-// One paragraph (no newline) as lines that fit `width`, each ended by '\n', into `out`.
+// One paragraph (no newline) as lines that fit `width`, each ended by '\n', into `out`. A
+// last line of one short word takes the word before it too, where the line before keeps two
+// or more ("v2⊥." alone under a paragraph).
 void paragraph(std::string_view text, float width, std::string& out) {
     if (text.empty()) out += '\n';
+    std::vector<std::string_view> lines;
     while (!text.empty()) {
         const std::size_t end = lineEnd(text, width);
-        out.append(text.data(), end);
-        out += '\n';
+        lines.push_back(text.substr(0, end));
         text.remove_prefix(end);
         if (!text.empty() && text.front() == ' ') text.remove_prefix(1);
+    }
+    constexpr float kWidow = 0.3f;  // of the line's width: a word that short alone on the last line
+    if (lines.size() >= 2 && nextBreak(lines.back(), 0) == lines.back().size() && widthOf(lines.back()) < kWidow * width) {
+        std::string_view& before = lines[lines.size() - 2];
+        std::size_t last = std::string_view::npos, breaks = 0;  // before's last break, and how many it has
+        for (std::size_t at = nextBreak(before, 0); at < before.size(); at = nextBreak(before, at + 1)) last = at, ++breaks;
+        const std::string_view moved(before.data() + last + 1, std::size_t(lines.back().data() + lines.back().size() - (before.data() + last + 1)));
+        if (breaks >= 2 && widthOf(moved) <= width) {
+            before = before.substr(0, last);
+            lines.back() = moved;
+        }
+    }
+    for (const std::string_view line : lines) {
+        out.append(line.data(), line.size());
+        out += '\n';
     }
 }
 
