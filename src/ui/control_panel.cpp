@@ -594,6 +594,9 @@ void measuredClaims(const Readouts& r, PanelState& state) {
     for (const char* words : {"The text, measured", "Measured"}) {
         if (r.claimsInterrupted) {
             std::snprintf(header, sizeof header, "%s: stopped; R measures again###claims", words);
+        } else if (r.claimsWatched > r.claims.size()) {  // "7 ✓ 0 ✗ of 17" read as ten claims missing
+            std::snprintf(header, sizeof header, "%s: %d \u2713 %d \u2717, %zu to come###claims", words, held,
+                          int(r.claims.size()) - held, r.claimsWatched - r.claims.size());
         } else {
             std::snprintf(header, sizeof header, "%s: %d \u2713 %d \u2717 of %zu###claims", words, held,
                           int(r.claims.size()) - held, r.claimsWatched);
@@ -762,7 +765,7 @@ UnderText underPresentedText(const std::vector<const scenes::Parameter*>& slider
         std::snprintf(status, sizeof status, "t = %.3f s, %s", r.time, paused ? "paused (P runs, O steps)" : "running");
         std::string line = status;
         if (r.timeScale != 1.0) {  // the class should know that what it sees is slowed down (or sped up)
-            std::snprintf(status, sizeof status, r.timeScale < 1.0 ? ", slow motion %.3g\u00d7" : ", %.3g\u00d7 real time",
+            std::snprintf(status, sizeof status, r.timeScale < 1.0 ? ", slow\u00a0motion\u00a0%.3g\u00d7" : ", %.3g\u00d7\u00a0real\u00a0time",
                           r.timeScale);
             line += status;
         }
