@@ -425,9 +425,11 @@ LabelsDrawn drawViewLabels(const std::vector<ViewLabel>& shown) {
     for (std::size_t k = 0; k < labels.size(); ++k) {
         const ViewLabel& label = labels[k];
         ImGui::SetNextWindowPos(ImVec2(label.topLeft.x, label.topLeft.y), ImGuiCond_Always);
-        // Sized from this frame's text (an auto-sized window lags a frame behind changing
-        // numbers), within the place the layout keeps for it: a longer line wraps.
-        const glm::vec2 size = glm::min(glm::vec2(viewLabelSize(label).x, tallest), label.room);
+        // As wide as the place the layout keeps for it (labels as wide as their text stood
+        // ragged over views of one width), as high as this frame's text (an auto-sized window
+        // lags a frame behind changing numbers): a longer line wraps.
+        const bool placed = label.room.x < 1e5f;
+        const glm::vec2 size = glm::min(glm::vec2(placed ? label.room.x : viewLabelSize(label).x, tallest), label.room);
         ImGui::SetNextWindowSize(ImVec2(size.x, size.y), ImGuiCond_Always);
         ImGui::SetNextWindowBgAlpha(0.75f);
         const std::string name = "##view label " + std::to_string(k);
