@@ -757,6 +757,10 @@ UnderText underPresentedText(const std::vector<const scenes::Parameter*>& slider
     under.notes.push_back(numbers);
     std::snprintf(numbers, sizeof numbers, "|p|\u00a0%.4g\u00a0kg\u00a0m/s", glm::length(physics::momentumShown(r.diagnostics)));
     under.notes.push_back(numbers);
+    if (!scene.emitters.empty()) {  // 12's "nearly 200 after 10 s": the count grows
+        std::snprintf(numbers, sizeof numbers, "%zu\u00a0sphere%s", r.sphereCount, r.sphereCount == 1 ? "" : "s");
+        under.notes.back() += "   " + std::string(numbers);
+    }
     if (!r.selected.empty()) under.notes.push_back(r.selected);
     // The status as it reads now, and paused: its room is the larger, so that P does not
     // move the sliders above it when the line gets shorter (a teacher saw them jump a line).
