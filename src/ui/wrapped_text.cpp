@@ -142,10 +142,13 @@ void paragraph(std::string_view text, float width, std::string& out) {
         std::string_view& before = lines[lines.size() - 2];
         std::size_t last = std::string_view::npos, breaks = 0;  // before's last break, and how many it has
         for (std::size_t at = nextBreak(before, 0); at < before.size(); at = nextBreak(before, at + 1)) last = at, ++breaks;
-        const std::string_view moved(before.data() + last + 1, std::size_t(lines.back().data() + lines.back().size() - (before.data() + last + 1)));
-        if (breaks >= 2 && widthOf(moved) <= width) {
-            before = before.substr(0, last);
-            lines.back() = moved;
+        if (breaks >= 2) {  // the lines are views of one text: the moved word, its space and the last line
+            const char* from = before.data() + last + 1;
+            const std::string_view moved(from, std::size_t(lines.back().data() + lines.back().size() - from));
+            if (widthOf(moved) <= width) {
+                before = before.substr(0, last);
+                lines.back() = moved;
+            }
         }
     }
     for (const std::string_view line : lines) {
