@@ -169,7 +169,7 @@ std::string windowOptionBeforeSubcommand(const CLI::App& cli) {
 // "--frames: needs a value", and an argument not expected points to --help.
 std::string inOurWords(const std::string& refusal) {
     static const std::regex atMost(R"(^(\S+): At Most 1 required but received (\d+)$)");
-    static const std::regex missing(R"(^(\S+): \d+ required \S+ missing$)");
+    static const std::regex missing(R"(^(\S+): \d+ required .+ missing$)");
     std::smatch m;
     if (std::regex_match(refusal, m, atMost)) return m[1].str() + ": given " + m[2].str() + " times; give it once";
     if (std::regex_match(refusal, m, missing)) return m[1].str() + ": needs a value";

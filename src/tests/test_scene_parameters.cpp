@@ -364,5 +364,6 @@ TEST(PresentedSliders, WhatTheViewsDifferInComesFirst) {
     EXPECT_EQ(std::vector<std::string>(column.begin(), column.begin() + 2), (std::vector<std::string>{"passes", "shock"}));
     EXPECT_NE(std::find(column.begin(), column.end(), "mu"), column.end()) << "a claim's μ stays, after them";
     const std::vector<std::string> bounce = sliders("02_bounce_projection");  // no views side by side: the table's order
+    ASSERT_FALSE(bounce.empty());
     EXPECT_EQ(bounce.front(), "beta");
 }

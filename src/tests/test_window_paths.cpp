@@ -257,6 +257,15 @@ TEST(WindowPaths, TheFirstScenesOwnSideBySideStopsAtTheNextPreset) {
         input.sceneChanged();
         EXPECT_EQ(views(session), asked ? 2 : 1) << (asked ? "--compare beta=0.5" : "14's own");
     }
+    // A scene's own side by side that its settings refuse is said, not dropped: 22's shock
+    // views with --set method=response-only (shock acts only with the position, velocity or
+    // reflection method).
+    scenes::Scene pyramid = scenes::loadScene(scenes::presetPath("22_shock_pyramid"));
+    ASSERT_EQ(scenes::applySetting(pyramid, "method=response-only"), "");
+    app::Simulation simulation(std::move(pyramid));
+    app::Session session(simulation);
+    app::InteractionInput input(session);
+    EXPECT_NE(input.openFirstScene({}).find("shock"), std::string::npos);
 }
 
 // Side by side with the offer, the next scene's offer replaces it ([ and ]): the cradle's

@@ -591,14 +591,14 @@ void measuredClaims(const Readouts& r, PanelState& state) {
     // Its shorter words where the whole line would not fit beside the arrow (presented at
     // 1024 px the count ran under the scroll bar: "5 ✓ 0 ✗ of").
     const float room = ImGui::GetContentRegionAvail().x - ImGui::GetFontSize() - 2.0f * ImGui::GetStyle().FramePadding.x;
-    for (const char* words : {"The text, measured", "Measured"}) {
+    for (const char* words : {"The text, measured: ", "Measured: ", ""}) {
         if (r.claimsInterrupted) {
-            std::snprintf(header, sizeof header, "%s: stopped; R measures again###claims", words);
+            std::snprintf(header, sizeof header, "%sstopped; R measures again###claims", words);
         } else if (r.claimsWatched > r.claims.size()) {  // "7 ✓ 0 ✗ of 17" read as ten claims missing
-            std::snprintf(header, sizeof header, "%s: %d \u2713 %d \u2717, %zu to come###claims", words, held,
+            std::snprintf(header, sizeof header, "%s%d \u2713 %d \u2717, %zu to come###claims", words, held,
                           int(r.claims.size()) - held, r.claimsWatched - r.claims.size());
         } else {
-            std::snprintf(header, sizeof header, "%s: %d \u2713 %d \u2717 of %zu###claims", words, held,
+            std::snprintf(header, sizeof header, "%s%d \u2713 %d \u2717 of %zu###claims", words, held,
                           int(r.claims.size()) - held, r.claimsWatched);
         }
         if (ImGui::CalcTextSize(header, nullptr, true).x <= room) break;
@@ -700,15 +700,17 @@ float heightUnderText(const std::vector<const scenes::Parameter*>& sliders, cons
                       bool labelsAbove, const UnderText& under, bool withRefusal = true) {
     const ImGuiStyle& style = ImGui::GetStyle();
     const float wrap = ImGui::GetContentRegionAvail().x;
-    const auto lines = [&](const char* text) { return ImGui::CalcTextSize(text, nullptr, false, wrap).y + style.ItemSpacing.y; };
+    const auto lines = [&](const std::string& text) {  // as wrappedColored draws it
+        return ImGui::CalcTextSize(wrapAtSpaces(text, std::max(wrap, ImGui::GetFontSize() * 4.0f)).c_str()).y + style.ItemSpacing.y;
+    };
     float below = 2.0f * style.ItemSpacing.y + lines(under.keys);
     for (const scenes::Parameter* p : sliders) {
         below += ImGui::GetFrameHeightWithSpacing() + (labelsAbove ? ImGui::GetTextLineHeightWithSpacing() : 0.0f);
-        if (withRefusal && state.refusedName == p->name && !state.refusal.empty()) below += lines(state.refusal.c_str());
+        if (withRefusal && state.refusedName == p->name && !state.refusal.empty()) below += lines(state.refusal);
     }
-    for (const std::string& note : under.notes) below += lines(note.c_str());
-    below += std::max(lines(under.status.c_str()), lines(under.statusRoom.c_str())) + under.restitutionHeight;
-    for (const std::string& alarm : under.alarms) below += lines(alarm.c_str());
+    for (const std::string& note : under.notes) below += lines(note);
+    below += std::max(lines(under.status), lines(under.statusRoom)) + under.restitutionHeight;
+    for (const std::string& alarm : under.alarms) below += lines(alarm);
     return below;
 }
 
@@ -757,9 +759,9 @@ UnderText underPresentedText(const std::vector<const scenes::Parameter*>& slider
     under.notes.push_back(numbers);
     std::snprintf(numbers, sizeof numbers, "|p|\u00a0%.4g\u00a0kg\u00a0m/s", glm::length(physics::momentumShown(r.diagnostics)));
     under.notes.push_back(numbers);
-    if (!scene.emitters.empty()) {  // 12's "nearly 200 after 10 s": the count grows
+    if (!scene.emitters.empty()) {  // 12's "nearly 200 after 10 s": the count grows, on a line of its own
         std::snprintf(numbers, sizeof numbers, "%zu\u00a0sphere%s", r.sphereCount, r.sphereCount == 1 ? "" : "s");
-        under.notes.back() += "   " + std::string(numbers);
+        under.notes.push_back(numbers);
     }
     if (!r.selected.empty()) under.notes.push_back(r.selected);
     // The status as it reads now, and paused: its room is the larger, so that P does not

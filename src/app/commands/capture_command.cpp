@@ -498,10 +498,6 @@ Capturer::Capturer(const CaptureOptions& options, const CapturePlan& plan,
         !error.empty()) {
         throw std::runtime_error(error);
     }
-    if (target_.samples() != options.samples) {  // the manifest records what the images have
-        std::printf("samples: %d per pixel (asked %d: %s)\n", target_.samples(), options.samples,
-                    target_.samples() < options.samples ? "the most this GL gives" : "the nearest count this GL gives");
-    }
     if (const std::string error = renderer_.init(); !error.empty())
         throw std::runtime_error("renderer: " + error);
     // Contacts and trails are recorded from the first step on, as in a window whose
@@ -539,6 +535,7 @@ Capturer::Capturer(const CaptureOptions& options, const CapturePlan& plan,
 // high) is refused in one line, not written as blank frames.
 void Capturer::refuseViewsTooSmall() const {
     const int count = compare_ ? compare_->comparison().count() + 1 : 1;
+    if (count == 1 && !options_.withUi) return;  // the whole image: --size's own range holds
     for (int k = 0; k < count; ++k) {
         const glm::ivec4& v = layout_.views.views[k];
         if (v.z >= kSmallestView && v.w >= kSmallestView) continue;
@@ -717,6 +714,10 @@ Json Capturer::manifest() const {
 
 int Capturer::run() {
     const auto start = std::chrono::steady_clock::now();
+    if (target_.samples() != options_.samples) {  // the manifest records what the images have
+        std::printf("samples: %d per pixel (asked %d: %s)\n", target_.samples(), options_.samples,
+                    target_.samples() < options_.samples ? "the most this GL gives" : "the nearest count this GL gives");
+    }
     int frame = 0;  // frames advanced so far; frame 0 is the initial state
     writer_ = std::make_unique<PngWriter>(std::size_t(4) * plan_.size.x * plan_.size.y);
     {
@@ -761,7 +762,8 @@ int runCapture(const CaptureOptions& options) {
     // The scale is that of the panel and of the views' labels (the scene's own side by side too).
     if (options.uiScale && !options.withUi && options.compare.empty() && scene.compare.empty())
         throw UsageError("--ui-scale sizes the panel and the views' labels, and this capture draws neither: give --with-ui");
-    Simulation simulation(std::move(scene));  // a scene it cannot build opens no GL and leaves no folder
+    // A scene it cannot build opens no GL and leaves no folder.
+    Simulation simulation = builtWithSettings(options.settings, [&] { return Simulation(std::move(scene)); });
     auto context = openContext(plan.backend, plan.size);
     const std::string backend = std::string(context->name()) + " (" + glText(GL_RENDERER) + ")";
     Capturer capturer(options, plan, std::move(context), std::move(simulation));  // refuses a size too small

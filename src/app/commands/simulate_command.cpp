@@ -39,7 +39,8 @@ int runSimulate(const SimulateOptions& options) {
     if (options.every > 0 && options.out.empty()) throw UsageError("--every needs --out FILE");
     checkWritable("--state", options.state, ".csv");
     checkWritable("--save", options.save, ".json");
-    physics::World world = scenes::buildWorld(scene);  // before the log opens: a scene it refuses leaves no .part
+    // Before the log opens: a scene it refuses leaves no .part.
+    physics::World world = builtWithSettings(options.settings, [&] { return scenes::buildWorld(scene); });
     std::optional<DiagnosticsLog> log;
     if (!options.out.empty()) log.emplace(options.out);
     const std::int64_t every = options.every > 0 ? options.every : options.steps;

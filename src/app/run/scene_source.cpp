@@ -79,6 +79,12 @@ std::string withoutGenerator(std::string reason) {
     return reason;
 }
 
+std::string settingsRefusal(const std::vector<std::string>& settings, const std::string& reason) {
+    std::string given;
+    for (const std::string& setting : settings) given += (given.empty() ? "" : " ") + setting;
+    return "--set " + given + ": the scene cannot be built: " + withoutGenerator(reason);
+}
+
 scenes::Scene loadSceneWithSettings(const std::string& nameOrPath,
                                     const std::vector<std::string>& settings) {
     const std::string path = resolveScenePath(nameOrPath);
@@ -93,15 +99,6 @@ scenes::Scene loadSceneWithSettings(const std::string& nameOrPath,
     }
     if (const std::string error = scenes::settingsThatActOnNothing(scene, settings); !error.empty()) {
         throw UsageError("--set " + error);
-    }
-    if (!settings.empty()) {  // a count the region cannot hold is the settings' doing: said as theirs
-        try {
-            scenes::buildWorld(scene);
-        } catch (const scenes::SceneError& e) {
-            std::string given;
-            for (const std::string& setting : settings) given += (given.empty() ? "" : " ") + setting;
-            throw UsageError("--set " + given + ": the scene cannot be built: " + withoutGenerator(e.what()));
-        }
     }
     return scene;
 }

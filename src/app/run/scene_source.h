@@ -25,9 +25,25 @@ bool endsWith(const std::string& s, const std::string& suffix);
 // ..." reads "the region holds only ..."), where the file's place is not news.
 std::string withoutGenerator(std::string reason);
 
+// "--set count=1000000: the scene cannot be built: the region holds only ...": the refusal
+// of a scene that `settings` left unbuildable, as theirs.
+std::string settingsRefusal(const std::vector<std::string>& settings, const std::string& reason);
+
+// Returns build() (which builds the world of a scene loaded with `settings`); a scene the
+// settings leave unbuildable (a count its region cannot hold) is refused as theirs
+// (UsageError), not as the file's. The world is built once, where it is used.
+template <class Build>
+auto builtWithSettings(const std::vector<std::string>& settings, Build build) -> decltype(build()) {
+    try {
+        return build();
+    } catch (const scenes::SceneError& e) {
+        if (settings.empty()) throw;
+        throw UsageError(settingsRefusal(settings, e.what()));
+    }
+}
+
 // `nameOrPath` is a file, or a preset name with or without its number and .json
-// ("pile", "11_pile"). Then every "name=value" of `settings` is applied, in order, and a
-// scene the settings leave unbuildable (a count its region cannot hold) is refused as theirs.
+// ("pile", "11_pile"). Then every "name=value" of `settings` is applied, in order.
 // Throws scenes::SceneError (file:line:col) or UsageError.
 scenes::Scene loadSceneWithSettings(const std::string& nameOrPath,
                                     const std::vector<std::string>& settings);

@@ -121,8 +121,9 @@ struct ViewLabel {
 // A label's size with the current font (ImGui units).
 glm::vec2 viewLabelSize(const ViewLabel& label);
 // The widest of `labels` unwrapped, rounded up to whole font sizes so that changing
-// digits do not move the views; the tallest when laid `width` wide (lines wrap), and
-// a line to spare.
+// digits do not move the views; the tallest when laid `width` wide, its lines wrapped a
+// font narrower (so that changing digits do not wrap one more) and every title as many
+// rows as the tallest title.
 float labelsWidth(const std::vector<ViewLabel>& labels);
 float labelsHeight(const std::vector<ViewLabel>& labels, float width);
 // What drawing the labels left out: labels cut (their lines taller than their room), and

@@ -99,6 +99,8 @@ std::string InteractionInput::startComparison(const std::vector<std::string>& li
 std::string InteractionInput::openFirstScene(const std::vector<std::string>& asked) {
     if (!asked.empty()) return startComparison(asked);
     sceneChanged();
+    const std::vector<std::string>& own = session_.run(0).scene().compare;
+    if (!own.empty() && !session_.comparison()) return session_.startComparison(own);  // why the scene's own is refused
     return "";
 }
 

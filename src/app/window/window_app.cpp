@@ -1,6 +1,7 @@
 #include "app/window/window_app.h"
 
 #include <algorithm>
+#include <optional>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -691,8 +692,9 @@ int runWindowApp(const WindowAppOptions& options) {
                      error.c_str(), options.program.c_str(), options.scene.c_str(), options.program.c_str());
         return 2;
     }
-    WindowApp app(std::move(window), std::move(scene), options);
-    return app.run();
+    std::optional<WindowApp> app;
+    builtWithSettings(options.settings, [&] { app.emplace(std::move(window), std::move(scene), options); });
+    return app->run();
 }
 
 }  // namespace app
