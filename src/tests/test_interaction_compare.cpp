@@ -380,20 +380,26 @@ std::vector<float> labelAbove(const nlohmann::json& manifest, int k) {
     return found;
 }
 
+// The manifest of a capture of `scene` with its panel (presented or not) at `size`, frames `at`.
+nlohmann::json capturedWithPanel(const std::string& name, const char* scene, const char* size, const char* at, bool present) {
+    const std::string out = capture_test::freshFolder(name);
+    app::CaptureOptions options = capture_test::smallCapture(scene, out, platform::HeadlessBackend::Auto);
+    options.size = size;
+    options.withUi = true;
+    options.present = present;
+    options.at = at;
+    EXPECT_EQ(app::runCapture(options), 0) << scene << " at " << size;
+    return capture_test::readManifest(out);
+}
+
 // Presented with four views, each view starts right under its label: the labels' room had a
 // whole line to spare (for digits that might wrap one more), a blank band of 48 px under
 // every label at 1920 x 1080, and the four views of 22 at 1280 x 800 went into one column of
 // small boxes. The room is now what the lines take wrapped a font narrower.
 TEST_F(CaptureCompare, PresentedViewsStartRightUnderTheirLabels) {
     for (const char* size : {"1920x1080", "1280x800"}) {
-        const std::string out = capture_test::freshFolder(std::string("compare_under_labels_") + size);
-        app::CaptureOptions options = capture_test::smallCapture("22_shock_pyramid", out, platform::HeadlessBackend::Auto);
-        options.size = size;
-        options.withUi = true;
-        options.present = true;
-        options.at = "60";
-        ASSERT_EQ(app::runCapture(options), 0) << size;
-        const nlohmann::json manifest = capture_test::readManifest(out);
+        const nlohmann::json manifest =
+            capturedWithPanel(std::string("compare_under_labels_") + size, "22_shock_pyramid", size, "60", true);
         const auto& views = manifest["layout"]["views"];
         ASSERT_EQ(views.size(), 4u) << size;
         EXPECT_EQ(views[0][1], views[1][1]) << size << ": A and B in one row (a 2 x 2 grid)";
@@ -410,13 +416,7 @@ TEST_F(CaptureCompare, PresentedViewsStartRightUnderTheirLabels) {
 // Side by side, the labels are equally tall: in 21, C's label gains a line ("most in one
 // step: 20 shock levels, 80 rounds" wraps) and had stood lower than the others.
 TEST_F(CaptureCompare, TheLabelsSideBySideAreEquallyTall) {
-    const std::string out = capture_test::freshFolder("compare_equal_labels");
-    app::CaptureOptions options = capture_test::smallCapture("21_shock_column", out, platform::HeadlessBackend::Auto);
-    options.size = "1280x720";
-    options.withUi = true;
-    options.at = "120";
-    ASSERT_EQ(app::runCapture(options), 0);
-    const nlohmann::json manifest = capture_test::readManifest(out);
+    const nlohmann::json manifest = capturedWithPanel("compare_equal_labels", "21_shock_column", "1280x720", "120", false);
     ASSERT_EQ(manifest["layout"]["views"].size(), 4u);
     const std::vector<float> a = labelAbove(manifest, 0);
     ASSERT_FALSE(a.empty());
