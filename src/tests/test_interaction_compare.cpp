@@ -14,6 +14,7 @@
 #include "app/run/session.h"
 #include "app/run/simulation.h"
 #include "app/views/frame_builder.h"
+#include "ui/control_panel.h"
 #include "physics/diagnostics.h"
 #include "scenes/presets.h"
 #include "scenes/scene_json.h"
@@ -411,6 +412,19 @@ TEST_F(CaptureCompare, PresentedViewsStartRightUnderTheirLabels) {
             EXPECT_LE(top - (label[1] + label[3]), 6.0f) << size << ": view " << k << " starts that far under its label";
         }
     }
+}
+
+// Presented with three or four views, the panel takes less of the width: at 1024x768 its
+// 45 % had left 16's four views three in a row and one under them, boxes of 185 px.
+TEST_F(CaptureCompare, PresentedWithFourViewsThePanelIsNarrower) {
+    const nlohmann::json manifest = capturedWithPanel("compare_narrow_panel", "16_bernoulli", "1024x768", "30", true);
+    const auto& views = manifest["layout"]["views"];
+    ASSERT_EQ(views.size(), 4u);
+    EXPECT_LE(int(views[0][0]), int(1024 * ui::kPresentedPanelShareManyViews) + 2) << "the views start where the panel ends";
+    EXPECT_EQ(views[0][1], views[1][1]) << "A and B in a row";
+    EXPECT_EQ(views[2][1], views[3][1]) << "C and D in a row";
+    EXPECT_NE(views[0][1], views[2][1]) << "two rows";
+    EXPECT_EQ(manifest["frames"][0]["labels_cut"], 0);
 }
 
 // Side by side, the labels are equally tall: in 21, C's label gains a line ("most in one

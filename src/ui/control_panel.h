@@ -104,6 +104,7 @@ struct PanelState {
     // Side by side: the parameters every other view sets itself, whose sliders move view A
     // alone (said under them).
     std::vector<std::string> onlyViewA;
+    int views = 1;  // side by side: how many; presented with three or more, the panel is narrower
 };
 
 // Where the last frame's wall time went. A software GL draws after the draw calls
@@ -224,6 +225,8 @@ void drawReadouts(const Readouts& readouts, PanelState& state, PanelActions& act
 
 // Width of the docked panel in ImGui units (window coordinates) for a display of
 // `displayWidth`, at the current font size; 0 when the panel is hidden.
+// The panel's width at most, as a share of the window's, presented with three or four views.
+constexpr float kPresentedPanelShareManyViews = 0.36f;
 float panelWidth(const PanelState& state, float displayWidth);
 
 }  // namespace ui

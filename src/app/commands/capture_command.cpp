@@ -506,19 +506,19 @@ Capturer::Capturer(const CaptureOptions& options, const CapturePlan& plan,
     LayoutRequest& request = request_;  // kept: the labels are measured again at every frame
     request.window = plan.size;
     request.gap = kViewGap;
-    const ui::PanelState view = captureView(colorBy_, plan.overlays, options.uiScale.value_or(1.0f), options.present,
-                                              plan.size.y);
-    if (options.withUi) {
-        ui_ = std::make_unique<UiOverlay>(plan.size, view, scenePath_);
-        ui_->measure(request);
-    }
+    ui::PanelState view = captureView(colorBy_, plan.overlays, options.uiScale.value_or(1.0f), options.present,
+                                      plan.size.y);
     // --compare, or else the scene's own "compare".
     const std::vector<std::string>& compare = options.compare.empty() ? simulation_.scene().compare : options.compare;
     if (!compare.empty()) {
         compare_ = std::make_unique<CaptureComparison>(simulation_, compare, plan.size, view.uiScale, view.present);
-        request.views = compare_->views();
-        compare_->sizeLabels(simulation_, request);
+        view.views = request.views = compare_->views();
     }
+    if (options.withUi) {
+        ui_ = std::make_unique<UiOverlay>(plan.size, view, scenePath_);
+        ui_->measure(request);
+    }
+    if (compare_) compare_->sizeLabels(simulation_, request);
     camera_ = sceneCameraAngles(simulation_.scene());
     if (plan.camera) {
         camera_.azimuth = float(glm::radians(plan.camera->azimuthDeg));

@@ -530,6 +530,7 @@ void WindowApp::frame(double dt) {
     timing_.steppingMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - stepping).count();
     profile_.lap(FrameProfile::Stepping);
     if (input_.takeFoldReadouts()) panel_.readoutsOpen = false;  // the views' labels carry them
+    panel_.views = session_.runCount();  // this frame's: presented, the panel narrows with three views or more
     makeLabels();  // once a frame: the layout measures them, the windows draw them
     const WindowLayout placed = layout();
     followViewShape(placed.views);
