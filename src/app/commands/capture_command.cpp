@@ -539,11 +539,10 @@ void Capturer::refuseViewsTooSmall() const {
     for (int k = 0; k < count; ++k) {
         const glm::ivec4& v = layout_.views.views[k];
         if (v.z >= kSmallestView && v.w >= kSmallestView) continue;
-        const std::string what = count == 1 ? "the view" : std::to_string(count) + " views side by side";
-        throw UsageError("--size " + options_.size + ": too small for " + what + (options_.withUi || count > 1 ? " with " : "") +
-                         (options_.withUi ? "the panel" : "") + (options_.withUi && count > 1 ? " and " : "") +
-                         (count > 1 ? "their labels" : "") + " (a view would be " + std::to_string(v.z) + " x " +
-                         std::to_string(v.w) + " px); give a larger --size, e.g. 1280x720");
+        const std::string views = count == 1 ? "the view" : std::to_string(count) + " views side by side";
+        const std::string beside = !options_.withUi ? "their labels" : count == 1 ? "the panel" : "the panel and their labels";
+        throw UsageError("--size " + options_.size + ": too small for " + views + " with " + beside + " (a view would be " +
+                         std::to_string(v.z) + " x " + std::to_string(v.w) + " px); give a larger --size, e.g. 1280x720");
     }
 }
 
