@@ -137,6 +137,18 @@ std::string sessionOnTheColumn(const std::string& options, const std::string& ke
            keys + press("ctrl+q") + "wait $pid\n";
 }
 
+// xdotool's lines that type `value` into the slider at (x, y) as a student does: Ctrl+click
+// opens its field, Ctrl+A selects the text, the keys typed, then Enter ("" types nothing:
+// Enter alone). Every key and button is held 0.3 s, and the characters go 0.1 s apart: a
+// window slowed by other work (the unit tests beside it) may take that long for a frame,
+// and ImGui misses a press released within one.
+std::string typedIntoSlider(int x, int y, const std::string& value) {
+    return "xdotool mousemove " + std::to_string(x) + " " + std::to_string(y) +
+           " sleep 0.3 keydown ctrl sleep 0.3 mousedown 1 sleep 0.3 mouseup 1 sleep 0.3 keyup ctrl sleep 0.5\n" +
+           press("ctrl+a") + (value.empty() ? std::string() : "xdotool type --delay 100 " + value + "\n") +
+           "xdotool sleep 0.3\n" + press("Return");
+}
+
 bool orange(glm::u8vec4 p) { return p.x > 200 && p.y > 120 && p.y < 190 && p.z < 110; }  // the panel's refusals
 
 // A student drags the pile's N to a count the region cannot hold (typed here, Ctrl +
@@ -156,9 +168,8 @@ TEST(WindowInteraction, ACountThePileCannotHoldIsRefusedUnderItsSliderAndTheWind
                   "w=$(timeout 30 xdotool search --sync --onlyvisible --name 'Rigid Spheres')\n"
                   "xdotool windowfocus --sync $w; sleep 3\n"
                   "xdotool mousemove 200 500 sleep 0.3 click --repeat 3 --delay 30 5 sleep 1\n"
-                  "xdotool mousemove 88 715 sleep 0.3 keydown ctrl click 1 keyup ctrl sleep 0.5 key ctrl+a\n"
-                  "xdotool type --delay 50 7483\n"  // type takes every argument after it as text
-                  "xdotool keydown Return sleep 0.3 keyup Return sleep 0.5 mousemove 700 300 sleep 2 \\\n"
+                  + typedIntoSlider(88, 715, "7483") +
+                  "xdotool mousemove 700 300 sleep 2 \\\n"
                   "  keydown F12 sleep 0.3 keyup F12 sleep 2 keydown ctrl+q sleep 0.3 keyup ctrl+q\n"
                   "wait $pid\n");
     ASSERT_TRUE(WIFEXITED(status));
@@ -187,11 +198,7 @@ TEST(WindowInteraction, ACountThePileCannotHoldIsRefusedUnderItsSliderAndTheWind
 TEST(WindowInteraction, ANumberTypedIntoASliderCountsWhenEnterIsPressed) {
     if (!haveXvfb() || !haveXdotool()) GTEST_SKIP() << "xvfb-run or xdotool not found";
     const fs::path folder = fs::path(SPHERES_TEST_OUTPUT_DIR) / "window_typed_value";
-    const auto typeInto = [](int y, const std::string& value) {  // "": Enter alone
-        return "xdotool mousemove 86 " + std::to_string(y) + " sleep 0.3 keydown ctrl click 1 keyup ctrl sleep 0.5 key ctrl+a\n" +
-               (value.empty() ? std::string() : "xdotool type --delay 300 " + value + "\n") +
-               "xdotool keydown Return sleep 0.3 keyup Return sleep 1\n";
-    };
+    const auto typeInto = [](int y, const std::string& value) { return typedIntoSlider(86, y, value); };
     // The run's parameters as Save state wrote them after `typing`.
     const auto saved = [&](const std::string& name, const std::string& typing) {
         const fs::path file = folder / (name + ".json");
