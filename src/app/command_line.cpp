@@ -166,14 +166,18 @@ std::string windowOptionBeforeSubcommand(const CLI::App& cli) {
 
 // CLI11's refusals in the words of the others: "--scene: At Most 1 required but received 2"
 // reads "--scene: given 2 times; give it once", "--frames: 1 required INT:INT>=1 missing" reads
-// "--frames: needs a value", and an argument not expected points to --help.
-std::string inOurWords(const std::string& refusal) {
+// "--frames: needs a value", and an argument not expected points to the help of the command
+// it was given to (`spheres capture --help` after `capture`).
+std::string inOurWords(const std::string& refusal, const CLI::App& cli) {
     static const std::regex atMost(R"(^(\S+): At Most 1 required but received (\d+)$)");
     static const std::regex missing(R"(^(\S+): \d+ required .+ missing$)");
     std::smatch m;
     if (std::regex_match(refusal, m, atMost)) return m[1].str() + ": given " + m[2].str() + " times; give it once";
     if (std::regex_match(refusal, m, missing)) return m[1].str() + ": needs a value";
-    if (refusal.rfind("The following argument", 0) == 0) return refusal + " (see spheres --help)";
+    if (refusal.rfind("The following argument", 0) == 0) {
+        const std::vector<CLI::App*> chosen = cli.get_subcommands();
+        return refusal + " (see spheres " + (chosen.empty() ? "" : chosen.front()->get_name() + " ") + "--help)";
+    }
     return refusal;
 }
 
@@ -196,7 +200,7 @@ int runCommandLine(int argc, char** argv) {
         return cli.exit(e);
     } catch (const CLI::ParseError& e) {
         const std::string misplaced = windowOptionBeforeSubcommand(cli);
-        return fail(misplaced.empty() ? inOurWords(e.what()) : misplaced, kBadInput);
+        return fail(misplaced.empty() ? inOurWords(e.what(), cli) : misplaced, kBadInput);
     }
     if (const std::string misplaced = windowOptionBeforeSubcommand(cli); !misplaced.empty()) {
         return fail(misplaced, kBadInput);
