@@ -613,21 +613,35 @@ class SceneReader {
     std::string file_;
 };
 
-// `text` with each byte that is not part of a UTF-8 character written as \xFF: a binary
-// file's last byte read had been printed raw, as a replacement mark or worse.
+// The length in bytes of the character at text[at] when it is printable UTF-8 (a tab, or
+// U+0020 on, without DEL and the C1 controls), else 0: a byte out of place, a character cut
+// short, an overlong form, a surrogate or a code point past U+10FFFF.
+std::size_t printableCharacterLength(const std::string& text, std::size_t at) {
+    const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[at + k]); };
+    const std::size_t length = byte(0) < 0x80 ? 1 : (byte(0) >> 5) == 0x6 ? 2 : (byte(0) >> 4) == 0xE ? 3 : (byte(0) >> 3) == 0x1E ? 4 : 0;
+    if (length == 0 || at + length > text.size()) return 0;
+    char32_t code = length == 1 ? byte(0) : byte(0) & (0x7F >> length);
+    for (std::size_t k = 1; k < length; ++k) {
+        if ((byte(k) & 0xC0) != 0x80) return 0;
+        code = (code << 6) | (byte(k) & 0x3F);
+    }
+    constexpr char32_t kLeast[] = {0, 0, 0x80, 0x800, 0x10000};  // below these, an overlong form
+    const bool valid = code >= kLeast[length] && code <= 0x10FFFF && (code < 0xD800 || code > 0xDFFF);
+    const bool printable = code == '\t' || (code >= 0x20 && (code < 0x7F || code > 0x9F));
+    return valid && printable ? length : 0;
+}
+
+// `text` with each byte that is not part of a printable UTF-8 character written as \xFF:
+// a binary file's last byte read had been printed raw, as a replacement mark or worse.
 std::string bytesShown(const std::string& text) {
     std::string shown;
     for (std::size_t at = 0; at < text.size();) {
-        const auto byte = static_cast<unsigned char>(text[at]);
-        const std::size_t length = byte < 0x80 ? 1 : (byte >> 5) == 0x6 ? 2 : (byte >> 4) == 0xE ? 3 : (byte >> 3) == 0x1E ? 4 : 0;
-        bool whole = length > 0 && at + length <= text.size();
-        for (std::size_t k = 1; whole && k < length; ++k) whole = (static_cast<unsigned char>(text[at + k]) & 0xC0) == 0x80;
-        if (whole && (byte >= 0x20 || byte == '\t')) {
+        if (const std::size_t length = printableCharacterLength(text, at); length > 0) {
             shown.append(text, at, length);
             at += length;
         } else {
             char escaped[8];
-            std::snprintf(escaped, sizeof escaped, "\\x%02X", byte);
+            std::snprintf(escaped, sizeof escaped, "\\x%02X", static_cast<unsigned char>(text[at]));
             shown += escaped;
             ++at;
         }

@@ -48,6 +48,15 @@ TEST(SceneFile, RefusesJsonSyntaxErrorsAtTheirLine) {
     EXPECT_NE(binary.find("last read: '\\xFF'"), std::string::npos) << binary;
     const std::string accented = errorOf("{\"title\": \"caf\xc3\xa9\" x}");
     EXPECT_NE(accented.find("caf\xc3\xa9"), std::string::npos) << accented;
+    // So is each byte of what UTF-8 decoders refuse or a terminal acts on (the parser stops at
+    // the first it refuses itself): an overlong '/', a C1 control (NEL), a surrogate.
+    for (const auto& [bytes, shown] : {std::pair{"\xc0\xaf", "a\\xC0"}, {"\xc2\x85", "a\\xC2\\x85"},
+                                       {"\xed\xa0\x80", "a\\xED"}}) {
+        const std::string said = errorOf(std::string("{\"title\": \"a") + bytes + "\" x}");
+        EXPECT_NE(said.find(shown), std::string::npos) << said;
+        EXPECT_TRUE(std::all_of(said.begin(), said.end(), [](char c) { return static_cast<unsigned char>(c) < 0x80; }))
+            << said;
+    }
 }
 
 // What is no file at all is refused before it is read: /dev/zero, typed into the window's
