@@ -458,4 +458,9 @@ TEST(InspectorNumbers, TheSelectedSpheresSpeedIsALineOfThePresentedPanel) {
     fewer.select(0);
     other.editableWorld().velocity[0] = {0.0, 0.0, -0.006};
     EXPECT_EQ(app::selectedSpeedLine(fewer), "sphere #0: |v|\u00a00.6 cm/s");
+    // Side by side, the sphere as the view it was clicked in runs it, and that view named.
+    ASSERT_EQ(fewer.startComparison({"beta=0.5"}), "");
+    fewer.run(1).editableWorld().velocity[0] = {0.0, 0.0, -0.05};
+    fewer.select(0, 1);
+    EXPECT_EQ(app::selectedSpeedLine(fewer), "sphere #0 in view B: |v|\u00a05.00 cm/s");
 }

@@ -142,9 +142,10 @@ CanvasPoint canvasPoint(const LiveView& v, float x, float y, int width, int heig
                                         glm::vec2(float(cell.width), float(cell.height)))};
 }
 
-// Selects sphere `index` (-1: none) and explains its first latest contact.
-void selectSphere(LiveView& v, int index) {
-    v.session->select(index);
+// Selects sphere `index` (-1: none) as seen in `view` (side by side, each run has its own)
+// and explains its first latest contact.
+void selectSphere(LiveView& v, int index, int view = 0) {
+    v.session->select(index, view);
     v.look.selectedSphere = index;
     v.explainIndex = 0;
 }
@@ -176,7 +177,8 @@ const physics::ContactEvent* explained(LiveView& v) {
     return &events[std::size_t(v.explainIndex)];
 }
 
-// The selected sphere, as the window's inspector shows it: {"index", "p" (m), "v" (m/s), "speed"
+// The selected sphere, as the window's inspector shows it, in the view it was clicked in:
+// {"index", "view" (side by side: its letter, as "B"), "p" (m), "v" (m/s), "speed"
 // (|v| in the unit that gives it digits, app::speedText),
 // "r" (m), "m" (kg), "state", "level" (the contact graph's, with shock propagation or its
 // overlay; -1 none; absent otherwise), "contacts": {"count", "recorded", "frame_recalled"
@@ -184,7 +186,7 @@ const physics::ContactEvent* explained(LiveView& v) {
 // with the numbers of one latest contact)}; null when none is selected.
 Json selectedOf(LiveView& v) {
     const int i = v.session->selected();
-    const app::Simulation& run = *v.simulation;
+    const app::Simulation& run = v.session->run(v.session->selectedView());
     const physics::World& world = run.world();
     if (i < 0 || std::size_t(i) >= world.size()) return nullptr;
     const auto vec = [](const glm::dvec3& a) { return Json::array({a.x, a.y, a.z}); };
@@ -195,6 +197,7 @@ Json selectedOf(LiveView& v) {
                    {"r", world.radius[std::size_t(i)]},
                    {"m", world.mass[std::size_t(i)]},
                    {"state", app::contactStateName(world.contactState[std::size_t(i)])}};
+    if (v.session->comparison()) sphere["view"] = std::string(1, char('A' + v.session->selectedView()));
     if (run.params().shock == physics::ShockPropagation::On || run.overlayFlags().graph) {
         sphere["level"] = run.contactGraph().level[std::size_t(i)];
     }
@@ -364,7 +367,7 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_pick(float x, float y, int width, int h
     if (!v.session || !onCanvas(x, y)) return answer({{"selected", -1}});
     const CanvasPoint at = canvasPoint(v, x, y, width, height);
     const int hit = app::pickSphere(v.session->run(at.view).world(), at.ray);
-    selectSphere(v, hit);
+    selectSphere(v, hit, at.view);
     return answer({{"selected", hit}});
 }
 
@@ -379,7 +382,7 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_grab(float x, float y, int width, int h
     if (hit < 0 || !v.session->beginDrag(at.view, std::size_t(hit), at.ray, v.camera.forward(), seconds)) {
         return answer({{"grabbed", -1}});
     }
-    selectSphere(v, hit);
+    selectSphere(v, hit, at.view);
     return answer({{"grabbed", hit}});
 }
 
@@ -413,7 +416,7 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_shoot(float x, float y, int width, int 
         return answer({{"error", "a shot's speed is from 0 to " + std::to_string(int(app::kEditSpeed)) + " m/s"}});
     }
     if (const std::string refusal = v.session->shoot(aim, speed); !refusal.empty()) return answer({{"error", refusal}});
-    selectSphere(v, v.session->selected());
+    selectSphere(v, v.session->selected(), v.session->selectedView());
     return answer({{"shot", v.session->selected()}});
 }
 

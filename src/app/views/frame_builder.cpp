@@ -114,7 +114,8 @@ std::string selectedSpeedLine(const Session& session) {
     const int sphere = session.selected();
     const physics::World& world = session.run(session.selectedView()).world();
     if (sphere < 0 || std::size_t(sphere) >= world.size()) return "";
-    return "sphere #" + std::to_string(sphere) + ": |v|\u00a0" + speedText(glm::length(world.velocity[std::size_t(sphere)]));
+    const std::string view = session.comparison() ? std::string(" in view ") + char('A' + session.selectedView()) : "";
+    return "sphere #" + std::to_string(sphere) + view + ": |v|\u00a0" + speedText(glm::length(world.velocity[std::size_t(sphere)]));
 }
 
 ui::Readouts makeReadouts(const Simulation& simulation, const ui::FrameTimes& timing, const Comparison* comparison) {

@@ -42,8 +42,9 @@ void buildSnapshot(Simulation& simulation, const ui::PanelState& view, render::F
 // text that the other views measure are listed too, each with its view's letter.
 ui::Readouts makeReadouts(const Simulation& simulation, const ui::FrameTimes& timing,
                           const Comparison* comparison = nullptr);
-// "sphere #12: |v| 0.59 cm/s" for the session's selected sphere, as its view runs it; "" when
-// none is selected (ui::Readouts::selected).
+// "sphere #12: |v| 0.59 cm/s" for the session's selected sphere, as the view it was clicked
+// in runs it (side by side: "sphere #12 in view B: ..."); "" when none is selected
+// (ui::Readouts::selected).
 std::string selectedSpeedLine(const Session& session);
 // Only the claims' part of them: r.claims and claimsWatched (every view's), and
 // claimsForOtherSettings and claimsInterrupted (view A's: the views are edited together).

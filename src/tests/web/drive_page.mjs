@@ -305,6 +305,23 @@ try {
   const marks = await js("({ shown: !document.getElementById('marks-help').hidden, text: document.getElementById('marks-text').textContent })");
   check('side by side, the page says what the labels\' marks mean', marks.shown && marks.text.startsWith("Smith et al.'s five properties") &&
         marks.text.includes('positivity'), JSON.stringify(marks).slice(0, 120));
+  // A click in view B selects the sphere as view B runs it, and the inspector says which view
+  // (the page had always shown view A's).
+  const inB = await js(`(() => {
+    const b = document.getElementById('view').getBoundingClientRect();
+    for (let y = b.height * 0.2; y < b.height * 0.9; y += 8) for (let x = b.width * 0.55; x < b.width * 0.95; x += 8) {
+      const hit = JSON.parse(call('spheres_pick', 'string', ['number', 'number', 'number', 'number'], [x, y, b.width, b.height])).selected;
+      if (hit >= 0) { call('spheres_select', 'string', ['number'], [-1]); return [b.left + x, b.top + y, hit]; }
+    }
+    return null; })()`);
+  check('a sphere is in view B', inB !== null);
+  if (inB) {
+    await click(inB[0], inB[1]);
+    const picked = (await until((s) => s.selected && s.selected.index === inB[2])).selected;
+    const title = await text('inspected');
+    check('a click in view B selects its sphere there, and the inspector says so', picked && picked.view === 'B' &&
+          title === 'Sphere #' + inB[2] + ' in view B', JSON.stringify(picked && picked.view) + ', ' + title);
+  }
   // R with the pair order's list focused (its name clicked) restarts and changes no setting:
   // the list's type-ahead had picked "reversed".
   const order = () => js("JSON.parse(call('spheres_parameters', 'string', [], [])).find((p) => p.name === 'order').value");
