@@ -613,7 +613,8 @@ std::string legendOf(const LiveView& v, std::size_t spheres) {
 
 extern "C" {
 
-// The run now: {"time_s", "steps", "spheres", "hash", "paused" (by the page, or by an
+// The run now: {"time_s", "steps", "spheres", "emits" (the scene has an emitter: its count
+// grows), "hash", "paused" (by the page, or by an
 // alarm: a value not finite), "time_scale", "camera": {"azimuth_rad", "elevation_rad",
 // "distance_m"}, "kinetic_J", "potential_J", "momentum_kg_m_s" ([x, y, z], physics::momentumShown), "penetration_r",
 // "behind_real_time", "views" (side by side: each view's label lines and its presented ones, viewsOf), "only_view_a"
@@ -630,6 +631,7 @@ EMSCRIPTEN_KEEPALIVE const char* spheres_state() {
     return answer({{"time_s", world.time},
                    {"steps", world.stepCount},
                    {"spheres", world.size()},
+                   {"emits", !v.simulation->scene().emitters.empty()},
                    {"hash", web::hexHash(d.hash)},
                    {"paused", v.simulation->paused},
                    {"time_scale", v.simulation->timeScale},

@@ -355,6 +355,7 @@ try {
   const scrolled = () => js(`(() => { const t = document.getElementById('text');
     return { top: t.scrollTop, height: t.clientHeight, end: t.scrollHeight - t.clientHeight }; })()`);
   const unpaged = await scrolled();
+  const unpagedState = await text('present-state');
   const box = await js(`(() => { const t = document.getElementById('text');
     return { height: t.clientHeight, line: parseFloat(getComputedStyle(t).lineHeight) }; })()`);
   const lines = box.height / box.line;  // within half a pixel of whole lines (a cut line was about a pixel)
@@ -369,6 +370,15 @@ try {
   check('Page Down moves the presented text on (a page, or to its end), Page Up back', unpaged.end > 1 &&
         unpaged.top === 0 && paged.top >= Math.min(unpaged.height / 2, unpaged.end - 1) && back.top === 0,
         JSON.stringify({ unpaged, paged, back }));
+  // Presented, the rain's count grows on a line of its own (its text says "nearly 200 after
+  // 10 s", and the readouts are hidden), as the desktop's; the column emits nothing and has none.
+  await navigate('scene=12_rain&present');
+  const rain = await until((s) => s.spheres > 1, 30000);
+  const rainState = await text('present-state');
+  const count = rainState.match(/\n(\d+)\u00a0spheres\b/);  // the page may have emitted more since
+  check('presented, the rain shows its sphere count', count !== null && Number(count[1]) >= rain.spheres,
+        JSON.stringify(rainState) + ', ' + rain.spheres + ' in its state');
+  check('and a scene that emits nothing shows none', !unpagedState.includes('spheres'), JSON.stringify(unpagedState));
   // Four views on a narrow page (800 x 1000: four columns were 100 px wide) or a laptop's
   // (1280 x 720) go in two rows of two, each label over its quarter; on a wide and low page
   // (1600 x 600) in one row again.
