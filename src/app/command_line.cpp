@@ -181,6 +181,14 @@ std::string inOurWords(const std::string& refusal, const CLI::App& cli) {
     return refusal;
 }
 
+// What CLI11 refused, an argument it did not expect named first: `capture --scen 07` had
+// said "--scene is required", the slip itself unnamed.
+std::string unexpectedFirst(const CLI::App& cli, const CLI::ParseError& refusal) {
+    const std::vector<std::string> unexpected = cli.remaining(true);
+    if (unexpected.empty()) return refusal.what();
+    return CLI::ExtrasError({unexpected.rbegin(), unexpected.rend()}).what();  // it joins them backwards
+}
+
 }  // namespace
 
 int runCommandLine(int argc, char** argv) {
@@ -200,7 +208,7 @@ int runCommandLine(int argc, char** argv) {
         return cli.exit(e);
     } catch (const CLI::ParseError& e) {
         const std::string misplaced = windowOptionBeforeSubcommand(cli);
-        return fail(misplaced.empty() ? inOurWords(e.what(), cli) : misplaced, kBadInput);
+        return fail(misplaced.empty() ? inOurWords(unexpectedFirst(cli, e), cli) : misplaced, kBadInput);
     }
     if (const std::string misplaced = windowOptionBeforeSubcommand(cli); !misplaced.empty()) {
         return fail(misplaced, kBadInput);

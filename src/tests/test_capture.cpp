@@ -392,6 +392,9 @@ TEST(CommandLine, RefusedInputIsOneLineNamingItAndLeavesNothing) {
         {"--version", "spheres: The following argument was not expected: --version (see spheres --help)"},
         {"simulate --scene cradle --steps 1 --verbose",
          "spheres: The following argument was not expected: --verbose (see spheres simulate --help)"},
+        // A slip in an option's name is named, before the option it missed.
+        {"capture --scen cradle --at 0 --out '" + folder + "/frames'",
+         "spheres: The following arguments were not expected: --scen cradle (see spheres capture --help)"},
     };
     const std::string display = std::getenv("DISPLAY") ? std::getenv("DISPLAY") : "";
     unsetenv("DISPLAY");  // the screenshot's window cannot open
