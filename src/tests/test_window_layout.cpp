@@ -12,6 +12,9 @@
 
 #include "app/views/window_layout.h"
 #include "app/window/short_key_presses.h"
+#include "scenes/presets.h"
+#include "scenes/scene_json.h"
+#include "ui/control_panel.h"
 #include "ui/tooltip_timing.h"
 #include "ui/wrapped_text.h"
 
@@ -291,6 +294,54 @@ TEST(Tooltips, ALongTextStaysWithinTheDisplay) {
     ImGui::NewFrame();  // a short one keeps the panel's type
     EXPECT_EQ(ui::showTooltip("short"), 1.0f);
     ImGui::Render();
+}
+
+// Presented at 1280x800, where the sliders under the text begin (px from the top): a few
+// frames, as the window draws them (the text's fold takes the frame before's height).
+float presentedSlidersTop(const scenes::Scene& scene, const ui::Readouts& readouts) {
+    ui::PanelState state;
+    state.present = true;
+    double timeScale = 1.0;
+    for (int frame = 0; frame < 3; ++frame) {
+        ImGui::NewFrame();
+        ui::drawControlPanel(scene, timeScale, readouts, state, {});
+        ImGui::Render();
+    }
+    return state.presentedSlidersTop;
+}
+
+// A click on a sphere, presented, moved the sliders under the text up a line: its |v| line
+// appeared under them (07's text asks the class to click one). The line is kept while none
+// is selected, saying what a click shows; and P keeps them too ("running (P pauses)" and
+// "paused (P runs, O steps)" take the same room).
+TEST(PresentedPanel, AClickOnASphereOrPMovesNoSlider) {
+    struct Context {
+        ImGuiContext* context = ImGui::CreateContext();
+        ~Context() { ImGui::DestroyContext(context); }
+    } guard;
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr;
+    io.DisplaySize = ImVec2(1280.0f, 800.0f);
+    io.DeltaTime = 1.0f / 60.0f;
+    unsigned char* pixels = nullptr;
+    int width = 0, height = 0;
+    io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);
+    const scenes::Scene scene = scenes::loadScene(scenes::presetPath("07_inclined_plane"));
+    ui::Readouts readouts;
+    readouts.time = 0.633;
+    const float none = presentedSlidersTop(scene, readouts);
+    ASSERT_GT(none, 100.0f) << "under the text";
+    readouts.selected = "sphere #0: |v|\u00a00.599 cm/s";
+    EXPECT_EQ(presentedSlidersTop(scene, readouts), none);
+    readouts.paused = true;
+    EXPECT_EQ(presentedSlidersTop(scene, readouts), none);
+    // A text that asks for no click keeps no line for it: the sliders go up a line.
+    const scenes::Scene other = scenes::loadScene(scenes::presetPath("02_bounce_projection"));
+    readouts.paused = false;
+    readouts.selected.clear();
+    const float otherNone = presentedSlidersTop(other, readouts);
+    readouts.selected = "sphere #0: |v|\u00a01.00 m/s";
+    EXPECT_LT(presentedSlidersTop(other, readouts), otherNone);
 }
 
 #if IMGUI_VERSION_NUM < 18700  // ShortKeyPresses does nothing from 1.87 on

@@ -31,6 +31,9 @@ std::string colourLegend(const PanelState& state, bool presented) {
 
 // Under a slider side by side: the other views keep the value their overrides give them.
 constexpr const char* kOnlyViewA = "view A only: the other views set their own";
+// Presented, where no sphere is selected and the text asks for a click (in grey).
+constexpr const char* kClickASphere = "click a sphere: its |v| shows here";
+bool asksToClickASphere(const scenes::Scene& scene) { return scene.description.find("click") != std::string::npos; }
 
 const ImVec4 kAlarmLit{1.0f, 0.30f, 0.25f, 1.0f};     // red, readable on the dark panel
 const ImVec4 kNoteOrange{1.0f, 0.55f, 0.2f, 1.0f};    // paused, behind real time: the run's state
@@ -763,12 +766,18 @@ UnderText underPresentedText(const std::vector<const scenes::Parameter*>& slider
         std::snprintf(numbers, sizeof numbers, "%zu\u00a0sphere%s", r.sphereCount, r.sphereCount == 1 ? "" : "s");
         under.notes.push_back(numbers);
     }
-    if (!r.selected.empty()) under.notes.push_back(r.selected);
+    // The clicked sphere's |v|. A text that asks the class to click one (07's "click one: the
+    // inspector's |v|") keeps its line, saying how, so that the click moves no slider up.
+    if (!r.selected.empty()) {
+        under.notes.push_back(r.selected);
+    } else if (asksToClickASphere(scene)) {
+        under.notes.push_back(kClickASphere);
+    }
     // The status as it reads now, and paused: its room is the larger, so that P does not
     // move the sliders above it when the line gets shorter (a teacher saw them jump a line).
     const auto statusLine = [&](bool paused) {
         char status[128];
-        std::snprintf(status, sizeof status, "t = %.3f s, %s", r.time, paused ? "paused (P runs, O steps)" : "running");
+        std::snprintf(status, sizeof status, "t = %.3f s, %s", r.time, paused ? "paused (P runs, O steps)" : "running (P pauses)");
         std::string line = status;
         if (r.timeScale != 1.0) {  // the class should know that what it sees is slowed down (or sped up)
             std::snprintf(status, sizeof status, r.timeScale < 1.0 ? ", slow\u00a0motion\u00a0%.3g\u00d7" : ", %.3g\u00d7\u00a0real\u00a0time",
@@ -859,11 +868,12 @@ void presentedPanel(const scenes::Scene& scene, const Readouts& readouts, const 
     ImGui::EndChild();
     ImGui::SetCursorPosY(ImGui::GetCursorPosY() + cut);  // the keys stay at the bottom (a Dummy adds a spacing)
     ImGui::Separator();
+    state.presentedSlidersTop = ImGui::GetCursorScreenPos().y;
     drawSliders(0, inSight, restitutionInSight);
     // The numbers the texts point at and the run's state in the body's white: grey washes out
     // on a projector (a teacher measured them at 4.8:1 against 21:1 for the text).
     const ImVec4 white = ImGui::GetStyleColorVec4(ImGuiCol_Text), grey = ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled);
-    for (const std::string& note : under.notes) wrappedColored(note == kOnlyViewA ? grey : white, note);
+    for (const std::string& note : under.notes) wrappedColored(note == kOnlyViewA || note == kClickASphere ? grey : white, note);
     wrappedColored(readouts.paused || readouts.behindRealTime ? kNoteOrange : white, under.status);
     const float wrap = ImGui::GetContentRegionAvail().x;
     const float spare = ImGui::CalcTextSize(under.statusRoom.c_str(), nullptr, false, wrap).y -

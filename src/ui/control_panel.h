@@ -51,6 +51,7 @@ struct PanelState {
     bool yieldsToExplainer = false;
     bool readoutsOpen = false;  // the readouts unfolded (numbers and plots); folded: one line
     float presentedContentHeight = 1e9f;  // px, the presented text's scrolled content in the last frame
+    float presentedSlidersTop = 0.0f;     // px from the display's top: where the sliders under it began
     float uiScale = 1.0f;      // multiplies the font size
     int colorBy = 2;           // render::ColorBy: 0 id, 1 speed, 2 contact state, 3 penetration
     bool showBox = true;

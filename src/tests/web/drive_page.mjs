@@ -410,6 +410,20 @@ try {
   const wide = await rows(1600, 600);
   check('and in one row on a wide and low one', !wide.two && wide.dTop < 4, JSON.stringify(wide));
   await send('Emulation.clearDeviceMetricsOverride');
+  // Presented, 07's text asks the class to click a sphere: the line its |v| takes is kept,
+  // saying how, so that selecting one moves no slider (it moved them up a line).
+  await navigate('scene=07_inclined_plane&present');
+  await until((s) => s.time_s > 0, 30000);
+  await sleep(300);
+  const sliderTop = () => js("document.querySelector('#controls label[data-named=true]').getBoundingClientRect().top");
+  const unselected = { top: await sliderTop(), state: await text('present-state') };
+  await js("call('spheres_select', 'string', ['number'], [0])");
+  await until((s) => s.selected && s.selected.index === 0);
+  await sleep(300);  // a frame draws the state
+  const selected = { top: await sliderTop(), state: await text('present-state') };
+  check('presented, 07 says what a click shows, and a selected sphere moves no slider',
+        unselected.state.includes('click a sphere: its |v| shows here') && selected.state.includes('sphere #0: |v|') &&
+        Math.abs(selected.top - unselected.top) < 0.5, JSON.stringify({ unselected, selected }));
 } catch (error) {
   check('the page answers', false, String(error));
 }
