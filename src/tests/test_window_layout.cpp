@@ -252,23 +252,30 @@ TEST(WrappedText, KeepsNameEqualsValueWholeAndCutsAWordWiderThanTheLine) {
     ImGui::DestroyContext(context);
 }
 
+// An ImGui context of a display's size (px) with the default font, for the panel's layout.
+struct ImGuiWithoutAWindow {
+    ImGuiContext* context = ImGui::CreateContext();
+    ImGuiWithoutAWindow(float width, float height) {
+        ImGuiIO& io = ImGui::GetIO();
+        io.IniFilename = nullptr;  // writes no imgui.ini where the tests run
+        io.DisplaySize = ImVec2(width, height);
+        io.DeltaTime = 1.0f / 60.0f;
+        unsigned char* pixels = nullptr;
+        int w = 0, h = 0;
+        io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);  // builds the default font
+    }
+    ~ImGuiWithoutAWindow() { ImGui::DestroyContext(context); }
+    ImGuiWithoutAWindow(const ImGuiWithoutAWindow&) = delete;
+    ImGuiWithoutAWindow& operator=(const ImGuiWithoutAWindow&) = delete;
+};
+
 // A tooltip stays on the display: a view label's five properties, in a projector's large
 // type, ran off its right side and its foot. Wrapped at 45 % of the display's width at most,
 // and set in smaller type (to half) where it would be taller than 85 % of its height, as
 // measured in the lines it is drawn in: long paragraphs and short lines alike.
 TEST(Tooltips, ALongTextStaysWithinTheDisplay) {
-    struct Context {
-        ImGuiContext* context = ImGui::CreateContext();
-        ~Context() { ImGui::DestroyContext(context); }
-    } guard;
-    ImGuiIO& io = ImGui::GetIO();
-    io.IniFilename = nullptr;
-    io.DisplaySize = ImVec2(600.0f, 400.0f);
-    io.DeltaTime = 1.0f / 60.0f;
-    io.MousePos = ImVec2(300.0f, 200.0f);  // so that the tooltip is placed by the pointer
-    unsigned char* pixels = nullptr;
-    int width = 0, height = 0;
-    io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);
+    const ImGuiWithoutAWindow imgui(600.0f, 400.0f);
+    ImGui::GetIO().MousePos = ImVec2(300.0f, 200.0f);  // so that the tooltip is placed by the pointer
     std::string paragraphs, lines;
     for (int k = 0; k < 30; ++k) paragraphs += "A property, what it measures and why the lecture's answers keep it or not. ";
     for (int k = 0; k < 40; ++k) lines += "property " + std::to_string(k) + ": 1.000 after/before\n";
@@ -315,17 +322,7 @@ float presentedSlidersTop(const scenes::Scene& scene, const ui::Readouts& readou
 // is selected, saying what a click shows; and P keeps them too ("running (P pauses)" and
 // "paused (P runs, O steps)" take the same room).
 TEST(PresentedPanel, AClickOnASphereOrPMovesNoSlider) {
-    struct Context {
-        ImGuiContext* context = ImGui::CreateContext();
-        ~Context() { ImGui::DestroyContext(context); }
-    } guard;
-    ImGuiIO& io = ImGui::GetIO();
-    io.IniFilename = nullptr;
-    io.DisplaySize = ImVec2(1280.0f, 800.0f);
-    io.DeltaTime = 1.0f / 60.0f;
-    unsigned char* pixels = nullptr;
-    int width = 0, height = 0;
-    io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);
+    const ImGuiWithoutAWindow imgui(1280.0f, 800.0f);
     const scenes::Scene scene = scenes::loadScene(scenes::presetPath("07_inclined_plane"));
     ui::Readouts readouts;
     readouts.time = 0.633;
