@@ -444,6 +444,21 @@ TEST(InspectorNumbers, ASpeedIsShownInTheUnitThatGivesItsDigits) {
     EXPECT_EQ(app::speedText(std::nan("")), "not finite");
 }
 
+// Enter on an inspector field left as shown, or its shown digits typed again, changes
+// nothing: it had rounded p to the millimetre and r to four digits, set a tiny negative
+// to 0, and counted as an edit (the text's claims stopped). A number typed differently
+// is taken as typed.
+TEST(InspectorNumbers, EnterOnAFieldAsShownChangesNothing) {
+    EXPECT_EQ(app::valueAfterEnter(1.235, 1.23456, "%.3f"), 1.23456);
+    EXPECT_EQ(app::valueAfterEnter(1.236, 1.23456, "%.3f"), 1.236);
+    EXPECT_EQ(app::valueAfterEnter(0.0, -1e-9, "%.3f"), -1e-9) << "shown as 0.000";
+    EXPECT_EQ(app::valueAfterEnter(0.0, 0.0004, "%.3f"), 0.0004);
+    EXPECT_EQ(app::valueAfterEnter(0.001, 0.0004, "%.3f"), 0.001);
+    EXPECT_EQ(app::valueAfterEnter(0.01235, 0.0123456, "%.4g"), 0.0123456);
+    EXPECT_EQ(app::valueAfterEnter(0.0124, 0.0123456, "%.4g"), 0.0124);
+    EXPECT_EQ(app::valueAfterEnter(2.0, 2.0, "%.4g"), 2.0);
+}
+
 // Presented, the layout has no inspector, but 07's text points to its |v|: the panel shows
 // the selected sphere's speed in a line, as the inspector writes it; none while none is.
 TEST(InspectorNumbers, TheSelectedSpheresSpeedIsALineOfThePresentedPanel) {

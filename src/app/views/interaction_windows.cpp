@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
@@ -39,30 +40,44 @@ void place(const Placement& placement) {
     ImGui::SetNextWindowBgAlpha(kBackgroundAlpha);
 }
 
-// One vector field: three numbers; true when edited (the value is in `v`). An edit counts
-// when Enter is pressed: applied keystroke by keystroke, "150" passed through 15 on its way,
-// and a refused value left its first digits behind. A tiny negative is shown as 0.000, not
-// "-0.000"; only the number typed into changes (the others keep every digit).
+// One vector field: three numbers; true when edited (the new value is in `v`). An edit counts
+// when Enter is pressed (applied keystroke by keystroke, "150" passed through 15 on its way,
+// and a refused value left its first digits behind), and only in the numbers whose text was
+// changed (valueAfterEnter): the others keep every digit.
 bool vectorField(const char* label, glm::dvec3& v, bool editable) {
-    constexpr double kShownAsZero = 0.0005;  // under half the last of three decimals
-    double shown[3], values[3];
-    for (int k = 0; k < 3; ++k) values[k] = shown[k] = v[k] < 0.0 && v[k] > -kShownAsZero ? 0.0 : v[k];
+    constexpr const char* kFormat = "%.3f";
+    constexpr double kShownAsZero = 0.0005;  // under half the last of three decimals: 0.000, not -0.000
+    double values[3];
+    for (int k = 0; k < 3; ++k) values[k] = v[k] < 0.0 && v[k] > -kShownAsZero ? 0.0 : v[k];
     const ImGuiInputTextFlags flags = editable ? ImGuiInputTextFlags_EnterReturnsTrue : ImGuiInputTextFlags_ReadOnly;
-    const bool changed = ImGui::InputScalarN(label, ImGuiDataType_Double, values, 3, nullptr, nullptr, "%.3f", flags);
-    if (changed) {
-        for (int k = 0; k < 3; ++k) {
-            if (values[k] != shown[k]) v[k] = values[k];
-        }
+    if (!ImGui::InputScalarN(label, ImGuiDataType_Double, values, 3, nullptr, nullptr, kFormat, flags)) return false;
+    bool changed = false;
+    for (int k = 0; k < 3; ++k) {
+        const double after = valueAfterEnter(values[k], v[k], kFormat);
+        changed |= after != v[k];
+        v[k] = after;
     }
     return changed;
 }
 
 bool scalarField(const char* label, double& value, bool editable) {
+    constexpr const char* kFormat = "%.4g";
+    double typed = value;
     const ImGuiInputTextFlags flags = editable ? ImGuiInputTextFlags_EnterReturnsTrue : ImGuiInputTextFlags_ReadOnly;
-    return ImGui::InputScalar(label, ImGuiDataType_Double, &value, nullptr, nullptr, "%.4g", flags);
+    if (!ImGui::InputScalar(label, ImGuiDataType_Double, &typed, nullptr, nullptr, kFormat, flags)) return false;
+    const double after = valueAfterEnter(typed, value, kFormat);
+    const bool changed = after != value;
+    value = after;
+    return changed;
 }
 
 }  // namespace
+
+double valueAfterEnter(double typed, double value, const char* format) {
+    char shown[64];
+    std::snprintf(shown, sizeof shown, format, value);
+    return typed == std::strtod(shown, nullptr) ? value : typed;  // -0.000 reads as 0: equal
+}
 
 float timelineBarHeight() {
     const ImGuiStyle& style = ImGui::GetStyle();

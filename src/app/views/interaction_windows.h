@@ -85,6 +85,12 @@ constexpr int kLevelNotShown = -2;
 float drawInspector(const Placement& placement, const physics::World& world, int selected, char view, bool paused,
                     int graphLevel, ToolWindowsState& state, ToolActions& actions);
 
+// An inspector field's value after Enter: `typed`, the number its text reads, or `value` where
+// that is the number `value` is shown as in `format` (Enter on a field left as shown, or its
+// digits typed again), so that such an Enter changes nothing: it had rounded p to the
+// millimetre, cut a tiny negative to 0, and stopped the text's claims as an edit.
+double valueAfterEnter(double typed, double value, const char* format);
+
 // What the explainer explains: the selected sphere's latest contact responses.
 struct ExplainerInput {
     int selected = -1;
