@@ -121,6 +121,17 @@ try {
     await send('Input.insertText', { text: value });
     await key('Enter', 'Enter', 13);
   };
+  // Enter on the fields left as they are shown edits nothing (it said "sphere #N edited"), as
+  // the desktop's: the sphere keeps every digit, and the text's claims go on.
+  const asShown = run.selected.p;
+  await js(`(() => { const f = document.getElementById('sphere-fields').elements['pz']; f.focus(); })()`);
+  await key('Enter', 'Enter', 13);
+  await sleep(300);
+  run = await state();
+  const saidAfterEnter = await text('said');
+  check('Enter on the fields as shown edits nothing', !saidAfterEnter.includes('edited') &&
+        JSON.stringify(run.selected.p) === JSON.stringify(asShown) && run.claims.watched > 0 && !run.claims.interrupted,
+        JSON.stringify({ said: saidAfterEnter, p: run.selected.p, claims: run.claims.interrupted }));
   await type('pz', '0.9');
   run = await until((s) => Math.abs(s.selected.p[2] - 0.9) < 1e-12);
   check('p z typed 0.9 moves it', Math.abs(run.selected.p[2] - 0.9) < 1e-12, 'p = ' + JSON.stringify(run.selected.p));
