@@ -279,10 +279,16 @@ TEST(CaptureCommandLine, AFileThatCannotBeWrittenWholeIsSaidAndNotLeft) {
     const Outcome state = runSpheres("simulate --scene 11_pile --steps 1 --state '" + (folder / "state.csv").string() + "'");
     EXPECT_EQ(state.code, 2) << state.output;
     EXPECT_NE(state.output.find("state.csv: cannot be written whole (is the disk full?)"), std::string::npos) << state.output;
+    // A log stops the run at the first write that fails (it stepped on to the end, 600 steps,
+    // then said so): a long run on a full disk was hours of nothing.
     for (const char* log : {"log.csv", "log.jsonl"}) {
         const Outcome out = runSpheres("simulate --scene 11_pile --steps 600 --every 1 --out '" + (folder / log).string() + "'");
         EXPECT_EQ(out.code, 2) << out.output;
-        EXPECT_NE(out.output.find(std::string(log) + ": cannot be written whole"), std::string::npos) << out.output;
+        const std::string said = std::string(log) + ": cannot be written whole (is the disk full?); the run stopped at step ";
+        const std::size_t at = out.output.find(said);
+        ASSERT_NE(at, std::string::npos) << out.output;
+        EXPECT_LT(std::stoi(out.output.substr(at + said.size())), 100) << "its buffer's first flush failed" << out.output;
+        EXPECT_FALSE(std::filesystem::exists(std::filesystem::symlink_status(folder / (std::string(log) + ".part"))));
     }
     EXPECT_FALSE(std::filesystem::exists(std::filesystem::symlink_status(folder / "state.csv"))) << "a truncated state is there";
     EXPECT_FALSE(std::filesystem::exists(std::filesystem::symlink_status(folder / "state.csv.part"))) << "the part is left";

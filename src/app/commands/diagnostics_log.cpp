@@ -61,6 +61,7 @@ void DiagnosticsLog::write(std::uint64_t step, double time, const physics::Diagn
               << ',' << d.modified << ',' << d.momentum.x << ',' << d.momentum.y << ','
               << d.momentum.z << ',' << d.sphereContacts << ',' << d.wallContacts << ','
               << d.maxPenetration << ',' << hexHash(d.hash) << '\n';
+        failedAt(step);
         return;
     }
     file_ << "{\"step\":" << step << ",\"time_s\":" << time << ",\"kinetic_J\":" << d.kinetic
@@ -69,6 +70,13 @@ void DiagnosticsLog::write(std::uint64_t step, double time, const physics::Diagn
           << d.momentum.y << ',' << d.momentum.z << "],\"sphere_contacts\":" << d.sphereContacts
           << ",\"wall_contacts\":" << d.wallContacts << ",\"max_penetration_r\":"
           << d.maxPenetration << ",\"hash\":\"" << hexHash(d.hash) << "\"}\n";
+    failedAt(step);
+}
+
+void DiagnosticsLog::failedAt(std::uint64_t step) const {
+    if (file_) return;
+    throw UsageError("--out " + path_ + ": cannot be written whole (is the disk full?); the run stopped at step " +
+                     std::to_string(step));
 }
 
 std::string summarize(const physics::Diagnostics& d) {

@@ -16,11 +16,15 @@ public:
     ~DiagnosticsLog();
     DiagnosticsLog(const DiagnosticsLog&) = delete;
     DiagnosticsLog& operator=(const DiagnosticsLog&) = delete;
+    // Throws UsageError once a write has failed (the buffer could not be flushed: a full
+    // disk), so that the run stops there rather than stepping on to its end for nothing.
     void write(std::uint64_t step, double time, const physics::Diagnostics& d);
     // Closes the file; throws UsageError when it could not be written whole (a full disk).
     void finish();
 
 private:
+    void failedAt(std::uint64_t step) const;  // throws if the file has failed
+
     std::string path_;
     std::ofstream file_;
     bool csv_ = true;
