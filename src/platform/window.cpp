@@ -125,6 +125,12 @@ void Window::waitEvents(double timeoutSeconds) { glfwWaitEventsTimeout(timeoutSe
 void Window::swapBuffers() { glfwSwapBuffers(window_); }
 void Window::setTitle(const std::string& title) { glfwSetWindowTitle(window_, title.c_str()); }
 
+double Window::refreshRate() const {
+    GLFWmonitor* monitor = glfwGetPrimaryMonitor();
+    const GLFWvidmode* mode = monitor ? glfwGetVideoMode(monitor) : nullptr;
+    return mode && mode->refreshRate > 0 ? double(mode->refreshRate) : 60.0;
+}
+
 void Window::setVsync(bool on) {
     glfwMakeContextCurrent(window_);
     glfwSwapInterval(on ? 1 : 0);

@@ -45,6 +45,9 @@ class Window {
     // framebufferSize / windowSize: for ImGui's DisplayFramebufferScale (1 when minimised).
     glm::vec2 framebufferScale() const;
     double time() const;  // s since GLFW was initialised
+    // Frames a second the primary display shows (its video mode's refresh rate; 60 where it
+    // says none).
+    double refreshRate() const;
 
     GLFWwindow* handle() const { return window_; }
 
