@@ -307,9 +307,11 @@ TEST(MultipleCollisions, NoPresetCreatesEnergyUnderTheConvergedAndGlobalSolvers)
 // endWithPositivity the 1k pile under the position method ended steps with a contact
 // approaching at 0.85 m/s, 22_shock_pyramid with shock at 1.1e-3 m/s. Now no touching
 // contact approaches faster than kConvergedApproachSpeed at any step's end, under each
-// method, landing (a pile of 600) and resting (the pyramid, shock on). Simultaneous, the
-// pairwise Jacobi, does not answer them so: the landing pile ends steps approaching at up
-// to 2.7 m/s (position) and 0.09 m/s (velocity), the size asserted.
+// method, landing (a pile of 300) and resting (the pyramid, shock on). Simultaneous, the
+// pairwise Jacobi, does not answer them so: the landing pile of 600 ends steps approaching
+// at up to 2.7 m/s (position) and 0.09 m/s (velocity), the size asserted. (The global
+// solvers' pile was 600 too: generalized reflections took 29 and 18 s on it, 2 and 8 s on
+// 300, which still fails them without endWithPositivity, checked on 2026-11-29.)
 namespace {
 
 double fastestApproachLeft(const char* preset, std::initializer_list<std::string> settings, int steps) {
@@ -327,7 +329,7 @@ double fastestApproachLeft(const char* preset, std::initializer_list<std::string
 void expectPositivityUnderTheGlobalSolvers(const std::string& method) {
     for (const std::string solver : {"solver=lcp", "solver=generalized-reflections"}) {
         SCOPED_TRACE(method + " " + solver);
-        EXPECT_LE(fastestApproachLeft("11_pile", {method, solver, "count=600"}, 150), physics::kConvergedApproachSpeed);
+        EXPECT_LE(fastestApproachLeft("11_pile", {method, solver, "count=300"}, 150), physics::kConvergedApproachSpeed);
         EXPECT_LE(fastestApproachLeft("22_shock_pyramid", {method, solver, "shock=on"}, 240),
                   physics::kConvergedApproachSpeed);
     }
